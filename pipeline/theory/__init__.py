@@ -1,0 +1,14 @@
+"""The published models, one module per paper, as pure vectorised functions.
+
+=====================  ======  ==================================================
+module                 paper   what it computes
+=====================  ======  ==================================================
+``link_stiffness``     001     static stiffness E0 of round-link chains (Rynik)
+``wheel_impact``       000     impact velocities and tensions on a pocket wheel
+``roller_impact``      002     impact of roller chains on sprockets (xi, n_max)
+``tooth_segments``     003     loads on segmented teeth of a chain drum
+``pin_criterion``      004     pin criterion for roller chains of open drives
+=====================  ======  ==================================================
+
+Nothing here reads files; inputs are SI unless a name carries its unit.
+"""

@@ -1,0 +1,52 @@
+"""The one pint unit registry of chainbench, used at the edges only.
+
+Inside the package every quantity is a plain float or numpy array in SI units;
+pint converts what comes in (file headers, run sheets, CLI options) and what
+goes out (tables in the papers' units).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pint
+
+ureg = pint.UnitRegistry()
+# Laboratory spellings pint does not know by default.
+ureg.define("@alias kilogram_force = kG = KG")
+Q_ = ureg.Quantity
+
+#: Standard acceleration of gravity [m/s^2] (CGPM 1901); 1 kgf = 9.80665 N.
+STANDARD_GRAVITY = float(Q_(1, "gravity").to("m/s^2").magnitude)
+
+
+def to_si(value, unit: str):
+    """Convert `value` given in `unit` to the SI base unit of its dimension.
+
+    Parameters
+    ----------
+    value : float or array_like
+        Magnitude(s) in `unit`.
+    unit : str
+        A unit pint understands, e.g. ``"kN"``, ``"kgf/cm^2"``, ``"mm"``.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The magnitude(s) in SI base units.
+
+    Examples
+    --------
+    >>> to_si(1.0, "kgf")
+    9.80665
+    """
+    quantity = Q_(np.asarray(value, dtype=float), unit).to_base_units()
+    magnitude = quantity.magnitude
+    return float(magnitude) if np.ndim(magnitude) == 0 else magnitude
+
+
+def from_si(value, unit: str):
+    """Convert `value` in SI base units to `unit` (the inverse of :func:`to_si`)."""
+    base = Q_(1.0, unit).to_base_units().units
+    quantity = Q_(np.asarray(value, dtype=float), base).to(unit)
+    magnitude = quantity.magnitude
+    return float(magnitude) if np.ndim(magnitude) == 0 else magnitude
