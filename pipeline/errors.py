@@ -27,6 +27,8 @@ class ChainbenchError(Exception):
         What the user can do about it.
     """
 
+    column_label = "column"  #: how `column` is named in messages
+
     def __init__(
         self,
         message: str,
@@ -50,7 +52,7 @@ class ChainbenchError(Exception):
         if self.row is not None:
             where.append(f"line {self.row}")
         if self.column is not None:
-            where.append(f"column {self.column!r}")
+            where.append(f"{self.column_label} {self.column!r}")
         text = (", ".join(where) + ": " if where else "") + self.message
         if self.hint:
             text += f" (hint: {self.hint})"
@@ -59,6 +61,8 @@ class ChainbenchError(Exception):
 
 class RunSheetError(ChainbenchError):
     """The run sheet (``campaign.toml``) is invalid; `column` holds the key path."""
+
+    column_label = "key"
 
 
 class IngestError(ChainbenchError):

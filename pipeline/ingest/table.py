@@ -1,0 +1,62 @@
+"""The canonical table every reader returns, and its metadata.
+
+A reader turns one raw file into ``(table, metadata)``:
+
+``table``
+    a :class:`pandas.DataFrame` of float64 columns in SI units whose names are
+    *roles*, not the file's names:
+
+    ==============  ======  ==================================================
+    column          unit    meaning
+    ==============  ======  ==================================================
+    ``time``        s       sample time (absent when the file has none)
+    ``force``       N       tensile force, or the branch tension of an
+                            engagement log
+    ``gauge_1``...  m       elongation read by each displacement gauge /
+                            extensometer / crosshead channel, in file order
+    ``angle``       rad     wheel angle or encoder channel (engagement logs)
+    ``cycle_count`` 1       the machine's own cycle or segment counter
+    ==============  ======  ==================================================
+
+    Sentinel values of unused channels become NaN. Rows are in file order.
+
+``metadata``
+    a :class:`TableMetadata` saying what was detected, so that ``chainbench
+    inspect`` can print it and the store can keep it as provenance.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+
+#: Roles a column can take; gauges are numbered ``gauge_1``, ``gauge_2``, ...
+ROLES = ("time", "force", "gauge", "angle", "cycle_count")
+
+
+@dataclass(frozen=True)
+class ColumnInfo:
+    """One column of a raw file and what it became."""
+
+    name: str  #: the column's name in the file
+    role: str | None  #: canonical column name (``"force"``, ``"gauge_2"``) or None if unused
+    unit: str | None  #: unit as found in the file or run sheet (``"kN"``), None if none
+    si_unit: str | None  #: SI unit of the canonical column (``"N"``), None if unused
+
+
+@dataclass
+class TableMetadata:
+    """What a reader detected in a raw file."""
+
+    file: str
+    layout: str  #: ``"plain_csv"``, ``"european_csv"``, ``"machine_export"``, ``"xlsx"``, ...
+    encoding: str | None = None
+    delimiter: str | None = None
+    decimal: str | None = None
+    rows: int = 0
+    columns: list[ColumnInfo] = field(default_factory=list)
+    preamble: dict[str, str] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
+
+    def as_dict(self) -> dict:
+        """A JSON-ready copy (as printed by ``chainbench inspect --json``)."""
+        return asdict(self)

@@ -1,0 +1,120 @@
+"""Writing and reading result datasets as netCDF4, atomically, with provenance.
+
+Every dataset chainbench writes carries CF-1.10 global attributes and the
+provenance of its inputs (``formats.md``): ``Conventions``, ``title``,
+``history``, ``source``, ``chainbench_version``, ``raw_file``, ``raw_sha256``,
+``run_sheet_sha256``, ``created`` and the run's run-sheet entry (as JSON).
+A file is written to a temporary name in the target folder and renamed into
+place, so a crash never leaves a half-written result.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import tempfile
+from collections.abc import Mapping
+from datetime import UTC, datetime
+from pathlib import Path
+from typing import Any
+
+import xarray as xr
+
+from pipeline import __version__
+
+CONVENTIONS = "CF-1.10"
+
+
+def sha256_of(path: str | Path) -> str:
+    """SHA-256 hex digest of a file's bytes, read in chunks."""
+    digest = hashlib.sha256()
+    with open(path, "rb") as stream:
+        for block in iter(lambda: stream.read(1 << 20), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
+def provenance_attrs(
+    *,
+    title: str,
+    source: str,
+    run_sheet_sha256: str,
+    raw_file: str = "",
+    raw_sha256: str = "",
+    run_entry: Mapping[str, Any] | None = None,
+    created: datetime | None = None,
+) -> dict[str, str]:
+    """The global attributes every chainbench dataset carries.
+
+    Parameters
+    ----------
+    title : str
+        What the dataset holds.
+    source : str
+        Where the data come from (machine, or "chainbench virtual test bench").
+    run_sheet_sha256 : str
+        SHA-256 of the run sheet the run was processed with.
+    raw_file, raw_sha256 : str
+        The raw file's name (relative to the campaign) and its SHA-256.
+    run_entry : mapping, optional
+        The run's run-sheet entry, stored as JSON.
+    created : datetime, optional
+        Creation time (default: now, UTC).
+    """
+    created = created or datetime.now(UTC)
+    stamp = created.strftime("%Y-%m-%dT%H:%M:%SZ")
+    return {
+        "Conventions": CONVENTIONS,
+        "title": title,
+        "history": f"{stamp} created by chainbench {__version__}",
+        "source": source,
+        "chainbench_version": __version__,
+        "raw_file": raw_file,
+        "raw_sha256": raw_sha256,
+        "run_sheet_sha256": run_sheet_sha256,
+        "created": stamp,
+        "run_entry": json.dumps(dict(run_entry or {}), sort_keys=True, default=str),
+    }
+
+
+def write_atomic(dataset: xr.Dataset, path: str | Path) -> Path:
+    """Write `dataset` to `path` as netCDF4 via a temporary file and a rename.
+
+    Returns
+    -------
+    Path
+        The written file.
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    os.close(handle)
+    try:
+        dataset.to_netcdf(temporary, format="NETCDF4", engine="netcdf4")
+        os.replace(temporary, path)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise
+    return path
+
+
+def write_text_atomic(text: str, path: str | Path) -> Path:
+    """Write `text` (UTF-8) to `path` via a temporary file and a rename."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(handle, "w", encoding="utf-8", newline="\n") as stream:
+            stream.write(text)
+        os.replace(temporary, path)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise
+    return path
+
+
+def read_dataset(path: str | Path) -> xr.Dataset:
+    """Load a chainbench netCDF file fully into memory (the file is closed on return)."""
+    with xr.open_dataset(path, engine="netcdf4") as dataset:
+        return dataset.load()
