@@ -28,7 +28,8 @@ def non_negative(name: str, value) -> np.ndarray:
 def teeth(name: str, value, minimum: int = 3) -> np.ndarray:
     """Return a number of teeth as a float array, raising if not an integer >= `minimum`."""
     array = np.asarray(value, dtype=float)
-    if np.any(array != np.round(array)) or np.any(array < minimum):
+    whole = np.all(np.isfinite(array)) and np.all(array == np.round(array))
+    if not whole or np.any(array < minimum):
         raise ValueError(f"{name} must be a whole number of teeth >= {minimum}, got {value!r}")
     return array
 

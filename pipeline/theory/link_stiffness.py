@@ -1,0 +1,503 @@
+"""Static stiffness E0 of round-link chains (Paper 001, Rynik).
+
+The chain stiffness is the tensile force over the relative elastic elongation,
+E0 = P / eps = P t / delta (eqs. (2), (5)), a force. The link elongation delta
+follows from the Maxwell-Mohr method applied to a quarter of the link: a
+straight half-bar of length a/2 and a quarter circle of centre-line radius R0,
+with the bending moment at the symmetry plane statically indeterminate
+(eqs. (9)-(17)). Integrated, it gives eq. (19) for delta and eq. (20) for E0.
+
+Link geometry: ``d`` bar diameter, ``t`` pitch (inner length), ``R0``
+centre-line radius of the curved ends, ``a`` length of the straight parts;
+consistent links have t = a + 2 R0 - d.
+
+All functions take SI values (lengths in m, E in Pa, forces in N) and return
+SI values; E0 is a force [N].
+
+References
+----------
+Paper 001: J. Rynik, "Analityczno-empiryczne okreslenie statycznej sztywnosci
+lancuchow ogniwowych" (seed ``001_d0c67c6e87c0d4e3.txt``); corrected formulas
+in ``spec/models.md``, section 001.
+"""
+
+from __future__ import annotations
+
+import warnings
+from typing import NamedTuple
+
+import numpy as np
+from scipy.integrate import quad
+
+from pipeline.theory._checks import non_negative, positive, scalar_or_array
+from pipeline.units import to_si
+
+#: Young's modulus of the chain steel used for Table 1 [kgf/cm^2]
+#: (Paper 001, text below eq. (20): "E = 2,2 * 10^6 kg/cm^2").
+PAPER_E_KGF_PER_CM2 = 2.2e6
+
+#: The same modulus in SI [Pa]: the default E of this module.
+E_STEEL = to_si(PAPER_E_KGF_PER_CM2, "kgf/cm^2")
+
+#: Poisson's ratio of steel assumed by Paper 001 (text above eq. (19)).
+NU_STEEL = 0.3
+
+#: Shear-stress distribution factor alpha of a circular section (Paper 001, below eq. (18)).
+SHEAR_FACTOR = 32 / 27
+
+#: Largest |t - (a + 2 R0 - d)| accepted without a GeometryWarning [m]: half a
+#: millimetre, the rounding of the link dimensions tabulated in whole mm.
+GEOMETRY_TOLERANCE = 0.5e-3
+
+#: The lab's band for the discrepancy (E0_exp - E0_theory) / E0_theory: the paper's
+#: "experimental values are somewhat higher, by 3 to 6 %" (Paper 001, section 3).
+LAB_BAND = (0.03, 0.06)
+
+
+class StiffnessCoefficients(NamedTuple):
+    """The five numerical coefficients of eqs. (19)-(20) (dimensionless)."""
+
+    c1: float  #: of R0^2 in the bending term
+    c2: float  #: of a^2 in the bending term
+    c3: float  #: of a R0 in the bending term
+    c4: float  #: of d^2 a (normal force)
+    c5: float  #: of d^2 R0 (normal and shear force in the curved part)
+
+
+#: The coefficients printed in eqs. (19)-(20), with which the paper computed Table 1.
+#: They equal the exact ones (:func:`exact_coefficients`) evaluated with pi = 3.14.
+PRINTED = StiffnessCoefficients(1.46, 0.355, 1.58, 0.03, 0.2)
+
+
+class PublishedStiffness(NamedTuple):
+    """One row of Paper 001, Table 1, in the paper's units (E = 2.2e6 kgf/cm^2)."""
+
+    eps_exp_per_kgf: float  #: measured relative elongation under 1 kgf [1/kgf]
+    eps_theor_per_kgf: float  #: theoretical relative elongation under 1 kgf [1/kgf]
+    E0_exp_kgf: float  #: measured stiffness [kgf]
+    E0_theor_kgf: float  #: stiffness from eq. (20) as published [kgf]
+
+
+#: Paper 001, Table 1, keyed by the catalogue name of the chain (d x t in mm); the
+#: link geometry (d, t, R0, a) of these rows is in the chain catalogue.
+TABLE_1_PUBLISHED = {
+    "13x50": PublishedStiffness(0.892e-6, 0.925e-6, 1.12e6, 1.08e6),
+    "14x50": PublishedStiffness(0.806e-6, 0.833e-6, 1.24e6, 1.20e6),
+    "18x64": PublishedStiffness(0.442e-6, 0.478e-6, 2.26e6, 2.09e6),
+    "22x86": PublishedStiffness(0.272e-6, 0.289e-6, 3.68e6, 3.46e6),
+}
+
+
+class GeometryWarning(UserWarning):
+    """The link dimensions do not close: t differs from a + 2 R0 - d."""
+
+
+def exact_coefficients(nu: float = NU_STEEL) -> StiffnessCoefficients:
+    """The exact coefficients of eqs. (19)-(20) from the Maxwell-Mohr integration.
+
+    Parameters
+    ----------
+    nu : float
+        Poisson's ratio [-], in (-1, 0.5); default 0.3 as in Paper 001.
+
+    Returns
+    -------
+    StiffnessCoefficients
+        ``((pi^3 - 8 pi)/4, (3 pi - 8)/4, (4 pi^2 - 8 pi - 8)/4, 1/32,
+        pi/64 + pi (1 + nu)/27)``; the last uses the shear factor alpha = 32/27.
+
+    Notes
+    -----
+    The seed prints ``(1 + nu)/27`` in the last term: a factor pi was lost in the
+    OCR (only with it do the printed coefficients follow).
+
+    References
+    ----------
+    Paper 001, eq. (18) and the line after it.
+
+    Examples
+    --------
+    >>> [round(c, 4) for c in exact_coefficients()]
+    [1.4684, 0.3562, 1.5864, 0.0312, 0.2003]
+    """
+    nu = _poisson_ratio(nu)
+    pi = np.pi
+    return StiffnessCoefficients(
+        (pi**3 - 8 * pi) / 4,
+        (3 * pi - 8) / 4,
+        (4 * pi**2 - 8 * pi - 8) / 4,
+        1 / 32,
+        pi / 64 + pi * (1 + nu) / 27,
+    )
+
+
+def chain_stiffness(
+    d,
+    t,
+    R0,
+    a,
+    E=E_STEEL,
+    coefficients: StiffnessCoefficients = PRINTED,
+):
+    """Static stiffness E0 of a round-link chain, eq. (20).
+
+    E0 = E J t / (R0^3 (c1 R0^2 + c2 a^2 + c3 a R0) / (a + pi R0)^2
+    + d^2 (c4 a + c5 R0)), J = pi d^4 / 64.
+
+    Parameters
+    ----------
+    d : float or array_like
+        Bar diameter [m].
+    t : float or array_like
+        Pitch (inner length of a link) [m].
+    R0 : float or array_like
+        Centre-line radius of the curved ends [m]; must exceed d/2.
+    a : float or array_like
+        Length of the straight parts [m]; 0 gives a circular ring.
+    E : float or array_like
+        Young's modulus [Pa]; default 2.2e6 kgf/cm^2 = 2.157e11 Pa (Paper 001).
+    coefficients : StiffnessCoefficients
+        :data:`PRINTED` (default, as the paper computed Table 1) or
+        :func:`exact_coefficients`.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        E0 [N], the force per unit relative elongation of the chain.
+
+    Warns
+    -----
+    GeometryWarning
+        When |t - (a + 2 R0 - d)| exceeds 0.5 mm (see :func:`check_geometry`).
+
+    References
+    ----------
+    Paper 001, eqs. (5), (19), (20).
+
+    Examples
+    --------
+    Chain 18x64 of Table 1 (published 2.09e6 kgf, with E rounded there):
+
+    >>> from pipeline.units import from_si, to_si
+    >>> d, t, R0, a = to_si([18, 64, 20, 42], "mm")
+    >>> round(from_si(chain_stiffness(d, t, R0, a), "kgf") / 1e6, 4)
+    2.043
+    """
+    d, R0, a = _link(d, R0, a)
+    t, E = positive("t", t), positive("E", E)
+    check_geometry(d, t, R0, a, stacklevel=3)
+    return scalar_or_array(E * _second_moment(d) * t / _compliance(d, R0, a, coefficients))
+
+
+def link_elongation(
+    force,
+    d,
+    R0,
+    a,
+    E=E_STEEL,
+    coefficients: StiffnessCoefficients = PRINTED,
+):
+    """Elastic elongation delta of one link under a tensile force, eq. (19).
+
+    delta = P / (E J) (R0^3 (c1 R0^2 + c2 a^2 + c3 a R0) / (a + pi R0)^2
+    + d^2 (c4 a + c5 R0)).
+
+    Parameters
+    ----------
+    force : float or array_like
+        Tensile force P on the chain [N], >= 0.
+    d : float or array_like
+        Bar diameter [m].
+    R0 : float or array_like
+        Centre-line radius of the curved ends [m]; must exceed d/2.
+    a : float or array_like
+        Length of the straight parts [m].
+    E : float or array_like
+        Young's modulus [Pa]; default 2.2e6 kgf/cm^2 (Paper 001).
+    coefficients : StiffnessCoefficients
+        :data:`PRINTED` (default) or ``exact_coefficients(nu)`` for a given
+        Poisson's ratio.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        delta [m], the change of the inner length of the whole link.
+
+    References
+    ----------
+    Paper 001, eqs. (18), (19).
+
+    Examples
+    --------
+    >>> from pipeline.units import to_si
+    >>> d, R0, a = to_si([18, 20, 42], "mm")
+    >>> round(link_elongation(to_si(1000, "kgf"), d, R0, a) * 1e3, 5)  # [mm]
+    0.03133
+    """
+    force, E = non_negative("force", force), positive("E", E)
+    d, R0, a = _link(d, R0, a)
+    return scalar_or_array(force * _compliance(d, R0, a, coefficients) / (E * _second_moment(d)))
+
+
+def link_elongation_numerical(force, d, R0, a, E=E_STEEL, nu: float = NU_STEEL):
+    """Elongation of one link by direct numerical Maxwell-Mohr integration.
+
+    Independent of eq. (19): the statically indeterminate moment x1 at the
+    symmetry plane (eqs. (10)-(13)) and the elongation (eq. (9)) are both found
+    by quadrature (``scipy.integrate.quad``) over the quarter link, from the
+    internal forces of eqs. (14), (16), (17), with EJ, EF = 16 EJ / d^2,
+    GF = EF / (2 (1 + nu)) and alpha = 32/27.
+
+    Parameters
+    ----------
+    force : float or array_like
+        Tensile force P on the chain [N], >= 0.
+    d : float or array_like
+        Bar diameter [m].
+    R0 : float or array_like
+        Centre-line radius of the curved ends [m]; must exceed d/2.
+    a : float or array_like
+        Length of the straight parts [m].
+    E : float or array_like
+        Young's modulus [Pa]; default 2.2e6 kgf/cm^2 (Paper 001).
+    nu : float
+        Poisson's ratio [-], in (-1, 0.5); default 0.3.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        delta [m]; equals ``link_elongation(..., coefficients=exact_coefficients(nu))``.
+
+    References
+    ----------
+    Paper 001, eqs. (9)-(17).
+    """
+    force, E = non_negative("force", force), positive("E", E)
+    d, R0, a = _link(d, R0, a)
+    nu = _poisson_ratio(nu)
+    quarter = np.vectorize(_quarter_elongation, otypes=[float])
+    return scalar_or_array(4 * quarter(force, d, R0, a, E, nu))
+
+
+def geometry_mismatch(d, t, R0, a):
+    """How far the pitch misses the link's closure, t - (a + 2 R0 - d) [m].
+
+    Parameters
+    ----------
+    d, t, R0, a : float or array_like
+        Bar diameter, pitch, centre-line radius of the ends, straight length [m].
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The mismatch [m]; 0 for a consistent link.
+
+    Examples
+    --------
+    Table 1's 22x86 link closes at 84 mm:
+
+    >>> round(geometry_mismatch(0.022, 0.086, 0.024, 0.058) * 1e3, 6)
+    2.0
+    """
+    d, t, R0, a = (np.asarray(value, dtype=float) for value in (d, t, R0, a))
+    return scalar_or_array(t - (a + 2 * R0 - d))
+
+
+def check_geometry(d, t, R0, a, tolerance: float = GEOMETRY_TOLERANCE, stacklevel: int = 2):
+    """Warn when the link dimensions do not close; never raise.
+
+    Parameters
+    ----------
+    d, t, R0, a : float or array_like
+        Bar diameter, pitch, centre-line radius of the ends, straight length [m].
+    tolerance : float
+        Largest accepted |t - (a + 2 R0 - d)| [m]; default 0.5 mm.
+    stacklevel : int
+        Passed to :func:`warnings.warn` (2: the caller of this function).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The mismatch t - (a + 2 R0 - d) [m].
+
+    Warns
+    -----
+    GeometryWarning
+        Naming t and a + 2 R0 - d [mm] of every link beyond `tolerance`.
+    """
+    mismatch = np.asarray(geometry_mismatch(d, t, R0, a))
+    bad = np.atleast_1d(np.abs(mismatch) > tolerance)
+    if np.any(bad):
+        pitch = np.atleast_1d(np.broadcast_to(t, mismatch.shape))[bad]
+        closure = pitch - np.atleast_1d(mismatch)[bad]
+        pairs = "; ".join(
+            f"t = {1e3 * p:.4g} mm but a + 2 R0 - d = {1e3 * c:.4g} mm"
+            for p, c in zip(pitch, closure, strict=True)
+        )
+        warnings.warn(
+            f"link geometry does not close within {1e3 * tolerance:g} mm: {pairs} "
+            "(check the dimensions; E0 is computed with t as given)",
+            GeometryWarning,
+            stacklevel=stacklevel,
+        )
+    return scalar_or_array(mismatch)
+
+
+def discrepancy(E0_exp, E0_theory):
+    """Relative discrepancy referred to theory, (E0_exp - E0_theory) / E0_theory.
+
+    Parameters
+    ----------
+    E0_exp : float or array_like
+        Measured stiffness [N] (any force unit, the same for both).
+    E0_theory : float or array_like
+        Theoretical stiffness [N].
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The discrepancy [-]; positive when the chain is stiffer than the model.
+
+    References
+    ----------
+    Paper 001, section 3 and Table 1; ``spec/models.md`` 001 (discrepancy check).
+
+    Examples
+    --------
+    >>> round(discrepancy(2.26e6, 2.09e6), 4)
+    0.0813
+    """
+    E0_exp = positive("E0_exp", E0_exp)
+    E0_theory = positive("E0_theory", E0_theory)
+    return scalar_or_array((E0_exp - E0_theory) / E0_theory)
+
+
+def discrepancy_vs_experiment(E0_exp, E0_theory):
+    """Relative discrepancy referred to experiment, (E0_exp - E0_theory) / E0_exp.
+
+    Parameters and return as :func:`discrepancy`.
+
+    Examples
+    --------
+    >>> round(discrepancy_vs_experiment(2.26e6, 2.09e6), 4)
+    0.0752
+    """
+    E0_exp = positive("E0_exp", E0_exp)
+    E0_theory = positive("E0_theory", E0_theory)
+    return scalar_or_array((E0_exp - E0_theory) / E0_exp)
+
+
+def in_band(discrepancy, band: tuple[float, float] = LAB_BAND) -> np.ndarray:
+    """Whether each discrepancy lies in the closed interval `band` (signed).
+
+    Parameters
+    ----------
+    discrepancy : float or array_like
+        Relative discrepancies [-] (fractions, not percent).
+    band : (float, float)
+        Lower and upper bound [-]; default (0.03, 0.06), the lab's 3-6 %.
+
+    Returns
+    -------
+    numpy.ndarray of bool
+        ``lower <= discrepancy <= upper`` element-wise.
+
+    Notes
+    -----
+    The test is signed, without ``abs()``: the paper's claim is that the
+    experimental values are *higher* than the theoretical ones by 3 to 6 %, so a
+    chain 4 % softer than the model does not agree with it. For a two-sided
+    tolerance pass a symmetric band, e.g. ``(-0.06, 0.06)``.
+
+    Examples
+    --------
+    >>> in_band([0.0370, 0.0333, 0.0813, 0.0636, -0.04])
+    array([ True,  True, False, False, False])
+    """
+    lower, upper = band
+    if not lower <= upper:
+        raise ValueError(f"band must be (lower, upper) with lower <= upper, got {band!r}")
+    values = np.asarray(discrepancy, dtype=float)
+    return (values >= lower) & (values <= upper)
+
+
+def _link(d, R0, a):
+    """The link dimensions (d, R0, a) as validated arrays."""
+    d, R0 = positive("d", d), positive("R0", R0)
+    if np.any(R0 <= d / 2):
+        raise ValueError(
+            f"R0 must exceed d/2 (the link needs an eye), got R0={R0.tolist()} m, d={d.tolist()} m"
+        )
+    return d, R0, non_negative("a", a)
+
+
+def _poisson_ratio(nu) -> float:
+    nu = float(nu)
+    if not -1 < nu < 0.5:
+        raise ValueError(f"nu (Poisson's ratio) must lie in (-1, 0.5), got {nu!r}")
+    return nu
+
+
+def _second_moment(d):
+    """J = pi d^4 / 64 of the circular bar section [m^4]."""
+    return np.pi * d**4 / 64
+
+
+def _compliance(d, R0, a, coefficients: StiffnessCoefficients):
+    """The bracket of eqs. (19)-(20) [m^3]: delta = P / (E J) * bracket."""
+    c1, c2, c3, c4, c5 = coefficients
+    bending = R0**3 * (c1 * R0**2 + c2 * a**2 + c3 * a * R0) / (a + np.pi * R0) ** 2
+    return bending + d**2 * (c4 * a + c5 * R0)
+
+
+def _along_quarter(straight, curved, R0: float, a: float) -> float:
+    """Integral over the quarter link: straight half-bar 0 <= x <= a/2, then arc ds = R0 dphi."""
+    options = {"epsabs": 0.0, "epsrel": 1e-12}
+    along_bar = quad(straight, 0.0, a / 2, **options)[0]
+    along_arc = quad(lambda phi: curved(phi) * R0, 0.0, np.pi / 2, **options)[0]
+    return along_bar + along_arc
+
+
+def _released_moment(load: float, R0: float, phi: float) -> float:
+    """M_p of the released quarter (x1 = 0) on the arc, Fig. 5: -(P/2) R0 (1 - cos phi)."""
+    return -load / 2 * R0 * (1 - np.cos(phi))
+
+
+def _redundant_moment(load: float, R0: float, a: float) -> float:
+    """x1 of eq. (10), x1 delta_11 + delta_10 = 0, with eqs. (11)-(12) by quadrature.
+
+    The unit moment M0 = 1 acts along the whole quarter; EJ cancels.
+    """
+    delta_11 = _along_quarter(lambda x: 1.0, lambda phi: 1.0, R0, a)
+    delta_10 = _along_quarter(lambda x: 0.0, lambda phi: _released_moment(load, R0, phi), R0, a)
+    return -delta_10 / delta_11
+
+
+def _forces_on_bar(load: float, x1: float) -> tuple[float, float, float]:
+    """(M, N, T) on the straight half-bar, eqs. (14), (16): x1, P/2, 0."""
+    return x1, load / 2, 0.0
+
+
+def _forces_on_arc(load: float, x1: float, R0: float, phi: float) -> tuple[float, float, float]:
+    """(M, N, T) on the arc, eqs. (14), (17) and Figs. 5-7."""
+    return x1 + _released_moment(load, R0, phi), load / 2 * np.cos(phi), -load / 2 * np.sin(phi)
+
+
+def _quarter_elongation(force: float, d: float, R0: float, a: float, E: float, nu: float) -> float:
+    """delta / 4 from eq. (9) over the quarter link, for the load `force` [m]."""
+    EF = E * np.pi * d**2 / 4
+    EJ = E * _second_moment(d)
+    GF = EF / (2 * (1 + nu))
+    x1 = _redundant_moment(force, R0, a)
+    x1_unit = _redundant_moment(1.0, R0, a)
+
+    def work(actual, unit) -> float:
+        (M, N, T), (M0, N0, T0) = actual, unit
+        return M * M0 / EJ + N * N0 / EF + SHEAR_FACTOR * T * T0 / GF
+
+    return _along_quarter(
+        lambda x: work(_forces_on_bar(force, x1), _forces_on_bar(1.0, x1_unit)),
+        lambda phi: work(_forces_on_arc(force, x1, R0, phi), _forces_on_arc(1.0, x1_unit, R0, phi)),
+        R0,
+        a,
+    )

@@ -1,0 +1,256 @@
+"""Loads on the segmented teeth of a chain drum (Paper 003).
+
+Dolipski, Remiorz, Sobota and Osadnik replace the flank reaction F, assumed
+in the symmetry plane of the tooth groove, by the two forces F_K that the rear
+torus of the horizontal link exerts on the two tooth segments either side of
+the groove, at the contact points K a distance s apart.
+
+Units: lengths in m and angles in rad at the interface (SI), except where a
+name ends in ``_mm`` or ``_deg`` (the paper's units, used by :data:`PUBLISHED`).
+
+Notes
+-----
+The seed's eq. (3) is OCR-garbled (it prints k where s belongs and would
+always give 0.577); :func:`contact_force_ratio` uses the form of ``models.md``,
+F_K / F = 1 / (2 sin(psi / 2)), which reproduces every published ratio.
+
+Against the paper's claims the model gives (chain 34x126):
+
+* F_P / F exceeds 0.5 only for s above about 67.9 mm (beta = 50 deg,
+  eps_n = 0), not "in the analysed range" of s as the paper says of Fig. 8.
+* The friction increase 2 F_K / F - 1 at s = 70 mm, beta = 50 deg is 46.0 %
+  with eps_n = 0 and 50.6 % with eps_n = 6 deg: the paper's "over 50 %"
+  (Fig. 9) holds for eps_n >= 5.3 deg.
+* psi at s = 45 mm, beta = 80 deg is 128.45 deg, not the published 128.7 deg.
+
+References
+----------
+Paper 003: Dolipski M., Remiorz E., Sobota P., Osadnik J., Wyznaczenie
+obciazenia segmentow zebow bebna lancuchowego (seed 003).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from pipeline.theory._checks import arccos, non_negative, positive, scalar_or_array
+
+#: The values Paper 003 prints for chain 34x126 (r = 52 mm, d = 34 mm,
+#: section 3), in the paper's units. ``quantity`` names the function giving the
+#: model value: ``contact_radius`` [mm], ``opening_angle`` [deg],
+#: ``contact_force_ratio`` [-]. The printed values are rounded to the last
+#: digit shown, so ``rel_tol`` 0.1 % separates rounding from a real difference.
+PUBLISHED = tuple(
+    {
+        "quantity": quantity,
+        "r_mm": 52.0,
+        "d_mm": 34.0,
+        "beta_deg": beta_deg,
+        "eps_n_deg": eps_n_deg,
+        "s_mm": s_mm,
+        "published": value,
+        "unit": unit,
+        "rel_tol": 1e-3,
+        "source": f"Paper 003, {source}",
+    }
+    for quantity, beta_deg, eps_n_deg, s_mm, value, unit, source in (
+        ("contact_radius", 50.0, 0.0, None, 48.0, "mm", "section 3, Fig. 3"),
+        ("contact_radius", 50.0, 6.0, None, 46.8, "mm", "section 3, Fig. 3"),
+        ("opening_angle", 50.0, 0.0, 45.0, 124.1, "deg", "section 3, Fig. 4"),
+        ("opening_angle", 50.0, 6.0, 45.0, 122.5, "deg", "section 3, Fig. 4"),
+        ("contact_force_ratio", 50.0, 0.0, 45.0, 0.566, "-", "section 3, Fig. 5"),
+        ("contact_force_ratio", 50.0, 6.0, 45.0, 0.570, "-", "section 3, Fig. 5"),
+        ("opening_angle", 50.0, 0.0, 70.0, 86.4, "deg", "section 4, Fig. 6"),
+        ("opening_angle", 80.0, 0.0, 45.0, 128.7, "deg", "section 4, Fig. 6"),
+        ("opening_angle", 80.0, 0.0, 70.0, 94.9, "deg", "section 4, Fig. 6"),
+        ("contact_force_ratio", 50.0, 0.0, 70.0, 0.730, "-", "section 4, Fig. 7"),
+        ("contact_force_ratio", 80.0, 0.0, 45.0, 0.555, "-", "section 4, Fig. 7"),
+        ("contact_force_ratio", 80.0, 0.0, 70.0, 0.679, "-", "section 4, Fig. 7"),
+    )
+)
+
+
+def contact_radius(
+    r_outer: ArrayLike, d: ArrayLike, beta: ArrayLike, eps_n: ArrayLike = 0.0
+) -> float | np.ndarray:
+    """Contact radius k of the link's rear torus on the tooth segment.
+
+    Parameters
+    ----------
+    r_outer : float or array_like
+        Outer radius r of the horizontal link's torus [m].
+    d : float or array_like
+        Link bar thickness [m].
+    beta : float or array_like
+        Inclination of the segment flank at the contact point [rad].
+    eps_n : float or array_like, optional
+        Inclination of the link to the pocket floor [rad]; 0 for a link lying
+        on the pocket floor.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        k = r - (d/2) [1 - cos(pi/2 - beta + eps_n)] [m].
+
+    References
+    ----------
+    Paper 003, eq. (1).
+    """
+    r = positive("r_outer", r_outer)
+    thickness = positive("d", d)
+    angle = np.pi / 2.0 - np.asarray(beta, dtype=float) + np.asarray(eps_n, dtype=float)
+    k = r - thickness / 2.0 * (1.0 - np.cos(angle))
+    return scalar_or_array(positive("r_outer and d (contact radius k)", k))
+
+
+def opening_angle(
+    s: ArrayLike, k: ArrayLike, groove_width: ArrayLike | None = None
+) -> float | np.ndarray:
+    """Opening angle psi of the tooth segments at the contact points.
+
+    Parameters
+    ----------
+    s : float or array_like
+        Distance between the contact points on the two segments [m]; at
+        least the groove width c (edge contact at s = c) and below 2 k.
+    k : float or array_like
+        Contact radius [m] (:func:`contact_radius`).
+    groove_width : float or array_like, optional
+        Width c of the groove for the vertical links [m]; when given, `s`
+        is checked against it.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        psi = 2 acos(s / (2 k)) [rad].
+
+    Raises
+    ------
+    ValueError
+        If ``s < groove_width`` or ``s >= 2 k``.
+
+    References
+    ----------
+    Paper 003, eq. (2).
+    """
+    distance = positive("s", s)
+    radius = positive("k", k)
+    if groove_width is not None and np.any(distance < non_negative("groove_width", groove_width)):
+        raise ValueError(
+            f"s must be at least the groove width c (Paper 003, eq. (2)); "
+            f"got s={s!r}, groove_width={groove_width!r}"
+        )
+    if np.any(distance >= 2.0 * radius):
+        raise ValueError(
+            f"s must be below 2 k, the contact diameter (Paper 003, eq. (2)); got s={s!r}, k={k!r}"
+        )
+    return scalar_or_array(2.0 * arccos("s", distance / (2.0 * radius)))
+
+
+def contact_force_ratio(psi: ArrayLike) -> float | np.ndarray:
+    """Force on each segment over the symmetric-plane force, F_K / F.
+
+    Parameters
+    ----------
+    psi : float or array_like
+        Segment opening angle [rad] (:func:`opening_angle`).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        F_K / F = 1 / (2 sin(psi / 2)) [-].
+
+    References
+    ----------
+    Paper 003, eq. (3) (corrected form, ``models.md``).
+    """
+    return scalar_or_array(1.0 / (2.0 * np.sin(_half_angle(psi))))
+
+
+def side_force_ratio(psi: ArrayLike) -> float | np.ndarray:
+    """Side component of the segment force over the symmetric-plane force, F_P / F.
+
+    Parameters
+    ----------
+    psi : float or array_like
+        Segment opening angle [rad] (:func:`opening_angle`).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        F_P / F = 1 / (2 tan(psi / 2)) [-].
+
+    References
+    ----------
+    Paper 003, eq. (4).
+    """
+    return scalar_or_array(1.0 / (2.0 * np.tan(_half_angle(psi))))
+
+
+def friction_increase(psi: ArrayLike) -> float | np.ndarray:
+    """Relative increase of the flank friction force at equal friction coefficient.
+
+    Parameters
+    ----------
+    psi : float or array_like
+        Segment opening angle [rad] (:func:`opening_angle`).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        2 F_K / F - 1 [-]: the friction from the two segment forces F_K over
+        that from F, minus one.
+
+    References
+    ----------
+    Paper 003, section 4 and Fig. 9.
+    """
+    return scalar_or_array(2.0 * np.asarray(contact_force_ratio(psi)) - 1.0)
+
+
+def _half_angle(psi: ArrayLike) -> np.ndarray:
+    """psi / 2, raising unless 0 < psi < pi (an opening angle of eq. (2))."""
+    angle = positive("psi", psi)
+    if np.any(angle >= np.pi):
+        raise ValueError(f"psi must be below pi rad (Paper 003, eq. (2)); got psi={psi!r}")
+    return angle / 2.0
+
+
+def compare_published() -> list[dict]:
+    """The :data:`PUBLISHED` rows with the model's value beside each.
+
+    Returns
+    -------
+    list of dict
+        Each row of :data:`PUBLISHED` plus ``model`` (same unit), ``rel_diff``
+        (model / published - 1) and ``reproduced`` (``abs(rel_diff) <= rel_tol``).
+
+    References
+    ----------
+    Paper 003, eqs. (1)-(3).
+    """
+    return [_compare(row) for row in PUBLISHED]
+
+
+def _compare(row: dict) -> dict:
+    """One :data:`PUBLISHED` row with its model value (see :func:`compare_published`)."""
+    mm = 1e-3
+    k = contact_radius(
+        row["r_mm"] * mm,
+        row["d_mm"] * mm,
+        np.radians(row["beta_deg"]),
+        np.radians(row["eps_n_deg"]),
+    )
+    if row["quantity"] == "contact_radius":
+        model = k / mm
+    else:
+        psi = opening_angle(row["s_mm"] * mm, k)
+        model = np.degrees(psi) if row["quantity"] == "opening_angle" else contact_force_ratio(psi)
+    rel_diff = float(model) / row["published"] - 1.0
+    return {
+        **row,
+        "model": float(model),
+        "rel_diff": rel_diff,
+        "reproduced": abs(rel_diff) <= row["rel_tol"],
+    }

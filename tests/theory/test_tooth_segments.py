@@ -1,0 +1,166 @@
+"""Paper 003 (Dolipski et al.): loads on segmented teeth of a chain drum, chain 34x126.
+
+Expectations are typed here from the paper and from spec/reference-values.md
+(section 003), never copied from the code's output. Tolerance 0.1 % unless noted:
+the paper prints 3-4 significant digits, and 0.1 % covers their rounding.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from pipeline.theory import tooth_segments as ts
+
+# Chain 34x126 (Paper 003, section 3) [m].
+R, D, C = 0.052, 0.034, 0.045
+RTOL = 1e-3  # 0.1 %: rounding of the published digits
+
+
+def k_of(beta_deg: float, eps_n_deg: float = 0.0) -> float:
+    return ts.contact_radius(R, D, math.radians(beta_deg), math.radians(eps_n_deg))
+
+
+def psi_deg(s_mm: float, beta_deg: float, eps_n_deg: float = 0.0) -> float:
+    return math.degrees(ts.opening_angle(s_mm / 1000, k_of(beta_deg, eps_n_deg), C))
+
+
+def fk(s_mm: float, beta_deg: float, eps_n_deg: float = 0.0) -> float:
+    return ts.contact_force_ratio(math.radians(psi_deg(s_mm, beta_deg, eps_n_deg)))
+
+
+@pytest.mark.parametrize(
+    ("beta", "eps_n", "published_mm", "model_mm"),
+    [(50, 0, 48.0, 48.023), (50, 6, 46.8, 46.809)],
+)
+def test_contact_radius(beta, eps_n, published_mm, model_mm):
+    k_mm = k_of(beta, eps_n) * 1000
+    assert k_mm == pytest.approx(published_mm, rel=RTOL)
+    assert k_mm == pytest.approx(model_mm, abs=5e-4)  # the spec's model value, 3 decimals
+
+
+@pytest.mark.parametrize(
+    ("s", "beta", "eps_n", "published_deg", "model_deg"),
+    [
+        (45, 50, 0, 124.1, 124.12),
+        (45, 50, 6, 122.5, 122.54),
+        (70, 50, 0, 86.4, 86.42),
+        (70, 80, 0, 94.9, 94.87),
+    ],
+)
+def test_opening_angle(s, beta, eps_n, published_deg, model_deg):
+    psi = psi_deg(s, beta, eps_n)
+    assert psi == pytest.approx(published_deg, rel=RTOL)
+    assert psi == pytest.approx(model_deg, abs=5e-3)  # the spec's model value, 2 decimals
+
+
+def test_opening_angle_at_s_45_beta_80_is_not_the_published_one():
+    # Published 128.7 deg (Fig. 6); eq. (2) gives 128.45 deg (-0.2 %). The spec sets
+    # 0.3 % for this row and pins the model's value; 128.7 is a finding, not a target.
+    psi = psi_deg(45, 80)
+    assert psi == pytest.approx(128.7, rel=3e-3)
+    assert psi == pytest.approx(128.45, abs=5e-3)
+    assert psi != pytest.approx(128.7, rel=RTOL)  # not reproduced within 0.1 %
+
+
+@pytest.mark.parametrize(
+    ("s", "beta", "eps_n", "published"),
+    [
+        (45, 50, 0, 0.566),
+        (45, 50, 6, 0.570),
+        (70, 50, 0, 0.730),
+        (45, 80, 0, 0.555),
+        (70, 80, 0, 0.679),
+    ],
+)
+def test_contact_force_ratio(s, beta, eps_n, published):
+    assert fk(s, beta, eps_n) == pytest.approx(published, rel=RTOL)
+
+
+def test_contact_force_ratio_closed_form():
+    # eq. (3) corrected: psi = 90 deg -> 1 / (2 sin 45 deg) = 1 / sqrt(2).
+    assert ts.contact_force_ratio(math.pi / 2) == pytest.approx(1 / math.sqrt(2), rel=1e-12)
+    # eq. (4): psi = 90 deg -> 1 / (2 tan 45 deg) = 1/2.
+    assert ts.side_force_ratio(math.pi / 2) == pytest.approx(0.5, rel=1e-12)
+
+
+def test_side_force_exceeds_half_only_above_67_9_mm():
+    # Claim (beta 50, eps_n 0): F_P / F > 0.5 only for s above about 67.9 mm, so the paper's
+    # "over 50 % in the analysed range" holds only at its upper end. Bracket to 0.1 mm.
+    k = k_of(50)
+    side = [ts.side_force_ratio(ts.opening_angle(s / 1000, k, C)) for s in (45, 67.8, 68.0, 70)]
+    assert side[0] < side[1] < 0.5 < side[2] < side[3]
+
+
+@pytest.mark.parametrize(("eps_n", "increase"), [(0, 0.460), (6, 0.506)])
+def test_friction_increase_at_s_70_beta_50(eps_n, increase):
+    # 46.0 % and 50.6 %, given to 0.1 percentage point.
+    psi = math.radians(psi_deg(70, 50, eps_n))
+    assert ts.friction_increase(psi) == pytest.approx(increase, abs=5e-4)
+
+
+def test_over_50_percent_holds_from_eps_n_5_3_deg():
+    # The paper's "over 50 %" at s = 70 mm, beta = 50 deg needs eps_n >= 5.3 deg.
+    below = ts.friction_increase(math.radians(psi_deg(70, 50, 5.25)))
+    above = ts.friction_increase(math.radians(psi_deg(70, 50, 5.35)))
+    assert below < 0.5 < above
+
+
+def test_published_rows_and_flag():
+    rows = ts.compare_published()
+    assert len(rows) == 12  # the 12 rows of reference-values.md, 003
+    flagged = [row for row in rows if not row["reproduced"]]
+    assert len(flagged) == 1
+    row = flagged[0]
+    assert (row["quantity"], row["beta_deg"], row["s_mm"], row["published"]) == (
+        "opening_angle",
+        80.0,
+        45.0,
+        128.7,
+    )
+    assert row["model"] == pytest.approx(128.45, abs=5e-3)
+    assert row["source"].startswith("Paper 003")
+
+
+@given(
+    beta_low=st.floats(min_value=20.0, max_value=89.0),
+    step=st.floats(min_value=0.5, max_value=30.0),
+    eps_n=st.floats(min_value=0.0, max_value=15.0),
+)
+def test_k_falls_as_beta_falls(beta_low, step, eps_n):
+    beta_high = min(beta_low + step, 90.0)
+    assert k_of(beta_low, eps_n) < k_of(beta_high, eps_n)
+
+
+def test_vectorised_over_beta():
+    beta = np.radians([50.0, 80.0])
+    psi = ts.opening_angle(C, ts.contact_radius(R, D, beta), C)
+    assert np.degrees(psi) == pytest.approx([124.12, 128.45], abs=5e-3)
+
+
+@pytest.mark.parametrize(
+    ("call", "name"),
+    [
+        (lambda: ts.opening_angle(0.044, 0.048, groove_width=C), "groove width"),
+        (lambda: ts.opening_angle(0.096, 0.048), "2 k"),
+        (lambda: ts.opening_angle(0.100, 0.048), "2 k"),
+        (lambda: ts.opening_angle(-0.01, 0.048), "s"),
+        (lambda: ts.opening_angle(0.045, 0.048, groove_width=-1.0), "groove_width"),
+        (lambda: ts.contact_radius(-0.052, D, 0.9), "r_outer"),
+        (lambda: ts.contact_radius(R, 0.0, 0.9), "d"),
+        (lambda: ts.contact_force_ratio(math.pi), "psi"),
+        (lambda: ts.side_force_ratio(0.0), "psi"),
+    ],
+)
+def test_domain_errors_name_the_parameter(call, name):
+    with pytest.raises(ValueError, match=name):
+        call()
+
+
+def test_edge_contact_at_the_groove_width_is_allowed():
+    # s = c is the edge contact the paper analyses (Figs. 4, 5).
+    assert ts.opening_angle(C, k_of(50), groove_width=C) > 0
