@@ -1,0 +1,206 @@
+"""Write a canonical table as a raw log in any layout the readers accept.
+
+Layouts (``formats.md``, "Tensile-test logs"):
+
+``plain``
+    CSV, ``,`` delimiter, UTF-8, one header row with units in brackets:
+    ``time [s],force [kN],gauge1 [mm],gauge2 [mm]``.
+``european``
+    ``;`` delimiter, decimal comma, cp1250 (Polish) or latin-1 (German) by
+    default; Polish ``Czas [s];Siła [kN];Wydłużenie 1 [mm]`` or German
+    ``Zeit [s];Kraft [kN];Weg 1 [mm]`` column names. ``encoding="utf-8-sig"``
+    writes UTF-8 with a byte-order mark.
+``machine``
+    An Instron Bluehill style export: ``key : value`` preamble lines, a blank
+    line, a names row ``Time,Extension 1,Extension 2,Load`` and a units row
+    ``(sec),(mm),(mm),(kN)``; CRLF line ends.
+``xlsx``
+    The plain header and the values (as numbers) on the first sheet.
+
+Units are converted with pint (:func:`pipeline.units.from_si`). Numbers are
+written in fixed-point notation with :data:`SIGNIFICANT_DIGITS` significant
+digits of the column's largest magnitude (trailing zeros trimmed), so a
+gauge reading of 0.01 mm stays ``0.01`` and no exponent ever appears.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+from openpyxl import Workbook
+
+from pipeline.units import from_si
+
+#: Layouts :func:`write_table` can write.
+LAYOUTS = ("plain", "european", "machine", "xlsx")
+
+#: File name suffix of each layout.
+SUFFIXES = {"plain": ".csv", "european": ".csv", "machine": ".csv", "xlsx": ".xlsx"}
+
+#: Force and length units the readers accept (formats.md).
+FORCE_UNITS = ("N", "kN", "daN", "kgf", "tf", "lbf")
+LENGTH_UNITS = ("mm", "um", "m", "in")
+
+#: Significant digits written, relative to a column's largest magnitude.
+SIGNIFICANT_DIGITS = 9
+
+#: Column names per naming scheme: time, force, and gauge ``{n}`` (1-based).
+NAMES = {
+    "plain": ("time", "force", "gauge{n}"),
+    "pl": ("Czas", "Siła", "Wydłużenie {n}"),
+    "de": ("Zeit", "Kraft", "Weg {n}"),
+    "machine": ("Time", "Load", "Extension {n}"),
+}
+
+#: Default encoding of the European layout per language.
+EUROPEAN_ENCODINGS = {"pl": "cp1250", "de": "latin-1"}
+
+
+def _converted(table: pd.DataFrame, force_unit: str, length_unit: str):
+    """Names by role and values converted from SI: [(role, unit, values)]."""
+    if force_unit not in FORCE_UNITS:
+        raise ValueError(f"force_unit must be one of {', '.join(FORCE_UNITS)}, got {force_unit!r}")
+    if length_unit not in LENGTH_UNITS:
+        raise ValueError(
+            f"length_unit must be one of {', '.join(LENGTH_UNITS)}, got {length_unit!r}"
+        )
+    gauges = [name for name in table.columns if str(name).startswith("gauge_")]
+    if "force" not in table.columns or not gauges:
+        raise ValueError("the table needs a force column and at least one gauge_<n> column")
+    columns = []
+    if "time" in table.columns:
+        columns.append(("time", "s", table["time"].to_numpy(dtype=float)))
+    columns.append(("force", force_unit, from_si(table["force"].to_numpy(dtype=float), force_unit)))
+    for name in gauges:
+        columns.append((name, length_unit, from_si(table[name].to_numpy(dtype=float), length_unit)))
+    return columns
+
+
+def _name(role: str, scheme: str, gauges: int) -> str:
+    time, force, gauge = NAMES[scheme]
+    if role == "time":
+        return time
+    if role == "force":
+        return force
+    if scheme == "machine" and gauges == 1:
+        return gauge.replace(" {n}", "")
+    return gauge.format(n=role.removeprefix("gauge_"))
+
+
+def format_numbers(values: np.ndarray, decimal: str = ".") -> np.ndarray:
+    """Fixed-point text of `values`, :data:`SIGNIFICANT_DIGITS` of the largest magnitude.
+
+    Examples
+    --------
+    >>> format_numbers(np.array([0.01, 1.5, -20.0])).tolist()
+    ['0.01', '1.5', '-20']
+    """
+    finite = np.abs(values[np.isfinite(values)])
+    largest = finite.max() if finite.size and finite.max() > 0 else 1.0
+    decimals = int(np.clip(SIGNIFICANT_DIGITS - 1 - np.floor(np.log10(largest)), 0, 15))
+    text = np.char.mod(f"%.{decimals}f", values)
+    if decimals:
+        text = np.char.rstrip(np.char.rstrip(text, "0"), ".")
+    text = np.where(text == "-0", "0", text)
+    text = np.where(np.isfinite(values), text, "")
+    return np.char.replace(text, ".", decimal) if decimal != "." else text
+
+
+def _lines(
+    header: Sequence[str], columns: Sequence[np.ndarray], delimiter: str, decimal: str
+) -> list[str]:
+    rows = format_numbers(columns[0], decimal)
+    for values in columns[1:]:
+        rows = np.char.add(np.char.add(rows, delimiter), format_numbers(values, decimal))
+    return [delimiter.join(header), *rows.tolist()]
+
+
+def _write_atomic(path: Path, data: bytes) -> None:
+    temporary = path.with_name(f".{path.name}.tmp")
+    temporary.write_bytes(data)
+    os.replace(temporary, path)
+
+
+def write_table(
+    table: pd.DataFrame,
+    path: str | Path,
+    *,
+    layout: str = "plain",
+    force_unit: str = "kN",
+    length_unit: str = "mm",
+    language: str = "pl",
+    encoding: str | None = None,
+    preamble: Sequence[tuple[str, str]] = (),
+) -> Path:
+    """Write a canonical table (SI) as a raw log file.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        Canonical table: ``force`` [N], ``gauge_1``... [m], optionally ``time`` [s].
+    path : str or Path
+        File to write (replaced atomically if it exists).
+    layout : str
+        One of :data:`LAYOUTS`.
+    force_unit : str
+        Unit of the force column, one of :data:`FORCE_UNITS`.
+    length_unit : str
+        Unit of the gauge columns, one of :data:`LENGTH_UNITS`.
+    language : str
+        Column names of the European layout: ``"pl"`` or ``"de"``.
+    encoding : str, optional
+        Text encoding; default UTF-8 (plain), :data:`EUROPEAN_ENCODINGS`
+        (European), ASCII (machine). ``"utf-8-sig"`` adds a byte-order mark.
+    preamble : sequence of (str, str)
+        ``key : value`` lines of the machine layout.
+
+    Returns
+    -------
+    Path
+        The file written.
+
+    Raises
+    ------
+    ValueError
+        On an unknown layout, language or unit, or a table without force or gauges.
+    """
+    path = Path(path)
+    if layout not in LAYOUTS:
+        raise ValueError(f"layout must be one of {', '.join(LAYOUTS)}, got {layout!r}")
+    if layout == "european" and language not in EUROPEAN_ENCODINGS:
+        raise ValueError(f"language must be one of {', '.join(EUROPEAN_ENCODINGS)}")
+    columns = _converted(table, force_unit, length_unit)
+    gauges = len(columns) - 1 - ("time" in table.columns)
+    if layout == "xlsx":
+        workbook = Workbook(write_only=True)
+        sheet = workbook.create_sheet("Data")
+        sheet.append([f"{_name(role, 'plain', gauges)} [{unit}]" for role, unit, _ in columns])
+        for row in np.column_stack([values for _, _, values in columns]).tolist():
+            sheet.append(row)
+        temporary = path.with_name(f".{path.name}.tmp")
+        workbook.save(temporary)
+        os.replace(temporary, path)
+        return path
+    if layout == "machine":
+        columns = [column for column in columns if column[0] != "force"] + [
+            column for column in columns if column[0] == "force"
+        ]
+        header = [_name(role, "machine", gauges) for role, _, _ in columns]
+        units = ",".join(f"({'sec' if unit == 's' else unit})" for _, unit, _ in columns)
+        lines = [f"{key} : {value}" for key, value in preamble] + ([""] if preamble else [])
+        body = _lines(header, [values for _, _, values in columns], ",", ".")
+        text = "\r\n".join([*lines, body[0], units, *body[1:]]) + "\r\n"
+        _write_atomic(path, text.encode(encoding or "ascii"))
+        return path
+    scheme, delimiter, decimal = ("plain", ",", ".")
+    if layout == "european":
+        scheme, delimiter, decimal = (language, ";", ",")
+        encoding = encoding or EUROPEAN_ENCODINGS[language]
+    header = [f"{_name(role, scheme, gauges)} [{unit}]" for role, unit, _ in columns]
+    body = _lines(header, [values for _, _, values in columns], delimiter, decimal)
+    _write_atomic(path, ("\n".join(body) + "\n").encode(encoding or "utf-8"))
+    return path

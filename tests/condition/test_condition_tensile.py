@@ -1,0 +1,156 @@
+"""Conditioning of tensile runs: gauges, strain, loop energy, permanent set, bad records."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from pipeline.condition.tensile import condition_tensile, loop_energy
+from pipeline.errors import SignalError
+from pipeline.simulate.tensile import TensileTruth, simulate_tensile
+
+LOW, HIGH = 1e3, 11e3  # N
+STIFFNESS = 1e7  # N/m: 1 mm between LOW and HIGH
+SET = 0.2e-3  # m
+
+
+def constructed_run(shape: str, cycles: int = 3, ramp: int = 100, hold: int = 20,
+                    dwell: int = 0) -> pd.DataFrame:
+    """Cycles whose force-elongation loops are exact triangles or parallelograms.
+
+    triangle: loading along x = x0 + (F - LOW) / STIFFNESS, unloading straight from the peak
+    to x0 + SET: area SET (HIGH - LOW) / 2. parallelogram: the gauges creep by SET during a
+    dwell at HIGH, unloading parallel to loading: area SET (HIGH - LOW). Holds at LOW
+    between cycles; every cycle leaves a permanent set SET.
+    """
+    delta = (HIGH - LOW) / STIFFNESS
+    forces, elongations = [np.full(hold, LOW)], [np.zeros(hold)]
+    x0 = 0.0
+    for _ in range(cycles):
+        up = np.linspace(LOW, HIGH, ramp, endpoint=False)
+        down = np.linspace(HIGH, LOW, ramp, endpoint=False)
+        forces += [up, np.full(dwell, HIGH), down, np.full(hold, LOW)]
+        if shape == "triangle":
+            back = x0 + SET + (down - LOW) * (delta - SET) / (HIGH - LOW)
+            creep = np.full(dwell, x0 + delta)
+        else:
+            back = x0 + SET + (down - LOW) / STIFFNESS
+            creep = np.linspace(x0 + delta, x0 + delta + SET, dwell, endpoint=False)
+        x0 += SET
+        elongations += [x0 - SET + (up - LOW) / STIFFNESS, creep, back, np.full(hold, x0)]
+    force, elongation = np.concatenate(forces), np.concatenate(elongations)
+    return pd.DataFrame({"time": np.arange(force.size) * 0.1, "force": force,
+                         "gauge_1": 1.1 * elongation, "gauge_2": 0.9 * elongation})
+
+
+def test_loop_energy_of_hand_made_polygons():
+    # triangle (0, 0), (2 mm, 1 kN), (1 mm, 0): area 0.5 * 1 mm * 1 kN = 0.5 J, clockwise
+    assert loop_energy(np.array([0, 1e3, 0.0]), np.array([0, 2e-3, 1e-3])) == pytest.approx(0.5)
+    # unit square traversed counter-clockwise in (x, F): negative
+    assert loop_energy(np.array([0, 0, 1.0, 1]), np.array([0, 1.0, 1, 0])) == pytest.approx(-1.0)
+
+
+@pytest.mark.parametrize(("shape", "dwell", "area"),
+                         [("triangle", 0, SET * (HIGH - LOW) / 2),
+                          ("triangle", 30, SET * (HIGH - LOW) / 2),
+                          ("parallelogram", 30, SET * (HIGH - LOW))])
+def test_hysteresis_energy_is_the_loop_area(shape, dwell, area):
+    run = condition_tensile(constructed_run(shape, dwell=dwell), gauge_length=0.5,
+                            preload=LOW, n_cycles=3)
+    np.testing.assert_allclose(run.cycles["hysteresis_energy"], area, rtol=1e-9)
+    np.testing.assert_allclose(run.cycles["permanent_set"], SET, rtol=1e-9)
+    assert run.cycles["complete"].all()
+    np.testing.assert_allclose(run.cycles["peak_force"], HIGH, rtol=1e-3)
+    np.testing.assert_allclose(run.cycles["valley_force"], LOW, rtol=1e-9)
+
+
+def test_gauges_strain_and_disagreement():
+    run = condition_tensile(constructed_run("triangle"), gauge_length=0.5)
+    samples = run.samples
+    np.testing.assert_allclose(samples["elongation"], (samples["gauge_1"] + samples["gauge_2"]) / 2)
+    np.testing.assert_allclose(samples["strain"], samples["elongation"] / 0.5)
+    np.testing.assert_allclose(samples["gauge_spread"], 0.2 * samples["elongation"], atol=1e-15)
+    assert run.gauge_disagreement == pytest.approx(0.2)  # 1.1 x and 0.9 x
+    assert str(samples["branch"].dtype) == "category"
+    assert run.warnings == []
+
+
+def test_compression_negative_run_gives_the_same_loops():
+    table = constructed_run("parallelogram", dwell=30)
+    flipped = table.assign(force=-table["force"], gauge_1=-table["gauge_1"],
+                           gauge_2=-table["gauge_2"])
+    run = condition_tensile(flipped, gauge_length=0.5, preload=LOW, n_cycles=3)
+    assert run.sign == -1
+    np.testing.assert_allclose(run.cycles["hysteresis_energy"], SET * (HIGH - LOW), rtol=1e-9)
+    np.testing.assert_allclose(run.cycles["permanent_set"], SET, rtol=1e-9)
+    np.testing.assert_allclose(run.cycles["peak_force"], HIGH, rtol=1e-3)
+
+
+def test_simulated_run_matches_its_truth():
+    truth = TensileTruth.for_chain("18x64", dwell=10.0)
+    run = condition_tensile(simulate_tensile(truth, seed=4), truth.gauge_length,
+                            preload=truth.preload, n_cycles=3)
+    for cycle in (1, 2, 3):
+        row = run.cycles.loc[cycle]
+        assert row["hysteresis_energy"] == pytest.approx(truth.hysteresis_energy(cycle), rel=0.03)
+        # read to the gauges' division (0.01 mm)
+        assert row["permanent_set"] == pytest.approx(truth.permanent_set(cycle), abs=1e-5)
+    assert run.gauge_disagreement == pytest.approx(2 * truth.bending, rel=0.05)
+    counts = run.samples.groupby(["cycle", "branch"], observed=True).size()
+    assert counts.loc[(2, "loading")] > 0.95 * (truth.upper_force - truth.preload) / 100
+
+
+def test_isolated_missing_samples_are_dropped_with_a_warning():
+    table = constructed_run("triangle")
+    table.loc[[50, 51, 300], "gauge_2"] = np.nan
+    run = condition_tensile(table, gauge_length=0.5)
+    assert len(run.samples) == len(table) - 3
+    assert "dropped 3 sample(s)" in run.warnings[0]
+
+
+def test_empty_gauge_column_is_left_out():
+    table = constructed_run("triangle").assign(gauge_3=np.nan)
+    run = condition_tensile(table, gauge_length=0.5)
+    assert "gauge_3" not in run.samples.columns
+    assert "gauge_3" in run.warnings[0]
+
+
+def bad(kind: str) -> pd.DataFrame:
+    table = constructed_run("triangle")
+    if kind == "time":
+        table.loc[200, "time"] = table.loc[100, "time"]
+    elif kind == "nan":
+        table.loc[400:409, "force"] = np.nan
+    elif kind == "clipping":
+        table["gauge_2"] = np.minimum(table["gauge_2"], 0.5 * table["gauge_2"].max())
+    elif kind == "columns":
+        table = table.drop(columns=["gauge_1", "gauge_2"])
+    elif kind == "all_gauges_empty":
+        table[["gauge_1", "gauge_2"]] = np.nan
+    return table
+
+
+@pytest.mark.parametrize(
+    ("kind", "settings", "column", "words"),
+    [
+        ("time", {}, "time", "not strictly increasing at sample 200"),
+        ("nan", {}, "force", "10 missing values in a row (samples 400 to 409)"),
+        ("clipping", {}, "gauge_2", "saturated"),
+        ("columns", {}, None, "needs a force column and at least one gauge"),
+        ("all_gauges_empty", {}, None, "every gauge column is empty"),
+        ("ok", {"preload": 20e3}, "force", "never rises above the preload"),
+        ("ok", {"n_cycles": 4}, "force", "found 3 load cycle(s), the test should have 4"),
+    ],
+)
+def test_bad_records_raise_signal_errors_with_a_hint(kind, settings, column, words):
+    with pytest.raises(SignalError) as error:
+        condition_tensile(bad(kind), gauge_length=0.5, **settings)
+    assert words in str(error.value)
+    assert error.value.column == column
+    assert error.value.hint
+
+
+def test_gauge_length_must_be_positive():
+    with pytest.raises(ValueError, match="gauge_length"):
+        condition_tensile(constructed_run("triangle"), gauge_length=0.0)
