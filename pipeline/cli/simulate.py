@@ -1,0 +1,385 @@
+"""``chainbench simulate ...``: synthetic campaigns from the virtual test benches.
+
+``chainbench simulate tensile`` writes the logs of a tensile campaign (one file
+per specimen, in any layout and units the readers accept), its run sheet
+``campaign.toml`` and ``truth.json``, the true values each log was made from.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from dataclasses import asdict
+from enum import StrEnum
+from pathlib import Path
+from typing import Annotated
+
+import numpy as np
+import typer
+
+from pipeline import catalog
+from pipeline.cli._options import MultiValueCommand
+from pipeline.cli._output import emit
+from pipeline.simulate.engagement import (
+    EngagementSettings,
+    simulate_engagement,
+    write_engagement_csv,
+    write_engagement_tdms,
+)
+from pipeline.simulate.export import (
+    FORCE_UNITS,
+    LENGTH_UNITS,
+    SUFFIXES,
+    write_table,
+)
+from pipeline.simulate.tensile import TensileTruth, simulate_tensile
+from pipeline.units import from_si, to_si
+
+simulate_app = typer.Typer(
+    help="Write synthetic campaigns from the virtual test benches (known truth).",
+    no_args_is_help=True,
+)
+
+
+class Layout(StrEnum):
+    """File layouts of the written logs (formats.md)."""
+
+    plain = "plain"
+    european = "european"
+    machine = "machine"
+    xlsx = "xlsx"
+
+
+class Language(StrEnum):
+    """Column names of the European layout."""
+
+    pl = "pl"
+    de = "de"
+
+
+def _choice(value: str, allowed: tuple[str, ...], option: str) -> str:
+    if value not in allowed:
+        raise typer.BadParameter(f"choose one of {', '.join(allowed)}", param_hint=option)
+    return value
+
+
+def _run_sheet(campaign: str, chain: str, runs: list[dict]) -> str:
+    """Text of a ``campaign.toml`` for the simulated tensile runs."""
+    key = "c" + chain.replace(".", "_")
+    lines = [
+        "# Written by `chainbench simulate tensile`: a synthetic campaign with known truth",
+        "# (see truth.json beside this file).",
+        "[campaign]",
+        f"id = {json.dumps(campaign)}",
+        f"title = {json.dumps(f'Virtual tensile bench, chain {chain}')}",
+        'machine = "chainbench virtual tensile bench"',
+        "",
+        f"[chains.{key}]",
+        f"catalog = {json.dumps(chain)}",
+    ]
+    for run in runs:
+        lines += [
+            "",
+            "[[runs]]",
+            f"id = {json.dumps(run['id'])}",
+            'kind = "tensile"',
+            f"file = {json.dumps(run['file'])}",
+            f"chain = {json.dumps(key)}",
+            f"specimen = {json.dumps(run['specimen'])}",
+            f"gauge_length_mm = {run['gauge_length_mm']:g}",
+            f"cycles = {run['cycles']}",
+        ]
+    return "\n".join(lines) + "\n"
+
+
+@simulate_app.command("tensile")
+def tensile(
+    out: Annotated[Path, typer.Option("--out", help="Campaign folder to write (created).")],
+    chain: Annotated[
+        str, typer.Option("--chain", help="Catalogue round-link chain, e.g. 18x64.")
+    ] = "18x64",
+    e0_kn: Annotated[
+        float | None,
+        typer.Option("--e0-kn", help="True stiffness E0 in kN. Default: Paper 001, Table 1."),
+    ] = None,
+    specimens: Annotated[
+        int, typer.Option("--specimens", min=1, help="Number of specimens (Paper 001: 4).")
+    ] = 4,
+    specimen_scatter: Annotated[
+        float,
+        typer.Option(
+            "--specimen-scatter",
+            min=0.0,
+            help="Relative standard deviation of E0 between specimens.",
+        ),
+    ] = 0.01,
+    cycles: Annotated[int, typer.Option("--cycles", min=1, help="Load cycles per run.")] = 3,
+    gauge_length_mm: Annotated[
+        float, typer.Option("--gauge-length-mm", help="Gauge length in mm (Paper 001: ~900).")
+    ] = 900.0,
+    sample_rate: Annotated[float, typer.Option("--sample-rate", help="Logging rate in Hz.")] = 10.0,
+    loading_rate_kn_per_s: Annotated[
+        float, typer.Option("--loading-rate-kn-per-s", help="Loading and unloading rate in kN/s.")
+    ] = 1.0,
+    dwell: Annotated[float, typer.Option("--dwell", help="Hold at each peak in s.")] = 0.0,
+    layout: Annotated[Layout, typer.Option("--layout", help="File layout.")] = Layout.plain,
+    language: Annotated[
+        Language, typer.Option("--language", help="Column names of the European layout.")
+    ] = Language.pl,
+    force_unit: Annotated[
+        str, typer.Option("--force-unit", help=f"Force unit: {', '.join(FORCE_UNITS)}.")
+    ] = "kN",
+    length_unit: Annotated[
+        str, typer.Option("--length-unit", help=f"Gauge unit: {', '.join(LENGTH_UNITS)}.")
+    ] = "mm",
+    encoding: Annotated[
+        str | None,
+        typer.Option(
+            "--encoding", help="Text encoding (utf-8-sig adds a BOM). Default: per layout."
+        ),
+    ] = None,
+    campaign: Annotated[
+        str, typer.Option("--campaign", help="Campaign id written to the run sheet.")
+    ] = "simulated-tensile",
+    seed: Annotated[int, typer.Option("--seed", help="Seed of all the randomness.")] = 1,
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
+) -> None:
+    """Write the logs of a simulated tensile campaign with known truth."""
+    _choice(force_unit, FORCE_UNITS, "--force-unit")
+    _choice(length_unit, LENGTH_UNITS, "--length-unit")
+    if not re.fullmatch(r"[A-Za-z0-9._-]+", campaign):
+        raise typer.BadParameter(
+            "use letters, digits, '.', '_' and '-' only", param_hint="--campaign"
+        )
+    rng = np.random.default_rng(seed)
+    try:
+        base = TensileTruth.for_chain(
+            chain,
+            E0=None if e0_kn is None else to_si(e0_kn, "kN"),
+            n_cycles=cycles,
+            gauge_length=to_si(gauge_length_mm, "mm"),
+            sample_rate=sample_rate,
+            loading_rate=to_si(loading_rate_kn_per_s, "kN/s"),
+            dwell=dwell,
+        )
+    except (KeyError, ValueError) as error:
+        raise typer.BadParameter(str(error).strip("'\"")) from None
+    out.mkdir(parents=True, exist_ok=True)
+    runs, truths = [], {}
+    prefix = "T" + chain.split("x")[0]
+    for number in range(1, specimens + 1):
+        truth = base.with_(E0=base.E0 * (1.0 + specimen_scatter * rng.standard_normal()))
+        run_seed = int(rng.integers(2**31))
+        run_id = f"{prefix}-{number}"
+        file = run_id + SUFFIXES[layout]
+        write_table(
+            simulate_tensile(truth, run_seed),
+            out / file,
+            layout=layout,
+            force_unit=force_unit,
+            length_unit=length_unit,
+            language=language,
+            encoding=encoding,
+            preamble=[
+                ("Text Inputs", f'Specimen label,"{run_id}"'),
+                ("General", 'Machine,"chainbench virtual tensile bench"'),
+            ],
+        )
+        runs.append(
+            {
+                "id": run_id,
+                "file": file,
+                "specimen": f"{chain}-{number}",
+                "gauge_length_mm": gauge_length_mm,
+                "cycles": cycles,
+                "E0_kN": from_si(truth.E0, "kN"),
+            }
+        )
+        truths[run_id] = {
+            "seed": run_seed,
+            "truth": asdict(truth),
+            "permanent_set_m": [truth.permanent_set(k) for k in range(1, cycles + 1)],
+            "hysteresis_energy_J": [truth.hysteresis_energy(k) for k in range(1, cycles + 1)],
+        }
+    (out / "campaign.toml").write_text(_run_sheet(campaign, chain, runs), encoding="utf-8")
+    document = {
+        "chain": chain,
+        "layout": str(layout),
+        "force_unit": force_unit,
+        "length_unit": length_unit,
+        "seed": seed,
+        "runs": truths,
+    }
+    (out / "truth.json").write_text(json.dumps(document, indent=2) + "\n", encoding="utf-8")
+    emit(
+        [{key: run[key] for key in ("id", "file", "E0_kN")} for run in runs],
+        title=f"Simulated tensile campaign in {out}",
+        as_json=as_json,
+        extra={
+            "out": str(out),
+            "run_sheet": str(out / "campaign.toml"),
+            "truth": str(out / "truth.json"),
+        },
+        digits=6,
+    )
+
+
+class EngagementFormat(StrEnum):
+    """File formats of the simulated engagement logs."""
+
+    csv = "csv"
+    tdms = "tdms"
+
+
+def _engagement_sheet(campaign: str, chain: str, wheels: dict[str, tuple[int, float]],
+                      runs: list[dict]) -> str:
+    """Text of a ``campaign.toml`` for the simulated engagement runs."""
+    key = "c" + chain.replace(".", "_")
+    lines = [
+        "# Written by `chainbench simulate engagement`: a synthetic campaign with known truth",
+        "# (see truth.json beside this file).",
+        "[campaign]",
+        f"id = {json.dumps(campaign)}",
+        f"title = {json.dumps(f'Virtual engagement bench, chain {chain}')}",
+        'machine = "chainbench virtual engagement bench"',
+        "",
+        f"[chains.{key}]",
+        f"catalog = {json.dumps(chain)}",
+    ]
+    for wheel, (teeth, apex_deg) in wheels.items():
+        lines += ["", f"[wheels.{wheel}]", f"teeth = {teeth}", f"apex_angle_deg = {apex_deg:g}"]
+    for run in runs:
+        lines += [
+            "",
+            "[[runs]]",
+            f"id = {json.dumps(run['id'])}",
+            'kind = "engagement"',
+            f"file = {json.dumps(run['file'])}",
+            f"chain = {json.dumps(key)}",
+            f"wheel = {json.dumps(run['wheel'])}",
+            f"branch_length_m = {run['branch_length_m']:g}",
+            f"omega_per_s = {run['omega_per_s']:g}",
+            f"E0_N = {run['E0_N']:.6g}",
+        ]
+    return "\n".join(lines) + "\n"
+
+
+@simulate_app.command("engagement", cls=MultiValueCommand)
+def engagement(
+    out: Annotated[Path, typer.Option("--out", help="Campaign folder to write (created).")],
+    chain: Annotated[
+        str, typer.Option("--chain", help="Catalogue round-link chain, e.g. 18x64.")
+    ] = "18x64",
+    teeth: Annotated[
+        list[int] | None, typer.Option("--teeth", help="Teeth of the wheels, e.g. 6 8 10.")
+    ] = None,
+    apex_deg: Annotated[
+        list[float] | None,
+        typer.Option("--apex-deg", help="Tooth apex angles in deg (a wheel per teeth x apex)."),
+    ] = None,
+    omega: Annotated[
+        list[float] | None, typer.Option("--omega", help="Wheel speeds in 1/s, one run each.")
+    ] = None,
+    e0_kn: Annotated[
+        float, typer.Option("--e0-kn", help="Chain stiffness E0 in kN (Paper 000: 22600).")
+    ] = 22600.0,
+    branch_length: Annotated[
+        float, typer.Option("--branch-length", help="Active branch length in m.")
+    ] = 2.0,
+    k: Annotated[float, typer.Option("--k", help="Share of link masses in the impact.")] = 2.0,
+    pretension_kn: Annotated[
+        float, typer.Option("--pretension-kn", help="Mean branch tension in kN.")
+    ] = 20.0,
+    polygon_kn: Annotated[
+        float, typer.Option("--polygon-kn", help="Polygon-effect amplitude in kN.")
+    ] = 0.5,
+    damping: Annotated[
+        float, typer.Option("--damping", help="Damping ratio of the branch.")
+    ] = 0.03,
+    natural_frequency_hz: Annotated[
+        float | None,
+        typer.Option("--natural-frequency-hz",
+                     help="Natural frequency in Hz. Default: sqrt(E0 / (L m_branch)) / 2 pi."),
+    ] = None,
+    sample_rate: Annotated[
+        float, typer.Option("--sample-rate", help="Logging rate in Hz.")
+    ] = 20000.0,
+    duration: Annotated[float, typer.Option("--duration", help="Log length in s.")] = 2.0,
+    snr: Annotated[
+        float, typer.Option("--snr", help="N_u1 over the noise's standard deviation.")
+    ] = 20.0,
+    jitter_ms: Annotated[
+        float, typer.Option("--jitter-ms", help="Standard deviation of the seating times in ms.")
+    ] = 0.1,
+    amplitude_scatter: Annotated[
+        float, typer.Option("--amplitude-scatter", help="Relative scatter of strike amplitudes.")
+    ] = 0.0,
+    angle: Annotated[
+        bool, typer.Option("--angle/--no-angle", help="Write a wheel-angle channel.")
+    ] = True,
+    clip_kn: Annotated[
+        float | None, typer.Option("--clip-kn", help="Clip the force channel at this level in kN.")
+    ] = None,
+    file_format: Annotated[
+        EngagementFormat, typer.Option("--format", help="File format of the logs.")
+    ] = EngagementFormat.tdms,
+    campaign: Annotated[
+        str, typer.Option("--campaign", help="Campaign id written to the run sheet.")
+    ] = "simulated-engagement",
+    seed: Annotated[int, typer.Option("--seed", help="Seed of all the randomness.")] = 1,
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
+) -> None:
+    """Write the logs of a simulated engagement campaign with known truth (Paper 000)."""
+    if not re.fullmatch(r"[A-Za-z0-9._-]+", campaign):
+        raise typer.BadParameter(
+            "use letters, digits, '.', '_' and '-' only", param_hint="--campaign"
+        )
+    try:
+        spec = catalog.chain(chain)
+        geometry = {"t": spec["t"], "d": spec["d"], "mass_per_length": spec["mass_per_length"]}
+    except KeyError as error:
+        raise typer.BadParameter(str(error).strip("'\""), param_hint="--chain") from None
+    rng = np.random.default_rng(seed)
+    wheels = {f"w{z}_{a:g}".replace(".", "p"): (z, a)
+              for z in teeth or [8] for a in apex_deg or [40.0]}
+    runs, truths, writers = [], {}, {"csv": write_engagement_csv, "tdms": write_engagement_tdms}
+    out.mkdir(parents=True, exist_ok=True)
+    for wheel, (z, apex) in wheels.items():
+        for speed in omega or [20.0]:
+            try:
+                settings = EngagementSettings(
+                    z=z, psi=math.radians(apex), omega=speed, E0=to_si(e0_kn, "kN"),
+                    branch_length=branch_length, k=k, pretension=to_si(pretension_kn, "kN"),
+                    polygon_amplitude=to_si(polygon_kn, "kN"), damping_ratio=damping,
+                    natural_frequency=(None if natural_frequency_hz is None
+                                       else 2 * math.pi * natural_frequency_hz),
+                    sample_rate=sample_rate, duration=duration, snr=snr,
+                    jitter=jitter_ms / 1000, amplitude_scatter=amplitude_scatter,
+                    with_angle=angle, clip_level=None if clip_kn is None else to_si(clip_kn, "kN"),
+                    **geometry)
+            except ValueError as error:
+                raise typer.BadParameter(str(error)) from None
+            run_seed = int(rng.integers(2**31))
+            table, truth = simulate_engagement(settings, run_seed)
+            run_id = f"E{z}-{apex:g}-{speed:g}".replace(".", "p")
+            file = f"{run_id}.{file_format}"
+            writers[str(file_format)](table, out / file)
+            runs.append({"id": run_id, "file": file, "wheel": wheel, "branch_length_m":
+                         branch_length, "omega_per_s": speed, "E0_N": settings.E0,
+                         "N_u1": truth["N_u1"], "N_u2": truth["N_u2"]})
+            truths[run_id] = {"seed": run_seed, **{
+                name: value.tolist() if isinstance(value, np.ndarray) else value
+                for name, value in truth.items()}}
+    (out / "campaign.toml").write_text(_engagement_sheet(campaign, chain, wheels, runs),
+                                       encoding="utf-8")
+    document = {"chain": chain, "format": str(file_format), "seed": seed, "runs": truths}
+    (out / "truth.json").write_text(json.dumps(document, indent=2) + "\n", encoding="utf-8")
+    emit(
+        [{key: run[key] for key in ("id", "file", "omega_per_s", "N_u1", "N_u2")} for run in runs],
+        title=f"Simulated engagement campaign in {out}",
+        as_json=as_json,
+        extra={"out": str(out), "run_sheet": str(out / "campaign.toml"),
+               "truth": str(out / "truth.json")},
+        digits=6,
+    )

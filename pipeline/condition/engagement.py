@@ -1,0 +1,511 @@
+"""Engagement-event detection in a branch-tension log (condition stage).
+
+An engagement log (``formats.md``, "Engagement measurement logs") holds the
+tension of the active chain branch, and optionally the wheel angle, at a fixed
+operating point. Every seating period ``P = 2 pi / (z omega)`` a horizontal link
+seats and strikes the wheel twice, ``tau = pi / (z omega) = P / 2`` apart
+(Paper 000): the idle flank (impact 1), then the working flank of the next
+tooth (impact 2). :func:`detect_events` locates both strikes of every seating
+in the log, to about a millisecond; :mod:`pipeline.fit.impact` refines the
+times to a fraction of a sample and extracts the impact tensions.
+
+How
+---
+1. The branch's natural frequency is estimated from the spectrum of the head of
+   the log (of its first difference, so the slow tension does not leak over it),
+   or searched near a given one.
+2. Onset strength: the log is block-averaged to about 10 samples per ringing
+   period, its slow part (pretension, polygon effect) removed, and an inverse
+   filter of the branch's ringing mode applied (the second-order prediction
+   error ``e_j = x_j - 2 r cos(omega_d dt) x_{j-1} + r^2 x_{j-2}``,
+   ``r = exp(-zeta omega_n dt)``). Free ringing, however many strikes are
+   superposed in it, predicts itself and vanishes; the start of a new strike does
+   not, so ``e^2`` peaks at every strike onset.
+3. Seatings: from the **angle channel** when there is one (the measured speed,
+   every tooth passage interpolated from the unwrapped angle, the angular phase
+   of the strikes found by folding the onset strength over the tooth pitch
+   angle ``2 pi / z``, or given as `impact_angle`; each seating then placed at
+   the strongest onset within an eighth of a period of where the angle puts it,
+   which follows the seating jitter); otherwise from the **force** itself (the
+   period from the autocorrelation of the onset strength, then the strongest
+   onset of every period). Folds and autocorrelations use the onset strengths
+   capped at their 99th percentile, so a glitch cannot outweigh the strikes.
+4. Impact 2 is the stronger strike of a seating: ``v_u2 > v_u1`` for every
+   wheel (Paper 000, eqs. (1)-(2): ``(t + d) sin(pi/z + psi/2) > (t - d)
+   sin(psi/2)``); impact 1 lies ``P / 2`` before it.
+5. The measured period is checked against the run sheet's ``2 pi / (z omega)``:
+   a disagreement beyond `period_tolerance` gives a :class:`SpeedMismatchWarning`
+   (also kept in :attr:`EngagementEvents.messages`) and detection goes on with the
+   measured period.
+
+Logs shorter than :data:`MIN_PERIODS` seating periods, with gaps in time or
+without data raise :class:`~pipeline.errors.SignalError` with a hint.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+from scipy.signal import find_peaks, welch
+
+from pipeline.errors import SignalError
+from pipeline.theory.wheel_impact import seating_period
+
+#: Fewest seating periods a log must hold for events to be detected and checked.
+MIN_PERIODS = 5
+
+#: Relative difference between measured and stated seating period above which a
+#: :class:`SpeedMismatchWarning` is given (2 %: a lab's speed is set to about 1 %).
+PERIOD_TOLERANCE = 0.02
+
+#: Damping ratio assumed by the onset filter [-]: chain branches ring with a few
+#: per cent (``formats.md``); the filter is insensitive to it.
+ASSUMED_DAMPING = 0.03
+
+#: Samples per ringing period of the block-averaged signal used for the onsets.
+_SAMPLES_PER_RINGING = 10
+
+
+class SpeedMismatchWarning(UserWarning):
+    """The seating period of a log disagrees with the speed stated in the run sheet."""
+
+
+@dataclass(frozen=True)
+class EngagementEvents:
+    """Seatings detected in one engagement log.
+
+    Attributes
+    ----------
+    impact1_time, impact2_time : numpy.ndarray
+        Onset of impact 1 (idle flank) and impact 2 (working flank) of every
+        seating found [s], to about :attr:`onset_resolution`.
+    seating_period : float
+        Mean seating period measured in the log [s].
+    stated_period : float
+        ``2 pi / (z omega)`` from the run sheet's teeth and speed [s].
+    omega : float
+        Wheel speed measured in the log, ``2 pi / (z P)`` [1/s].
+    stated_omega : float
+        Wheel speed stated in the run sheet [1/s].
+    z : int
+        Number of teeth [-].
+    sample_rate : float
+        Sampling rate of the log [Hz].
+    start_time : float
+        Time of the first sample [s].
+    natural_frequency : float
+        First estimate of the branch's natural angular frequency [rad/s].
+    source : str
+        ``"angle"`` (seatings from the angle channel) or ``"force"``.
+    onset_resolution : float
+        Resolution of the onset times [s] (one averaged block).
+    messages : tuple of str
+        Warnings given during detection (e.g. the speed mismatch).
+    """
+
+    impact1_time: np.ndarray
+    impact2_time: np.ndarray
+    seating_period: float
+    stated_period: float
+    omega: float
+    stated_omega: float
+    z: int
+    sample_rate: float
+    start_time: float
+    natural_frequency: float
+    source: str
+    onset_resolution: float
+    messages: tuple[str, ...] = ()
+
+    @property
+    def tau(self) -> float:
+        """Nominal time between impact 1 and impact 2, half the measured period [s]."""
+        return self.seating_period / 2
+
+    @property
+    def count(self) -> int:
+        """Number of seatings found."""
+        return int(self.impact1_time.size)
+
+
+def sampling(table: pd.DataFrame, file: str | Path | None = None) -> tuple[float, float]:
+    """Start time [s] and sampling rate [Hz] of a uniformly sampled log.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        Canonical table with a ``time`` column [s].
+    file : str or Path, optional
+        The log's file, for error messages.
+
+    Returns
+    -------
+    start_time, sample_rate : float
+
+    Raises
+    ------
+    SignalError
+        No ``time`` column, fewer than 3 samples, a non-finite or non-increasing
+        time, or a gap (a step off the mean step by more than half a step).
+    """
+    if "time" not in table:
+        raise SignalError("the engagement log has no time channel", file=file, column="time",
+                          hint="map the time column in the run sheet (columns = {time = ...})")
+    time = table["time"].to_numpy(dtype=float)
+    if time.size < 3:
+        raise SignalError(f"the engagement log holds {time.size} samples", file=file,
+                          hint="check that the file is complete")
+    step = (time[-1] - time[0]) / (time.size - 1)
+    if not (np.isfinite(step) and step > 0):
+        raise SignalError("the time channel does not increase", file=file, column="time",
+                          hint="check the time column and its unit")
+    steps = np.diff(time)
+    if not (steps.min() >= 0.5 * step and steps.max() <= 1.5 * step):  # also catches NaN
+        deviation = np.abs(steps - step)
+        worst = int(np.argmax(np.where(np.isfinite(deviation), deviation, np.inf)))
+        raise SignalError(
+            f"the log is not uniformly sampled: time goes from {time[worst]!r} to "
+            f"{time[worst + 1]!r} s (samples {worst + 1} to {worst + 2}) where the mean step "
+            f"is {step:.6g} s", file=file, column="time",
+            hint="a gap or a repeated block in the recording; export the log again or cut it "
+                 "into uniformly sampled pieces")
+    return float(time[0]), float(1.0 / step)
+
+
+def natural_frequency_estimate(force: np.ndarray, sample_rate: float, period: float,
+                               near: float | None = None,
+                               file: str | Path | None = None) -> float:
+    """First estimate of the branch's natural angular frequency from the log's spectrum.
+
+    Parameters
+    ----------
+    force : numpy.ndarray
+        Branch tension [N] (NaN-free).
+    sample_rate : float
+        Sampling rate [Hz].
+    period : float
+        Seating period [s]: the spectrum is searched above 1.5 seating frequencies.
+    near : float, optional
+        Expected natural angular frequency [rad/s] (e.g. ``sqrt(E0 / (L m_branch))``):
+        the search is narrowed to 0.6-1.6 times it.
+    file : str or Path, optional
+        The log's file, for error messages.
+
+    Returns
+    -------
+    float
+        The peak of the Welch power spectrum of the first difference of the
+        force (segments about one seating period long, so that the lines of the
+        seating harmonics merge into the branch's resonance), parabolically
+        interpolated [rad/s]; good to about 10 %.
+    """
+    segment = int(2 ** math.ceil(math.log2(max(64.0, sample_rate * period))))
+    # The first difference weights the spectrum by frequency^2: the slow tension
+    # (polygon effect, load changes) no longer leaks over the branch's resonance.
+    head = np.diff(force[: min(force.size, 64 * segment + 1)])
+    frequency, power = welch(head, fs=sample_rate, nperseg=min(segment, head.size))
+    low, high = 1.5 / period, 0.4 * sample_rate
+    if near is not None:
+        low, high = 0.6 * near / (2 * np.pi), min(high, 1.6 * near / (2 * np.pi))
+    band = np.flatnonzero((frequency >= low) & (frequency <= high))
+    if band.size == 0:
+        raise SignalError(
+            f"no spectrum between {low:.4g} and {high:.4g} Hz to find the branch's ringing in",
+            file=file, hint="the sampling rate is too low for this speed; log at 5 kHz or more")
+    peak = band[np.argmax(power[band])]
+    f_peak = frequency[peak]
+    if 0 < peak < frequency.size - 1:
+        left, centre, right = np.log(power[peak - 1: peak + 2] + 1e-300)
+        curvature = left - 2 * centre + right
+        if curvature < 0:
+            f_peak += 0.5 * (left - right) / curvature * (frequency[1] - frequency[0])
+    return float(2 * np.pi * f_peak)
+
+
+def onset_strength(force: np.ndarray, block: int, sample_rate: float, omega_n: float,
+                   zeta: float = ASSUMED_DAMPING) -> np.ndarray:
+    """Strike-onset strength per block of `block` samples (see the module notes, step 2).
+
+    Parameters
+    ----------
+    force : numpy.ndarray
+        Branch tension [N] (NaN-free).
+    block : int
+        Samples averaged per block.
+    sample_rate : float
+        Sampling rate [Hz].
+    omega_n : float
+        Natural angular frequency of the branch [rad/s].
+    zeta : float, optional
+        Damping ratio [-].
+
+    Returns
+    -------
+    numpy.ndarray
+        ``e_j^2 + e_{j+1}^2`` [N^2] per block ``j``: large at the block where a
+        strike starts and the next one, small in free ringing.
+    """
+    blocks = force.size // block
+    x = force[: blocks * block].reshape(blocks, block).mean(axis=1)
+    dt = block / sample_rate
+    ringing_blocks = max(3, int(round(2 * np.pi / omega_n / dt)))
+    kernel = np.ones(ringing_blocks) / ringing_blocks
+    x = x - np.convolve(np.pad(x, ringing_blocks // 2, mode="edge"), kernel, mode="valid")[:blocks]
+    r = math.exp(-zeta * omega_n * dt)
+    a1 = 2 * r * math.cos(omega_n * math.sqrt(1 - zeta**2) * dt)
+    error = np.zeros(blocks)
+    error[2:] = x[2:] - a1 * x[1:-1] + r * r * x[:-2]
+    strength = error**2
+    strength[:-1] += strength[1:]
+    strength[:3] = 0.0
+    return strength
+
+
+def _winsorized(strength: np.ndarray) -> np.ndarray:
+    """Onset strengths capped at their 99th percentile, so a glitch weighs like one strike.
+
+    A seating's two onsets fill some 3 % of the blocks (tau / block ~ 30): the cap
+    lies among the strikes, and a single step or spike of any size cannot
+    outweigh them in a fold or an autocorrelation.
+    """
+    return np.minimum(strength, np.percentile(strength, 99))
+
+
+def _period_from_autocorrelation(strength: np.ndarray, dt: float, stated: float) -> float:
+    """Seating period [s] from the autocorrelation of the onsets at 0.25-4 stated periods.
+
+    The onsets are smoothed over 5 blocks first (so that a peak does not hinge on
+    where the period falls between two lags); the period is the shortest lag whose
+    correlation reaches 70 % of the highest (multiples of the period correlate as
+    well as the period; half the period, impact 1 against impact 2, reaches at most
+    2 r / (1 + r^2) < 25 % of it, r > 10 the ratio of their onset strengths).
+    """
+    head = _winsorized(strength[: min(strength.size, int(200 * stated / dt))])
+    x = np.convolve(head, np.ones(5) / 5, mode="same")
+    x -= x.mean()
+    size = 2 ** math.ceil(math.log2(2 * x.size))
+    spectrum = np.fft.rfft(x, size)
+    correlation = np.fft.irfft(spectrum * np.conj(spectrum), size)[: x.size]
+    low = max(2, int(0.25 * stated / dt))
+    high = min(int(4 * stated / dt), int(0.6 * x.size))
+    if high <= low + 2:
+        return stated
+    window = correlation[low:high]
+    peaks, _ = find_peaks(window, height=0.7 * window.max())
+    lag = low + int(peaks[0] if peaks.size else np.argmax(window))
+    left, centre, right = correlation[lag - 1: lag + 2]
+    curvature = left - 2 * centre + right
+    shift = 0.5 * (left - right) / curvature if curvature < 0 else 0.0
+    return float((lag + shift) * dt)
+
+
+def _seatings_from_force(strength: np.ndarray, block_time: np.ndarray, dt: float,
+                         stated: float) -> tuple[np.ndarray, float]:
+    """Impact-2 onsets [s] (the strongest onset of every period) and the mean period [s]."""
+    guess = _period_from_autocorrelation(strength, dt, stated)
+    peaks, props = find_peaks(strength, distance=max(1, int(0.7 * guess / dt)), height=0.0)
+    heights = props["peak_heights"]
+    peaks = peaks[heights >= 0.2 * np.median(heights)] if peaks.size else peaks
+    onsets = block_time[peaks]
+    if onsets.size < 2:
+        return onsets, guess
+    # Least-squares slope of the onsets over their cycle numbers (missed seatings skipped).
+    cycle = np.concatenate([[0.0], np.cumsum(np.maximum(1, np.round(np.diff(onsets) / guess)))])
+    centred = cycle - cycle.mean()
+    return onsets, float(np.dot(centred, onsets - onsets.mean()) / np.dot(centred, centred))
+
+
+def _strongest_near(strength: np.ndarray, block_time: np.ndarray, expected: np.ndarray,
+                    half_width: float) -> np.ndarray:
+    """Time [s] of the block with the strongest onset within `half_width` [s] of each expected."""
+    dt = block_time[1] - block_time[0]
+    half = max(1, int(half_width / dt))
+    centre = np.clip(np.round((expected - block_time[0]) / dt).astype(np.int64), half,
+                     strength.size - half - 1)
+    windows = np.lib.stride_tricks.sliding_window_view(strength, 2 * half + 1)
+    return block_time[centre - half + np.argmax(windows[centre - half], axis=1)]
+
+
+def _seatings_from_angle(strength: np.ndarray, angle: np.ndarray, angle_time: np.ndarray,
+                         block_time: np.ndarray, z: int, impact_angle: float | None,
+                         file: str | Path | None) -> tuple[np.ndarray, np.ndarray, float]:
+    """Impact-1 and impact-2 onsets [s] and the mean speed [1/s] from the angle channel.
+
+    `angle` is sampled at `angle_time`, often enough to unwrap. Each seating's
+    impact 2 is the strongest onset within a quarter of tau of where the angle
+    puts it (the angle gives the speed, the onsets the seating's jitter).
+    """
+    finite = np.isfinite(angle)
+    if finite.sum() < 3:
+        raise SignalError("the angle channel holds no data", file=file, column="angle",
+                          hint="remove the angle mapping from the run sheet to detect the "
+                               "seatings from the force alone")
+    theta = np.unwrap(angle[finite])
+    t = angle_time[finite]
+    centred = t - t.mean()
+    slope = float(np.dot(centred, theta - theta.mean()) / np.dot(centred, centred))
+    pitch = 2 * np.pi / z
+    if not abs(slope) * (t[-1] - t[0]) > pitch:
+        raise SignalError("the angle channel advances by less than one tooth pitch",
+                          file=file, column="angle",
+                          hint="check the angle channel's unit (rad expected) and mapping")
+    theta = np.maximum.accumulate(np.sign(slope) * theta)
+    period = pitch / abs(slope)
+    if impact_angle is None:
+        # Fold the onsets of the first 200 periods over the tooth pitch angle.
+        dt = block_time[1] - block_time[0]
+        head = block_time[: int(200 * period / dt)]
+        bins = max(8, int(round(period / dt)))
+        phase = np.mod(np.interp(head, t, theta), pitch)
+        index = np.minimum((phase / pitch * bins).astype(np.int64), bins - 1)
+        weights = _winsorized(strength[: head.size])
+        profile = (np.bincount(index, weights=weights, minlength=bins)
+                   / np.maximum(1, np.bincount(index, minlength=bins)))
+        phase1 = (np.argmax(profile) + 0.5) * pitch / bins - pitch / 2
+    else:
+        phase1 = np.sign(slope) * impact_angle
+    first = math.ceil((theta[0] - phase1) / pitch)
+    seat = phase1 + pitch * np.arange(first, math.floor((theta[-1] - phase1) / pitch) + 1)
+    seat = seat[seat + pitch / 2 <= theta[-1]]
+    expected1 = np.interp(seat, theta, t)
+    expected2 = np.interp(seat + pitch / 2, theta, t)
+    impact2 = _strongest_near(strength, block_time, expected2, period / 8)
+    return impact2 - (expected2 - expected1), impact2, abs(slope)
+
+
+def detect_events(
+    table: pd.DataFrame,
+    *,
+    z: int,
+    omega: float,
+    natural_frequency: float | None = None,
+    impact_angle: float | None = None,
+    use_angle: bool = True,
+    period_tolerance: float = PERIOD_TOLERANCE,
+    file: str | Path | None = None,
+) -> EngagementEvents:
+    """Locate the two strikes of every seating in an engagement log.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        Canonical table (:mod:`pipeline.ingest.table`): ``time`` [s], ``force``
+        (branch tension) [N], optional ``angle`` [rad].
+    z : int
+        Number of teeth of the wheel [-] (run sheet).
+    omega : float
+        Wheel speed stated in the run sheet [1/s].
+    natural_frequency : float, optional
+        Expected natural angular frequency of the branch [rad/s], e.g.
+        ``sqrt(E0 / (L m_branch))``: narrows the search for the ringing.
+    impact_angle : float, optional
+        Wheel angle at impact 1, modulo ``2 pi / z`` [rad]; by default found
+        from the force.
+    use_angle : bool, optional
+        Use the angle channel when the table has one (default True).
+    period_tolerance : float, optional
+        Relative disagreement between measured and stated seating period that
+        gives a :class:`SpeedMismatchWarning` (default :data:`PERIOD_TOLERANCE`).
+    file : str or Path, optional
+        The log's file, named in errors and warnings.
+
+    Returns
+    -------
+    EngagementEvents
+        Onsets of impact 1 and 2 per seating, measured period and speed, and
+        the messages given.
+
+    Raises
+    ------
+    SignalError
+        When the log is not uniformly sampled, holds no force data or fewer than
+        :data:`MIN_PERIODS` seating periods, or no seating is found.
+
+    Warns
+    -----
+    SpeedMismatchWarning
+        When the measured seating period differs from ``2 pi / (z omega)`` by
+        more than `period_tolerance`.
+
+    References
+    ----------
+    Paper 000: seating period from eq. (9), tau = pi / (z omega), v_u2 > v_u1
+    from eqs. (1)-(2).
+    """
+    start, rate = sampling(table, file)
+    if "force" not in table:
+        raise SignalError("the engagement log has no force channel", file=file, column="force",
+                          hint="map the branch-tension column in the run sheet "
+                               "(columns = {force = ...})")
+    force = table["force"].to_numpy(dtype=float)
+    stated = float(seating_period(z, omega))
+    duration = force.size / rate
+    short_hint = (f"record at least {MIN_PERIODS} seating periods ({MIN_PERIODS * stated:.3g} s "
+                  f"at omega = {omega:.4g} 1/s, z = {z}), better a hundred; or check the speed "
+                  "and the teeth in the run sheet")
+    if duration < MIN_PERIODS * stated:
+        raise SignalError(
+            f"the log lasts {duration:.4g} s, fewer than {MIN_PERIODS} seating periods of "
+            f"{stated:.4g} s", file=file, hint=short_hint)
+    missing = ~np.isfinite(force)
+    if missing.all():
+        raise SignalError("the force channel holds no numbers", file=file, column="force",
+                          hint="check the column mapping and the file")
+    if missing.any():
+        force = np.where(missing, np.median(force[~missing]), force)
+
+    omega_n = natural_frequency_estimate(force, rate, stated, natural_frequency, file)
+    block = max(1, int(rate * 2 * np.pi / omega_n / _SAMPLES_PER_RINGING))
+    dt = block / rate
+    strength = onset_strength(force, block, rate, omega_n)
+    block_time = start + dt * np.arange(strength.size)
+    # The strike starts within the peak block or the one before it (strength sums two).
+    lead = 0.5 * dt
+
+    has_angle = use_angle and "angle" in table and bool(np.isfinite(table["angle"]).any())
+    if has_angle:
+        # The angle once per ringing period: enough to unwrap and interpolate.
+        stride = block * _SAMPLES_PER_RINGING
+        angle = table["angle"].to_numpy(dtype=float)[::stride]
+        impact1, impact2, measured_omega = _seatings_from_angle(
+            strength, angle, start + np.arange(angle.size) * stride / rate, block_time, z,
+            impact_angle, file)
+        period = 2 * np.pi / (z * measured_omega)
+        impact1, impact2 = impact1 + lead, impact2 + lead
+    else:
+        impact2, period = _seatings_from_force(strength, block_time, dt, stated)
+        impact2 = impact2 + lead
+        impact1 = impact2 - period / 2
+        measured_omega = 2 * np.pi / (z * period)
+
+    messages = []
+    mismatch = period / stated - 1
+    if abs(mismatch) > period_tolerance:
+        where = f"{file}: " if file is not None else ""
+        message = (
+            f"{where}the seating period measured from the {'angle' if has_angle else 'force'} "
+            f"channel, {period:.5g} s (omega = {measured_omega:.4g} 1/s), differs from the run "
+            f"sheet's 2 pi / (z omega) = {stated:.5g} s (z = {z}, omega = {omega:.4g} 1/s) by "
+            f"{mismatch:+.1%}; the measured period is used (hint: check omega_per_s / rpm and "
+            "the wheel's teeth in campaign.toml)")
+        messages.append(message)
+        warnings.warn(message, SpeedMismatchWarning, stacklevel=2)
+    if duration < MIN_PERIODS * period:
+        raise SignalError(
+            f"the log lasts {duration:.4g} s, fewer than {MIN_PERIODS} measured seating periods "
+            f"of {period:.4g} s", file=file, hint=short_hint)
+    if impact1.size == 0:
+        raise SignalError("no engagement event found in the log", file=file, column="force",
+                          hint="check that the wheel turned and the force channel is the "
+                               "branch tension")
+    return EngagementEvents(
+        impact1_time=impact1, impact2_time=impact2, seating_period=float(period),
+        stated_period=stated, omega=float(measured_omega), stated_omega=float(omega), z=int(z),
+        sample_rate=rate, start_time=start, natural_frequency=omega_n,
+        source="angle" if has_angle else "force", onset_resolution=dt,
+        messages=tuple(messages))

@@ -1,0 +1,745 @@
+"""Impact tensions N_u1, N_u2 per engagement event, from a branch-tension log (fit stage).
+
+Each seating of a link strikes the wheel twice, ``tau = P / 2`` apart (Paper
+000); each strike rings the branch as ``A exp(-zeta omega_n s) sin(omega_d s)``,
+``omega_d = omega_n sqrt(1 - zeta^2)``, on top of the slowly varying tension,
+and the ringing of earlier strikes goes on underneath. The amplitude ``A`` of a
+strike's response is the measured counterpart of the model's N_u (Paper 000,
+eq. (16)): this module extracts ``A`` for both strikes of every event found by
+:func:`pipeline.condition.engagement.detect_events`. It lives in ``fit/``
+because it is a model fit (the stage that also fits the campaign's impact
+model, :mod:`pipeline.fit.impact_model`).
+
+The model of one event
+----------------------
+In the window from ``0.4 tau`` before impact 1 to ``0.15 tau`` before the next
+seating, with ``r`` the time from the first sample at or after impact 1::
+
+    y(r) = b0 + b1 r / W + b2 cos(2 pi r / P) + b3 sin(2 pi r / P)    slow tension
+         + Im[(c0) exp(lambda r)]                                     earlier strikes
+         + A1 h(r - r1) + A2 h(r - r2)                                this event's strikes
+
+``lambda = -zeta omega_n + i omega_d``. The superposed free ringing of all
+earlier strikes, however many, is one damped sinusoid of unknown phase (two
+linear coefficients), so the model is *linear* once omega_n, zeta and the onsets
+are known, and it is fitted to all events at once by linear least squares:
+
+1. Per run, omega_n and zeta are fitted with lmfit (Levenberg-Marquardt) on up to
+   :data:`RINGING_EVENTS` events, the linear coefficients projected out (variable
+   projection), after a grid search over omega_n around the detector's estimate;
+   events the first fit does not describe (glitches) are dropped before the second.
+2. Each strike is first fitted as a damped sinusoid of free phase starting at its
+   detected onset: the phase of the fitted complex amplitude gives the onset to a
+   fraction of a sample (``h`` starts at phase 0). The events whose masks then
+   move are refitted until every mask starts at the first sample after its onset.
+3. The final fit has the strikes' phases fixed by their onsets, so ``A1`` and
+   ``A2`` keep their sign, with standard errors from the residual. All windows
+   share a basis (the event-specific part is a mask start and a complex scale), so
+   the normal equations of every event come from one matrix product over the
+   windows, suffix sums of the basis and a few samples around the masks: no loop
+   over events, and the refits of step 2 touch no window again.
+
+Per run, the medians of ``A1`` and ``A2`` over the valid events, their
+interquartile range, median absolute deviation, standard error of the median and
+count are reported. The standard error adds in quadrature the scatter of the
+events (``sqrt(pi/2) 1.4826 MAD / sqrt(n)``) and the uncertainty of the fitted
+omega_n and zeta, which every event of the run shares (propagated by central
+differences over the ringing-fit events). Events whose window leaves the log
+(``truncated``), holds missing samples (``gap``), touches a clipping level
+(``clipped``, given or detected from flat tops), holds a neighbour's strike
+(``overlap``, irregular spacing) or whose fit fails (``fit_failed``: non-finite
+or non-positive amplitude, an onset moved by more than :data:`MAX_ONSET_SHIFT`
+ringing periods, or a residual above :data:`RESIDUAL_OUTLIER` times the run's
+median and above 0.1 % of the typical strike) are counted by reason and never
+enter the medians.
+
+The comparison with theory uses the amplitude ``A``. The first-peak height of a
+strike's own response (ringing of the other strikes removed),
+``A sqrt(1 - zeta^2) exp(-zeta acos(zeta) / sqrt(1 - zeta^2))`` (0.954 A at
+zeta = 0.03), is reported beside it as ``peak1`` / ``peak2``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+import lmfit
+import numpy as np
+import pandas as pd
+from numpy.lib.stride_tricks import sliding_window_view
+
+from pipeline.condition.engagement import ASSUMED_DAMPING, EngagementEvents
+from pipeline.errors import FitError
+
+#: Window start before impact 1, as a fraction of tau.
+WINDOW_PRE = 0.4
+#: Gap left between the window's end and the next seating, as a fraction of tau.
+WINDOW_GUARD = 0.15
+#: Events used to fit omega_n and zeta per run.
+RINGING_EVENTS = 64
+#: Largest accepted move of an onset from its detected time [ringing periods].
+MAX_ONSET_SHIFT = 0.25
+#: Residual RMS above this multiple of the run's median marks a failed fit.
+RESIDUAL_OUTLIER = 4.0
+#: Events per block of the vectorised fit (bounds the memory to ~blocks x window).
+_CHUNK = 2048
+#: Reasons an event is excluded from a run's statistics, in order of precedence.
+EXCLUSIONS = ("truncated", "gap", "clipped", "overlap", "fit_failed")
+#: Consistency constant of the MAD (normal distribution) and efficiency factor of
+#: the median (standard error of the median = sqrt(pi / 2) sigma / sqrt(n)).
+_MAD_TO_SIGMA = 1.4826
+_MEDIAN_SE = math.sqrt(math.pi / 2)
+
+
+@dataclass(frozen=True)
+class Ringing:
+    """Natural frequency and damping of the branch, fitted per run.
+
+    Attributes
+    ----------
+    omega_n : float
+        Undamped natural angular frequency [rad/s].
+    zeta : float
+        Damping ratio [-].
+    omega_n_stderr, zeta_stderr : float
+        Standard errors from lmfit (NaN when given rather than fitted).
+    correlation : float
+        Correlation of the omega_n and zeta estimates (0 when given).
+    n_events : int
+        Events the fit used (0 when given).
+    """
+
+    omega_n: float
+    zeta: float
+    omega_n_stderr: float = math.nan
+    zeta_stderr: float = math.nan
+    correlation: float = 0.0
+    n_events: int = 0
+
+    @property
+    def omega_d(self) -> float:
+        """Damped natural angular frequency omega_n sqrt(1 - zeta^2) [rad/s]."""
+        return self.omega_n * math.sqrt(1.0 - self.zeta**2)
+
+    @property
+    def pole(self) -> complex:
+        """lambda = -zeta omega_n + i omega_d [1/s]."""
+        return complex(-self.zeta * self.omega_n, self.omega_d)
+
+    @property
+    def peak_factor(self) -> float:
+        """First-peak height of ``exp(-zeta omega_n s) sin(omega_d s)`` [-]."""
+        root = math.sqrt(1.0 - self.zeta**2)
+        return root * math.exp(-self.zeta * math.acos(self.zeta) / root)
+
+    @property
+    def fitted(self) -> bool:
+        """Whether the values carry standard errors (fitted, not given)."""
+        return math.isfinite(self.omega_n_stderr) and math.isfinite(self.zeta_stderr)
+
+
+@dataclass(frozen=True)
+class ImpactStatistics:
+    """Robust statistics of one quantity over a run's valid events.
+
+    Attributes
+    ----------
+    median : float
+        Median [unit of the quantity].
+    iqr : float
+        Interquartile range.
+    mad : float
+        Median absolute deviation (unscaled).
+    stderr : float
+        Standard error of the median: ``stderr_events`` and ``stderr_ringing``
+        added in quadrature.
+    count : int
+        Valid events.
+    stderr_events : float
+        From the scatter of the events, ``sqrt(pi/2) 1.4826 MAD / sqrt(count)``.
+    stderr_ringing : float
+        From the uncertainty of the run's fitted omega_n and zeta, which every
+        event shares (0 where the quantity does not depend on them).
+    """
+
+    median: float
+    iqr: float
+    mad: float
+    stderr: float
+    count: int
+    stderr_events: float
+    stderr_ringing: float = 0.0
+
+    @classmethod
+    def of(cls, values: np.ndarray, stderr_ringing: float = 0.0) -> ImpactStatistics:
+        """Statistics of `values` (NaN when empty), with the ringing part of the error."""
+        values = np.asarray(values, dtype=float)
+        if values.size == 0:
+            return cls(math.nan, math.nan, math.nan, math.nan, 0, math.nan, stderr_ringing)
+        median = float(np.median(values))
+        q1, q3 = np.percentile(values, [25, 75])
+        mad = float(np.median(np.abs(values - median)))
+        events = _MEDIAN_SE * _MAD_TO_SIGMA * mad / math.sqrt(values.size)
+        return cls(median, float(q3 - q1), mad, math.hypot(events, stderr_ringing),
+                   int(values.size), events, stderr_ringing)
+
+
+@dataclass(frozen=True)
+class ImpactResult:
+    """Impact extraction of one engagement run.
+
+    Attributes
+    ----------
+    events : pandas.DataFrame
+        One row per detected seating: ``event_time`` and ``impact2_time``
+        (onsets of impact 1 and 2) [s], ``tau`` [s], ``baseline`` (slow branch
+        tension at impact 1, ringing excluded) [N], ``N_u1``, ``N_u2`` (strike
+        amplitudes A) and their ``_stderr`` [N], ``peak1``, ``peak2`` (first-peak
+        heights of the strikes' own responses) [N], ``residual_rms`` [N] and
+        ``status`` (``"ok"`` or one of :data:`EXCLUSIONS`).
+    ringing : Ringing
+        Natural frequency and damping used.
+    statistics : dict of str to ImpactStatistics
+        Per quantity (``N_u1``, ``N_u2``, ``peak1``, ``peak2``, ``baseline``,
+        ``tau``) over the ``"ok"`` events.
+    excluded : dict of str to int
+        Events excluded per reason of :data:`EXCLUSIONS`.
+    clip_levels : tuple of (float or None)
+        Lower and upper clipping level used [N].
+    comparison : str
+        The quantity compared with the model's N_u: ``"amplitude"`` (A).
+    messages : tuple of str
+        Warnings given on the way (the detection's, e.g. a speed mismatch).
+    """
+
+    events: pd.DataFrame
+    ringing: Ringing
+    statistics: dict[str, ImpactStatistics]
+    excluded: dict[str, int]
+    clip_levels: tuple[float | None, float | None] = (None, None)
+    comparison: str = "amplitude"
+    messages: tuple[str, ...] = field(default_factory=tuple)
+
+    @property
+    def N_u1(self) -> ImpactStatistics:
+        """Statistics of the impact-1 amplitudes [N]."""
+        return self.statistics["N_u1"]
+
+    @property
+    def N_u2(self) -> ImpactStatistics:
+        """Statistics of the impact-2 amplitudes [N]."""
+        return self.statistics["N_u2"]
+
+    def summary(self) -> dict[str, float | int | str]:
+        """Flat run-level summary: ``<quantity>_<statistic>``, exclusions, ringing."""
+        flat: dict[str, float | int | str] = {}
+        for name, stats in self.statistics.items():
+            for key in ("median", "iqr", "mad", "stderr", "count", "stderr_events",
+                        "stderr_ringing"):
+                flat[f"{name}_{key}"] = getattr(stats, key)
+        flat.update({f"excluded_{reason}": count for reason, count in self.excluded.items()})
+        flat.update(omega_n=self.ringing.omega_n, zeta=self.ringing.zeta,
+                    omega_n_stderr=self.ringing.omega_n_stderr,
+                    zeta_stderr=self.ringing.zeta_stderr, comparison=self.comparison,
+                    events_total=int(len(self.events)))
+        return flat
+
+
+@dataclass(frozen=True)
+class _Geometry:
+    """Sampling of a log and the shared window of its events."""
+
+    start: float  # time of sample 0 [s]
+    rate: float  # [Hz]
+    period: float  # seating period [s]
+    pre: int  # window samples before the first sample after impact 1
+    width: int  # window samples
+
+    @classmethod
+    def of(cls, events: EngagementEvents) -> _Geometry:
+        """The window of `events`' seatings (:data:`WINDOW_PRE`, :data:`WINDOW_GUARD`)."""
+        tau, rate = events.tau, events.sample_rate
+        pre = max(2, int(round(WINDOW_PRE * tau * rate)))
+        width = pre + int(round((2 - WINDOW_GUARD) * tau * rate))
+        return cls(events.start_time, rate, events.seating_period, pre, width)
+
+    def first_sample(self, time: np.ndarray) -> np.ndarray:
+        """Index of the first sample at or after `time`."""
+        return np.ceil((time - self.start) * self.rate - 1e-9).astype(np.int64)
+
+    def basis(self, pole: complex) -> np.ndarray:
+        """Columns of the window model before the masks (width x 10).
+
+        ``1, r/W, cos, sin`` (slow tension, W the window length), ``Re, Im
+        exp(lambda r)`` (earlier strikes), and the same pair twice more (impact 1
+        and impact 2, each masked per event from its onset on); ``r`` is the time
+        from sample :attr:`pre` of the window.
+        """
+        r = (np.arange(self.width) - self.pre) / self.rate
+        ring = np.exp(pole * r)
+        phase = 2 * np.pi * r / self.period
+        return np.column_stack([
+            np.ones_like(r), r * self.rate / self.width, np.cos(phase), np.sin(phase),
+            ring.real, ring.imag, ring.real, ring.imag, ring.real, ring.imag,
+        ])
+
+
+class _Windows:
+    """The events' windows, gathered once, and their products with the model's basis.
+
+    Window ``e`` holds samples ``start[e] ... start[e] + width - 1``. The strike
+    columns of event ``e`` are masked from window sample ``j1[e]`` (impact 1) and
+    ``j2[e]`` (impact 2) on, with ``j1`` in `range1` and ``j2`` in `range2`
+    (half-open). The Gram matrix of any masks is assembled from suffix sums of
+    the shared basis; ``X^T y`` from one matrix product with the masks at the
+    ends of their ranges plus the samples inside the ranges, which are kept
+    (``slabs``): refitting with other masks touches no window again.
+    """
+
+    def __init__(self, y: np.ndarray, start: np.ndarray, range1: tuple[int, int],
+                 range2: tuple[int, int], geo: _Geometry, pole: complex) -> None:
+        basis = geo.basis(pole)
+        self.basis, self.range1, self.range2 = basis, range1, range2
+        self.total = basis.T @ basis
+        # suffix[j] = sum over j' >= j of B_j' B_j'^T, the strike columns (6-9) only
+        outer = (basis[:, :, None] * basis[:, None, 6:10]).reshape(geo.width, 40)
+        suffix = np.empty((geo.width + 1, 40))
+        suffix[0] = self.total[:, 6:10].ravel()
+        np.subtract(suffix[0], np.cumsum(outer, axis=0), out=suffix[1:])
+        self.suffix = suffix.reshape(geo.width + 1, 10, 4)
+        shared = basis.copy()
+        shared[: range1[1], 6:8] = 0.0
+        shared[: range2[1], 8:10] = 0.0
+        size = start.size
+        self.xty = np.empty((size, 10))
+        self.yty = np.empty(size)
+        self.slab1 = np.empty((size, range1[1] - range1[0]))
+        self.slab2 = np.empty((size, range2[1] - range2[0]))
+        windows = sliding_window_view(y, geo.width)
+        buffer = np.empty((min(_CHUNK, size), geo.width))
+        for lo in range(0, size, _CHUNK):
+            part = slice(lo, lo + _CHUNK)
+            block = buffer[: len(start[part])]
+            block[...] = windows[start[part]]
+            self.xty[part] = block @ shared
+            self.yty[part] = np.einsum("ij,ij->i", block, block)
+            self.slab1[part] = block[:, range1[0]: range1[1]]
+            self.slab2[part] = block[:, range2[0]: range2[1]]
+
+    def equations(self, j1: np.ndarray, j2: np.ndarray, rows: np.ndarray
+                  ) -> tuple[np.ndarray, np.ndarray]:
+        """Gram matrices (n, 10, 10) and X^T y (n, 10) of windows `rows` with masks j1, j2."""
+        s1, s2 = self.suffix[j1, :, :2], self.suffix[j2, :, 2:]
+        gram = np.repeat(self.total[None], rows.size, axis=0)
+        gram[:, :, 6:8] = s1
+        gram[:, 6:8, :] = np.swapaxes(s1, 1, 2)
+        gram[:, :, 8:10] = s2  # j2 > j1: impact 2's block lies inside impact 1's
+        gram[:, 8:10, :] = np.swapaxes(s2, 1, 2)
+        xty = self.xty[rows].copy()
+        for columns, slab, (lo, hi), mask in ((slice(6, 8), self.slab1, self.range1, j1),
+                                              (slice(8, 10), self.slab2, self.range2, j2)):
+            if hi > lo:
+                inside = np.arange(lo, hi)[None, :] >= mask[:, None]
+                xty[:, columns] += (slab[rows] * inside) @ self.basis[lo:hi, columns]
+        return gram, xty
+
+
+def _onsets(coef: np.ndarray, ref: np.ndarray, prior1: np.ndarray, prior2: np.ndarray,
+            ringing: Ringing) -> tuple[np.ndarray, np.ndarray]:
+    """Onsets [s] from the phases of the free-phase strike amplitudes, nearest the priors.
+
+    A strike ``A Im(exp(lambda (t - T)))`` fitted as ``g Re + d Im`` of
+    ``exp(lambda (t - ref))`` has ``d + i g = A exp(lambda (ref - T))``, so
+    ``T = ref - (arg(d + i g) + 2 pi m) / omega_d``.
+    """
+    omega_d = ringing.omega_d
+    onsets = []
+    for column, prior in ((6, prior1), (8, prior2)):
+        phase = np.angle(coef[:, column + 1] + 1j * coef[:, column])
+        turns = np.round(((ref - prior) * omega_d - phase) / (2 * np.pi))
+        onsets.append(ref - (phase + 2 * np.pi * turns) / omega_d)
+    return onsets[0], onsets[1]
+
+
+def _solve(gram: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """Batched solution of normal equations, `rhs` (n, p) or (n, p, m); NaN where singular."""
+    vector = rhs.ndim == 2
+    rhs = rhs[..., None] if vector else rhs
+    try:
+        out = np.linalg.solve(gram, rhs)
+    except np.linalg.LinAlgError:
+        out = np.full(rhs.shape, np.nan)
+        for i in range(rhs.shape[0]):
+            try:
+                out[i] = np.linalg.solve(gram[i], rhs[i])
+            except np.linalg.LinAlgError:
+                continue
+    return out[..., 0] if vector else out
+
+
+@dataclass
+class _Fits:
+    """Free-phase normal equations of a set of events, with masks matching their onsets."""
+
+    onset1: np.ndarray  # refined onsets [s]
+    onset2: np.ndarray
+    moved: np.ndarray  # an onset left the reach of its window (kept at its input)
+    gram: np.ndarray  # (n, 10, 10)
+    xty: np.ndarray  # (n, 10)
+    yty: np.ndarray  # (n,)
+    ref: np.ndarray  # time of sample `pre` of each window [s]
+
+
+def _settle(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, margin: float,
+            geo: _Geometry, ringing: Ringing, passes: int = 4) -> _Fits:
+    """Refine the onsets until every mask starts at the first sample after its onset.
+
+    The windows are placed once, ``geo.pre`` samples before the first sample
+    after ``onset1 + margin`` (`margin` [s] puts the first masks after the true
+    onsets); each pass takes the onsets from the phases of the free-phase fit
+    (:func:`_onsets`) and refits the events whose masks moved. An onset that
+    moves more than :data:`MAX_ONSET_SHIFT` ringing periods keeps its input and
+    is marked `moved`.
+    """
+    size = onset1.size
+    start = geo.first_sample(onset1 + margin) - geo.pre
+    reach = int(math.ceil(MAX_ONSET_SHIFT * 2 * np.pi / ringing.omega_d * geo.rate)) + 1
+    j2 = geo.first_sample(onset2 + margin) - start
+    range1 = (max(1, geo.pre - reach), geo.pre + reach + 1)
+    range2 = (max(range1[0] + 1, int(j2.min()) - reach), min(geo.width, int(j2.max()) + reach + 1))
+    windows = _Windows(y, start, range1, range2, geo, ringing.pole)
+    ref = geo.start + (start + geo.pre) / geo.rate
+    fits = _Fits(onset1.copy(), onset2.copy(), np.zeros(size, dtype=bool),
+                 np.empty((size, 10, 10)), np.empty((size, 10)), windows.yty, ref)
+    j1 = np.full(size, geo.pre)
+    todo = np.arange(size)
+    for _ in range(passes):
+        gram, xty = windows.equations(j1[todo], j2[todo], todo)
+        t1, t2 = _onsets(_solve(gram, xty), ref[todo], fits.onset1[todo], fits.onset2[todo],
+                         ringing)
+        new1, new2 = geo.first_sample(t1) - start[todo], geo.first_sample(t2) - start[todo]
+        moved = ((new1 < range1[0]) | (new1 >= range1[1]) | (new2 < range2[0])
+                 | (new2 >= range2[1]) | ~np.isfinite(t1) | ~np.isfinite(t2))
+        fits.onset1[todo] = np.where(moved, onset1[todo], t1)
+        fits.onset2[todo] = np.where(moved, onset2[todo], t2)
+        fits.moved[todo] = moved
+        fits.gram[todo], fits.xty[todo] = gram, xty
+        new1, new2 = np.where(moved, j1[todo], new1), np.where(moved, j2[todo], new2)
+        changed = (new1 != j1[todo]) | (new2 != j2[todo])
+        j1[todo], j2[todo] = new1, new2
+        todo = todo[changed]
+        if todo.size == 0:
+            break
+    return fits
+
+
+def _amplitudes(fits: _Fits, ringing: Ringing, width: int
+                ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Fit with the strikes' phases fixed by their onsets: coefficients, variances, RSS.
+
+    The free-phase columns of each strike (6-7 and 8-9) become one column
+    ``Im(exp(lambda (t - T)))``: an 8-parameter model whose normal equations are
+    ``L^T G L`` and ``L^T X^T y`` with ``L`` the 10 x 8 lifting of each event.
+    Returns the coefficients (n, 8; 6 and 7 are A1 and A2), the variances of
+    A1, A2 (n, 2) and the residual sums of squares (n,).
+    """
+    size = fits.onset1.size
+    lifting = np.zeros((size, 10, 8))
+    lifting[:, np.arange(6), np.arange(6)] = 1.0
+    for column, onset, target in ((6, fits.onset1, 6), (8, fits.onset2, 7)):
+        scale = np.exp(ringing.pole * (fits.ref - onset))
+        lifting[:, column, target] = scale.imag
+        lifting[:, column + 1, target] = scale.real
+    transposed = np.swapaxes(lifting, 1, 2)
+    gram = transposed @ fits.gram @ lifting
+    rhs = (transposed @ fits.xty[:, :, None])[:, :, 0]
+    # One factorisation gives the coefficients and the diagonal of the inverse.
+    system = np.zeros((size, 8, 3))
+    system[:, :, 0] = rhs
+    system[:, 6, 1] = system[:, 7, 2] = 1.0
+    solution = _solve(gram, system)
+    coef = solution[:, :, 0]
+    rss = np.maximum(fits.yty - np.sum(coef * rhs, axis=1), 0.0)
+    variance = np.stack([solution[:, 6, 1], solution[:, 7, 2]], axis=1)
+    return coef, variance * (rss / (width - 8))[:, None], rss
+
+
+def _free_phase_residuals(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray,
+                          geo: _Geometry, ringing: Ringing) -> np.ndarray:
+    """Residuals of the free-phase model on a few events (for the ringing fit)."""
+    start = geo.first_sample(onset1) - geo.pre
+    j1 = np.full(onset1.size, geo.pre)
+    j2 = geo.first_sample(onset2) - start
+    windows = _Windows(y, start, (geo.pre, geo.pre), (int(j2.min()), int(j2.max())), geo,
+                       ringing.pole)
+    coef = _solve(*windows.equations(j1, j2, np.arange(onset1.size)))
+    sample = np.arange(geo.width)
+    basis = windows.basis.copy()
+    basis[: geo.pre, 6:8] = 0.0
+    fitted = (coef[:, :8] @ basis[:, :8].T
+              + (coef[:, 8:10] @ basis[:, 8:10].T) * (sample[None, :] >= j2[:, None]))
+    return (sliding_window_view(y, geo.width)[start] - fitted).ravel()
+
+
+def _fit_ringing(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: _Geometry,
+                omega_n: float, margin: float) -> tuple[Ringing, np.ndarray, np.ndarray]:
+    """Fit omega_n and zeta of the branch on a few events.
+
+    A grid search over omega_n (0.88-1.14 times `omega_n`, zeta = 0.03), then
+    twice: onsets refined with the current values, lmfit (Levenberg-Marquardt)
+    of omega_n and zeta on the free-phase model, the linear coefficients
+    projected out. Before the second fit, events whose onsets left their reach
+    or whose residual exceeds :data:`RESIDUAL_OUTLIER` times the median (a
+    glitch, a missed seating) are dropped. Returns the fit and the refined
+    onsets [s] of the events kept.
+    """
+    def residual_of(omega: float, zeta: float) -> np.ndarray:
+        return _free_phase_residuals(y, onset1, onset2, geo, Ringing(omega, zeta))
+
+    grid = omega_n * np.exp(np.linspace(math.log(0.88), math.log(1.14), 9))
+    best = float(min(grid, key=lambda w: float(np.sum(residual_of(w, ASSUMED_DAMPING) ** 2))))
+    ringing = Ringing(best, ASSUMED_DAMPING)
+    params = lmfit.Parameters()
+    params.add("omega_n", value=best, min=0.8 * best, max=1.25 * best)
+    params.add("zeta", value=ASSUMED_DAMPING, min=1e-4, max=0.5)
+    for second in (False, True):
+        fits = _settle(y, onset1, onset2, margin, geo, ringing)
+        onset1, onset2, margin = fits.onset1[~fits.moved], fits.onset2[~fits.moved], 0.0
+        if second:
+            residual = residual_of(ringing.omega_n, ringing.zeta).reshape(onset1.size, -1)
+            rms = np.sqrt(np.mean(residual**2, axis=1))
+            kept = rms <= RESIDUAL_OUTLIER * np.median(rms)
+            onset1, onset2 = onset1[kept], onset2[kept]
+        if onset1.size < 2:
+            raise FitError("too few events to fit the branch's ringing",
+                           hint="check the speed and teeth in the run sheet and the force "
+                                "channel, or record a longer log")
+        try:
+            result = lmfit.minimize(lambda p: residual_of(p["omega_n"].value, p["zeta"].value),
+                                    params, method="leastsq")
+        except ValueError as error:  # lmfit refuses NaN residuals (a singular window)
+            raise FitError(f"the fit of the branch's ringing failed: {error}",
+                           hint="check that the force channel is the branch tension") from None
+        if not result.success:
+            raise FitError(f"the fit of the branch's ringing failed: {result.message}",
+                           hint="check that the force channel is the branch tension")
+        params = result.params
+        omega_fit, zeta_fit = params["omega_n"], params["zeta"]
+        correlation = (omega_fit.correl or {}).get("zeta", 0.0)
+        ringing = Ringing(omega_fit.value, zeta_fit.value, omega_fit.stderr or math.nan,
+                          zeta_fit.stderr or math.nan, correlation, int(onset1.size))
+    return ringing, onset1, onset2
+
+
+def _ringing_errors(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: _Geometry,
+                    ringing: Ringing) -> dict[str, float]:
+    """Relative standard errors of the median N_u1, N_u2, peak1, peak2 due to omega_n, zeta.
+
+    Central differences of the medians over the events given (the same data, so
+    the noise cancels) by one standard error of each parameter, combined with
+    their correlation: ``sqrt(J C J^T)`` relative to the medians.
+    """
+    if not ringing.fitted:
+        return dict.fromkeys(("N_u1", "N_u2", "peak1", "peak2"), 0.0)
+
+    def medians(trial: Ringing) -> np.ndarray:
+        fits = _settle(y, onset1, onset2, 0.0, geo, trial, passes=2)
+        coef = _amplitudes(fits, trial, geo.width)[0]
+        amplitude = np.median(coef[:, 6:8], axis=0)
+        return np.concatenate([amplitude, amplitude * trial.peak_factor])
+
+    base = medians(ringing)
+    steps = {"omega_n": ringing.omega_n_stderr, "zeta": ringing.zeta_stderr}
+    slopes = []
+    for name, step in steps.items():
+        up = medians(replace(ringing, **{name: getattr(ringing, name) + step}))
+        down = medians(replace(ringing, **{name: getattr(ringing, name) - step}))
+        slopes.append((up - down) / 2 / base)  # relative change per standard error
+    omega_part, zeta_part = slopes
+    variance = (omega_part**2 + zeta_part**2
+                + 2 * ringing.correlation * omega_part * zeta_part)
+    relative = np.sqrt(np.maximum(variance, 0.0))
+    return dict(zip(("N_u1", "N_u2", "peak1", "peak2"), relative.tolist(), strict=True))
+
+
+def clipping_levels(force: np.ndarray, run: int = 3) -> tuple[float | None, float | None]:
+    """Lower and upper clipping levels of a channel, detected from flat extremes.
+
+    Parameters
+    ----------
+    force : numpy.ndarray
+        The channel [N].
+    run : int, optional
+        Consecutive samples at the channel's extreme value that mark clipping.
+
+    Returns
+    -------
+    low, high : float or None
+        The minimum / maximum when it is held for `run` samples in a row (a
+        saturated amplifier or converter), else None.
+    """
+    levels: list[float | None] = []
+    for extreme in (np.fmin.reduce(force), np.fmax.reduce(force)):  # NaN ignored
+        at = np.flatnonzero(force == extreme)
+        consecutive = np.diff(at) == 1
+        flat = at.size >= run and bool(
+            np.any(np.convolve(consecutive, np.ones(run - 1), mode="valid") >= run - 1))
+        levels.append(float(extreme) if flat else None)
+    return levels[0], levels[1]
+
+
+def _hits(flags: np.ndarray, start: np.ndarray, width: int) -> np.ndarray:
+    """Whether each window ``[start, start + width)`` holds a sample with `flags` set."""
+    where = np.flatnonzero(flags)
+    return np.searchsorted(where, start + width) > np.searchsorted(where, start)
+
+
+def extract_impacts(
+    table: pd.DataFrame,
+    events: EngagementEvents,
+    *,
+    ringing: Ringing | None = None,
+    clip_level: float | None = None,
+    file: str | Path | None = None,
+) -> ImpactResult:
+    """Impact amplitudes N_u1, N_u2 of every event of an engagement log, and run statistics.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        Canonical table with ``force`` (branch tension) [N], sampled as in `events`.
+    events : EngagementEvents
+        Seatings found by :func:`pipeline.condition.engagement.detect_events`.
+    ringing : Ringing, optional
+        Natural frequency and damping of the branch; by default fitted on up to
+        :data:`RINGING_EVENTS` events of the log.
+    clip_level : float, optional
+        Upper saturation level of the force channel [N]; by default detected
+        from flat tops (and bottoms) with :func:`clipping_levels`.
+    file : str or Path, optional
+        The log's file, named in errors.
+
+    Returns
+    -------
+    ImpactResult
+        Per-event amplitudes and run statistics (see the module notes).
+
+    Raises
+    ------
+    FitError
+        When no event can be fitted.
+
+    References
+    ----------
+    Paper 000, eq. (16): N_u is the peak tension of an undamped branch; its
+    measured counterpart is the strike amplitude A (``models.md``, section 000).
+    """
+    force = table["force"].to_numpy(dtype=float)
+    geo = _Geometry.of(events)
+    missing = ~np.isfinite(force)
+    sample = force[:: max(1, force.size // 100_000)]
+    sample = sample[np.isfinite(sample)]
+    offset = float(np.median(sample)) if sample.size else 0.0
+    y = np.where(missing, 0.0, force - offset) if missing.any() else force - offset
+
+    prior1, prior2 = events.impact1_time, events.impact2_time
+    margin = 0.5 * events.onset_resolution  # masks after the onsets in the first pass
+    # Room for the onsets to move in the fits (`reach`, the largest accepted shift with
+    # the natural frequency possibly 30 % below its first estimate) plus the mask margin.
+    reach = MAX_ONSET_SHIFT * 2 * np.pi / (0.7 * events.natural_frequency)
+    slack = int(math.ceil((reach + events.onset_resolution) * geo.rate)) + 1
+    if WINDOW_PRE * events.tau < reach + 2 / geo.rate:
+        raise FitError(
+            f"the strikes come too fast for their ringing to be told apart: tau = "
+            f"{events.tau:.3g} s against a ringing period of "
+            f"{2 * np.pi / events.natural_frequency:.3g} s", file=file,
+            hint="the extraction needs tau = pi / (z omega) above about one ringing period of "
+                 "the branch; check the speed and teeth in the run sheet")
+    first = geo.first_sample(prior1)
+    status = np.full(prior1.size, "ok", dtype=object)
+    status[(first - geo.pre - slack < 0) | (first - geo.pre + geo.width + slack > force.size)] = (
+        "truncated")
+    start = first - geo.pre - slack
+    span = geo.width + 2 * slack
+    fittable = status == "ok"
+    status[fittable & _hits(missing, start, span)] = "gap"
+    low, high = clipping_levels(force)
+    if clip_level is not None:
+        high = clip_level if high is None else min(high, clip_level)
+    if low is not None or high is not None:
+        clipped = np.zeros(force.size, dtype=bool)
+        if high is not None:
+            clipped |= force >= high
+        if low is not None:
+            clipped |= force <= low
+        status[(status == "ok") & _hits(clipped, start, span)] = "clipped"
+    usable = np.flatnonzero(status == "ok")
+    if usable.size == 0:
+        counts = {reason: int(np.sum(status == reason)) for reason in EXCLUSIONS}
+        raise FitError(f"no engagement event can be fitted ({counts})", file=file,
+                       hint="record a longer log or lower the gain so the force does not clip")
+
+    pick = usable[np.unique(np.linspace(0, usable.size - 1, min(RINGING_EVENTS, usable.size))
+                            .round().astype(int))]
+    if ringing is None:
+        ringing, sub1, sub2 = _fit_ringing(y, prior1[pick], prior2[pick], geo,
+                                          events.natural_frequency, margin)
+    else:
+        sub1, sub2 = prior1[pick], prior2[pick]
+    relative_errors = _ringing_errors(y, sub1, sub2, geo, ringing)
+
+    fits = _settle(y, prior1[usable], prior2[usable], margin, geo, ringing)
+    t1, t2 = fits.onset1, fits.onset2
+    coef, variance, rss = _amplitudes(fits, ringing, geo.width)
+    r1 = t1 - fits.ref
+    phase = 2 * np.pi * r1 / geo.period
+    baseline = (offset + coef[:, 0] + coef[:, 1] * r1 * geo.rate / geo.width
+                + coef[:, 2] * np.cos(phase) + coef[:, 3] * np.sin(phase))
+    rms = np.sqrt(rss / geo.width)
+
+    finite = np.all(np.isfinite(coef), axis=1) & np.all(np.isfinite(variance), axis=1)
+    failed = fits.moved | ~finite | ~(coef[:, 6] > 0) | ~(coef[:, 7] > 0)
+    if np.any(~failed):
+        # (a residual below 0.1 % of the typical strike is a good fit whatever its ratio)
+        typical = np.median(rms[~failed]), np.median(coef[~failed, 7])
+        failed |= rms > max(RESIDUAL_OUTLIER * typical[0], 1e-3 * typical[1])
+
+    time1, time2 = prior1.copy(), prior2.copy()
+    time1[usable], time2[usable] = t1, t2
+    # Neighbours' strikes inside a window: irregular spacing or a missed seating.
+    window_start = geo.start + (geo.first_sample(time1) - geo.pre) / geo.rate
+    window_end = window_start + geo.width / geo.rate
+    overlap = np.zeros(prior1.size, dtype=bool)
+    overlap[1:] |= time2[:-1] > window_start[1:]
+    overlap[:-1] |= time1[1:] < window_end[:-1]
+    status[usable[failed]] = "fit_failed"
+    status[(status == "ok") & overlap] = "overlap"
+
+    def column(values: np.ndarray) -> np.ndarray:
+        full = np.full(prior1.size, np.nan)
+        full[usable] = values
+        return full
+
+    frame = pd.DataFrame({
+        "event_time": time1, "impact2_time": time2, "tau": time2 - time1,
+        "baseline": column(baseline), "N_u1": column(coef[:, 6]), "N_u2": column(coef[:, 7]),
+        "N_u1_stderr": column(np.sqrt(variance[:, 0])),
+        "N_u2_stderr": column(np.sqrt(variance[:, 1])),
+        "peak1": column(coef[:, 6] * ringing.peak_factor),
+        "peak2": column(coef[:, 7] * ringing.peak_factor),
+        "residual_rms": column(rms), "status": status.astype(str),
+    })
+    ok = frame["status"] == "ok"
+    if not ok.any():
+        raise FitError("every engagement event failed its fit", file=file,
+                       hint="check the speed and teeth in the run sheet and the force channel")
+    statistics = {}
+    for name in ("N_u1", "N_u2", "peak1", "peak2", "baseline", "tau"):
+        values = frame.loc[ok, name].to_numpy()
+        systematic = relative_errors.get(name, 0.0) * abs(float(np.median(values)))
+        statistics[name] = ImpactStatistics.of(values, systematic)
+    excluded = {reason: int(np.sum(status == reason)) for reason in EXCLUSIONS}
+    return ImpactResult(frame, ringing, statistics, excluded, (low, high),
+                        messages=events.messages)
