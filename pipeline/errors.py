@@ -89,6 +89,10 @@ class ValueParseError(IngestError):
     """A cell cannot be read as a number."""
 
 
+class EncodingError(IngestError):
+    """The file is not text in an encoding chainbench can recognise (binary, bad BOM...)."""
+
+
 class SignalError(ChainbenchError):
     """The data were read but cannot be conditioned (no cycles, clipping, gaps...)."""
 

@@ -32,6 +32,9 @@ from dataclasses import asdict, dataclass, field
 #: Roles a column can take; gauges are numbered ``gauge_1``, ``gauge_2``, ...
 ROLES = ("time", "force", "gauge", "angle", "cycle_count")
 
+#: A time step longer than this many median steps is reported as a gap.
+GAP_FACTOR = 10.0
+
 
 @dataclass(frozen=True)
 class ColumnInfo:
@@ -56,6 +59,11 @@ class TableMetadata:
     columns: list[ColumnInfo] = field(default_factory=list)
     preamble: dict[str, str] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    sheet: str | None = None  #: the spreadsheet sheet read (``.xlsx``)
+    header_line: int | None = None  #: 1-based line (or sheet row) of the names row
+    first_data_line: int | None = None  #: 1-based line (or sheet row) of the first data row
+    time_monotonic: bool | None = None  #: False if time ever steps back; None without time
+    time_gaps: int = 0  #: steps longer than :data:`GAP_FACTOR` x the median time step
 
     def as_dict(self) -> dict:
         """A JSON-ready copy (as printed by ``chainbench inspect --json``)."""

@@ -1,0 +1,132 @@
+"""``chainbench inspect FILE``: what the readers detect in a raw file, processing nothing.
+
+Prints the layout, encoding, delimiter and decimal mark, the number of rows,
+each column with the role and unit found, the number of load cycles and the
+warnings. Role and unit problems are shown as warnings (a file without units
+shows ``unit: null``); a file that cannot be read at all gives its typed error
+on one line and a non-zero exit status (``--debug`` shows the traceback).
+
+Cycles are counted by :func:`pipeline.condition.segmentation.count_cycles` on
+the force column; the machine's own counter, when the file has one, is shown
+beside it as ``machine_cycles``.
+"""
+
+from __future__ import annotations
+
+import json
+from enum import StrEnum
+from pathlib import Path
+from typing import Annotated
+
+import numpy as np
+import pandas as pd
+import typer
+from rich.table import Table
+
+from pipeline.cli._output import _plain, console
+from pipeline.condition.segmentation import count_cycles
+from pipeline.errors import ChainbenchError
+from pipeline.ingest import read_table
+from pipeline.ingest.table import TableMetadata
+
+#: Counter units that count half cycles (two segments per load cycle).
+SEGMENT_UNITS = ("segment", "segments")
+
+
+class Kind(StrEnum):
+    """Run kinds ``inspect`` can check a file for."""
+
+    tensile = "tensile"
+    engagement = "engagement"
+
+
+def machine_cycles(table: pd.DataFrame, metadata: TableMetadata) -> int | None:
+    """Load cycles the machine's counter covers (segments counted two per cycle), or None."""
+    if "cycle_count" not in table:
+        return None
+    counts = table["cycle_count"].to_numpy()
+    counts = counts[np.isfinite(counts)]
+    unit = next((column.unit for column in metadata.columns if column.role == "cycle_count"), None)
+    per_cycle = 2 if (unit or "").strip().lower() in SEGMENT_UNITS else 1
+    return int(np.unique(np.floor(counts / per_cycle)).size) if counts.size else None
+
+
+def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
+    """What ``inspect`` prints, as a JSON-ready mapping."""
+    cycles = count_cycles(table["force"].to_numpy()) if "force" in table else None
+    counted = machine_cycles(table, metadata)
+    warnings = list(metadata.warnings)
+    if cycles is not None and counted is not None and cycles != counted:
+        warnings.append(
+            f"the force signal shows {cycles} load cycle(s), the machine's counter {counted}"
+        )
+    return {
+        "file": metadata.file,
+        "layout": metadata.layout,
+        "encoding": metadata.encoding,
+        "delimiter": metadata.delimiter,
+        "decimal": metadata.decimal,
+        "sheet": metadata.sheet,
+        "rows": metadata.rows,
+        "columns": [
+            {"name": column.name, "role": column.role, "unit": column.unit,
+             "si_unit": column.si_unit}
+            for column in metadata.columns
+        ],
+        "cycles": cycles if cycles is not None else counted,
+        "machine_cycles": counted,
+        "preamble": metadata.preamble,
+        "warnings": warnings,
+    }
+
+
+def _show(report: dict) -> None:
+    shown = {"\t": "tab", " ": "space"}
+    console.print(f"[bold]{report['file']}[/bold]")
+    for key in ("layout", "encoding", "delimiter", "decimal", "sheet", "rows", "cycles",
+                "machine_cycles"):
+        value = report[key]
+        if value is not None:
+            console.print(f"  {key:<15}{shown.get(value, value) if key == 'delimiter' else value}",
+                          markup=False, highlight=False)
+    table = Table(title="columns")
+    for heading in ("name", "role", "unit", "si_unit"):
+        table.add_column(heading)
+    for column in report["columns"]:
+        table.add_row(*(str(column[key]) if column[key] is not None else "-"
+                        for key in ("name", "role", "unit", "si_unit")))
+    console.print(table)
+    for warning in report["warnings"]:
+        console.print(f"[yellow]warning:[/yellow] {warning}", highlight=False)
+
+
+def command(
+    file: Annotated[Path, typer.Argument(help="Raw file: CSV, machine export, .xlsx or .tdms.")],
+    kind: Annotated[Kind, typer.Option("--kind", help="Run kind the file is checked for.")] = (
+        Kind.tensile
+    ),
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON (for programs).")] = False,
+    debug: Annotated[bool, typer.Option("--debug", help="Show the traceback of an error.")] = False,
+) -> None:
+    """Show what the readers detect in FILE (layout, columns, units, cycles), processing nothing."""
+    try:
+        table, metadata = read_table(file, kind=kind.value, strict=False)
+        report = summary(table, metadata)
+    except ChainbenchError as error:
+        if debug:
+            raise
+        typer.echo("error: " + " ".join(str(error).split()), err=True)
+        raise typer.Exit(1) from error
+    except Exception as error:
+        if debug:
+            raise
+        typer.echo(
+            f"error: {file}: unexpected failure ({type(error).__name__}: "
+            + " ".join(str(error).split()) + "); rerun with --debug and report it",
+            err=True,
+        )
+        raise typer.Exit(2) from error
+    if as_json:
+        print(json.dumps(_plain(report), indent=2, ensure_ascii=False))
+    else:
+        _show(report)

@@ -1,0 +1,308 @@
+"""From a reader's raw columns to the canonical table (roles, SI units, checks).
+
+Every layout reader ends here, so the file defects that do not depend on the
+layout are handled once:
+
+* sentinel values of unused channels (:data:`SENTINELS`) become NaN;
+* all-empty channels are dropped, with a note in the warnings;
+* two candidates for one role (two force columns, a duplicated ``Load``) are an
+  error unless the run sheet says which to take;
+* a missing, unknown or wrong-dimension unit is an error naming the column and
+  the run-sheet key to set (``units = {force = "kN"}``);
+* NaN stretches are kept as NaN and reported with their count and longest run;
+* time stepping backwards and time gaps are *reported* (warnings and
+  :attr:`TableMetadata.time_monotonic` / ``time_gaps``), never repaired: the
+  conditioning stage decides what to do with them.
+
+With ``strict=False`` (``chainbench inspect``) role and unit problems become
+warnings and the table holds only the columns that could be converted.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+import pandas as pd
+
+from pipeline.errors import ChainbenchError, ColumnError, UnitError
+from pipeline.ingest.raw import RawTable
+from pipeline.ingest.roles import SHEET_KEY, display_name, role_of_key
+from pipeline.ingest.table import GAP_FACTOR, ROLES, ColumnInfo, TableMetadata
+from pipeline.ingest.unitparse import ROLE_SI_UNIT, si_factor, spellings, unit_role
+
+#: Values some machines write for a channel that records nothing.
+SENTINELS = {
+    -1_000_000.0: "MTS / Instron unused-channel marker",
+    -999_999.0: "unused-channel marker",
+    9.9e37: "NI / Agilent overflow marker",
+}
+
+# Values beyond these may be sentinels: the arrays are scanned for them only then.
+_LOWEST_NEGATIVE = max(value for value in SENTINELS if value < 0)
+_LOWEST_POSITIVE = min(value for value in SENTINELS if value > 0)
+
+#: Roles a run of each kind must have.
+REQUIRED = {"tensile": ("force", "gauge"), "engagement": ("time", "force")}
+
+_SINGLE = ("time", "force", "angle", "cycle_count")
+
+
+class _Problems:
+    """Raises in strict mode; collects warnings otherwise."""
+
+    def __init__(self, strict: bool, warnings: list[str]) -> None:
+        self.strict = strict
+        self.warnings = warnings
+
+    def report(self, error: ChainbenchError) -> None:
+        if self.strict:
+            raise error
+        where = f"column {error.column!r}: " if error.column else ""
+        self.warnings.append(where + error.message + (f" ({error.hint})" if error.hint else ""))
+
+
+def _run_sheet_units(units: Mapping | None, file: str) -> dict[str, list[str]]:
+    resolved = {}
+    for key, value in (units or {}).items():
+        role = role_of_key(key, file=file, what="units")
+        resolved[role] = [value] if isinstance(value, str) else [str(item) for item in value]
+    return resolved
+
+
+def build(
+    raw: RawTable, *, kind: str, units: Mapping | None = None, strict: bool = True
+) -> tuple[pd.DataFrame, TableMetadata]:
+    """Settle roles and units of `raw` and return the canonical table.
+
+    Parameters
+    ----------
+    raw : RawTable
+        What the layout reader found.
+    kind : {"tensile", "engagement"}
+        The run kind: tensile runs need force and a gauge, engagement runs
+        time and force.
+    units : mapping, optional
+        Run-sheet ``units``: role -> unit (a list for several gauges). It
+        overrides the file's unit, with a warning when they differ.
+    strict : bool
+        Raise on role and unit problems (True) or turn them into warnings.
+
+    Returns
+    -------
+    table : pandas.DataFrame
+        Canonical columns in SI units (see :mod:`pipeline.ingest.table`).
+    metadata : TableMetadata
+        The reader's metadata with ``columns``, ``rows`` and the checks filled in.
+
+    Raises
+    ------
+    ColumnError, UnitError
+        In strict mode, as listed in the module docstring.
+    """
+    meta = raw.metadata
+    problems = _Problems(strict, meta.warnings)
+    sheet_units = _run_sheet_units(units, meta.file)
+    empty = _clean(raw, meta.warnings)
+    assigned = _settle_roles(raw, empty, problems)
+    rejected: dict[str, UnitError] = {}
+    factors, found_units = _settle_units(raw, assigned, sheet_units, problems, rejected)
+    for role in REQUIRED[kind]:
+        if assigned.get(role):
+            continue
+        problems.report(rejected.get(role) or ColumnError(
+            f"no {role} column found (a {kind} run needs " + " and ".join(REQUIRED[kind]) + ")",
+            file=meta.file, row=raw.units_line,
+            hint=f"name it in the run sheet, columns = {{{SHEET_KEY[role]} = \"...\"}}; "
+            "the file has: " + ", ".join(display_name(raw.names, i)
+                                          for i in range(len(raw.names))),
+        ))
+    data: dict[str, np.ndarray] = {}
+    canonical: dict[int, str] = {}
+    for role in ROLES:
+        for number, index in enumerate(assigned.get(role, []), start=1):
+            name = f"gauge_{number}" if role == "gauge" else role
+            canonical[index] = name
+            if index in factors:
+                array = raw.arrays[index]
+                if factors[index] != 1.0:
+                    np.multiply(array, factors[index], out=array)
+                data[name] = array
+    table = pd.DataFrame(data, index=pd.RangeIndex(raw.rows), copy=False)
+    _report_missing(table, raw, meta.warnings)
+    _check_time(table, raw, meta)
+    meta.rows = raw.rows
+    meta.columns = [
+        ColumnInfo(
+            name=display_name(raw.names, index),
+            role=canonical.get(index),
+            unit=found_units.get(index, raw.units[index]),
+            si_unit=_si_unit(canonical[index]) if canonical.get(index) in data else None,
+        )
+        for index in range(len(raw.names))
+    ]
+    return table, meta
+
+
+def _si_unit(name: str) -> str:
+    return ROLE_SI_UNIT["gauge" if name.startswith("gauge_") else name]
+
+
+def _clean(raw: RawTable, warnings: list[str]) -> set[int]:
+    """Sentinels to NaN; returns the empty columns (noted in `warnings`)."""
+    empty = set(raw.empty)
+    for index, array in raw.arrays.items():
+        low = np.fmin.reduce(array) if array.size else np.nan
+        if low <= _LOWEST_NEGATIVE or (array.size and np.fmax.reduce(array) >= _LOWEST_POSITIVE):
+            mask = np.isin(array, list(SENTINELS))
+            count = int(np.count_nonzero(mask))
+            if count:
+                array[mask] = np.nan
+                warnings.append(
+                    f"column {display_name(raw.names, index)!r}: {count} sentinel values "
+                    f"({', '.join(f'{v:g}' for v in SENTINELS)}) of an unused channel set to NaN"
+                )
+                low = np.fmin.reduce(array)
+        if np.isnan(low):
+            empty.add(index)
+    if empty:
+        warnings.append(
+            f"{len(empty)} empty column(s) dropped: "
+            + ", ".join(display_name(raw.names, index) for index in sorted(empty))
+        )
+    return empty
+
+
+def _settle_roles(raw: RawTable, empty: set[int], problems: _Problems) -> dict[str, list[int]]:
+    file = raw.metadata.file
+    assigned: dict[str, list[int]] = {}
+    for role, indexes in raw.candidates.roles.items():
+        live = [index for index in indexes if index not in empty]
+        if role in raw.candidates.explicit and len(live) < len(indexes):
+            dead = next(index for index in indexes if index in empty)
+            problems.report(ColumnError(
+                f"the column given for {role} in the run sheet is empty",
+                file=file, column=display_name(raw.names, dead),
+                hint="check the run sheet's columns, or the export",
+            ))
+        if role in _SINGLE and len(live) > 1:
+            shown = [display_name(raw.names, index) for index in live]
+            same = len(set(shown)) == 1
+            problems.report(ColumnError(
+                f"column {shown[0]!r} is duplicated" if same else
+                f"{len(live)} columns could be the {role}: " + ", ".join(map(repr, shown)),
+                file=file, row=raw.units_line, column=shown[0],
+                hint=f"say which in the run sheet, columns = {{{SHEET_KEY[role]} = \"...\"}}"
+                + (", after renaming the duplicates in the export" if same else ""),
+            ))
+            live = live[:1]
+        if live:
+            assigned[role] = live
+    return assigned
+
+
+def _settle_units(
+    raw: RawTable,
+    assigned: dict[str, list[int]],
+    sheet_units: dict[str, list[str]],
+    problems: _Problems,
+    rejected: dict[str, UnitError],
+) -> tuple[dict[int, float], dict[int, str | None]]:
+    """SI factors of the columns that can be converted, and each column's unit text.
+
+    A column matched by name whose unit is of another dimension (``Dehnung
+    [%]``) is not used, with a warning; its error is kept in `rejected` in
+    case its role ends up missing.
+    """
+    file = raw.metadata.file
+    factors: dict[int, float] = {}
+    found: dict[int, str | None] = {}
+    for role in list(assigned):
+        for position, index in enumerate(list(assigned[role])):
+            name = display_name(raw.names, index)
+            text, source = raw.units[index], "the file"
+            given = sheet_units.get(role)
+            if given:
+                sheet_text = given[min(position, len(given) - 1)]
+                if text and sheet_text != text:
+                    raw.metadata.warnings.append(
+                        f"column {name!r}: unit {sheet_text!r} from the run sheet replaces "
+                        f"{text!r} from the file"
+                    )
+                text, source = sheet_text, "the run sheet"
+            found[index] = text
+            if role == "cycle_count":
+                factors[index] = 1.0
+                continue
+            if text is None:
+                problems.report(UnitError(
+                    f"no unit for the {role} column",
+                    file=file, row=raw.units_line, column=name,
+                    hint=f'the file gives none: set it in the run sheet, units = '
+                    f'{{{SHEET_KEY[role]} = "..."}}',
+                ))
+                continue
+            explicit = role in raw.candidates.explicit or source == "the run sheet"
+            if spellings(text) and unit_role(text) != role and not explicit:
+                raw.metadata.warnings.append(
+                    f"column {name!r}: unit {text!r} is not a unit of {role}: column not used"
+                )
+                rejected[role] = UnitError(
+                    f"unit {text!r} is not a unit of {role} ({ROLE_SI_UNIT[role]})",
+                    file=file, row=raw.units_line, column=name,
+                    hint="correct the unit, or name the columns in the run sheet (columns = ...)",
+                )
+                assigned[role].remove(index)
+                found.pop(index)
+                continue
+            try:
+                factors[index] = si_factor(
+                    text, role, file=file, row=raw.units_line, column=name, source=source
+                )
+            except UnitError as error:
+                problems.report(error)
+        if not assigned[role]:
+            del assigned[role]
+    return factors, found
+
+
+def _report_missing(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> None:
+    for name in table.columns:
+        missing = np.isnan(table[name].to_numpy())
+        count = int(np.count_nonzero(missing))
+        if not count:
+            continue
+        edges = np.diff(np.concatenate(([0], missing.view(np.int8), [0])))
+        starts, ends = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)
+        longest = int(np.argmax(ends - starts))
+        warnings.append(
+            f"{name}: {count} missing values kept as NaN; longest run "
+            f"{ends[longest] - starts[longest]} rows from {raw.where(int(starts[longest]))}"
+        )
+
+
+def _check_time(table: pd.DataFrame, raw: RawTable, meta: TableMetadata) -> None:
+    if "time" not in table or len(table) < 2:
+        return
+    steps = np.diff(table["time"].to_numpy())
+    backwards = steps < 0
+    count = int(np.count_nonzero(backwards))
+    meta.time_monotonic = count == 0
+    if count:
+        first = int(np.argmax(backwards)) + 1
+        meta.warnings.append(
+            f"time: steps back {count} times, first at {raw.where(first)}"
+        )
+    sample = steps[:: max(1, steps.size // 100_000)]
+    sample = sample[sample > 0]
+    if not sample.size:
+        return
+    median = float(np.median(sample))
+    gaps = steps > GAP_FACTOR * median
+    meta.time_gaps = int(np.count_nonzero(gaps))
+    if meta.time_gaps:
+        first = int(np.argmax(gaps)) + 1
+        meta.warnings.append(
+            f"time: {meta.time_gaps} gaps longer than {GAP_FACTOR:g} x the median step "
+            f"({median:.3g} s), first before {raw.where(first)}"
+        )

@@ -1,0 +1,155 @@
+"""Shared steps of the delimited-text readers: header, body parse, raw table."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import pyarrow as pa
+
+from pipeline.errors import EmptyFileError, LayoutError
+from pipeline.ingest.names import split_name_unit
+from pipeline.ingest.raw import RawTable
+from pipeline.ingest.roles import Candidates, find_candidates
+from pipeline.ingest.sniff import Head, TableSpec
+from pipeline.ingest.table import TableMetadata
+from pipeline.ingest.textbody import (
+    Region,
+    float_arrays,
+    join_comma_pairs,
+    parse_body,
+    split_table,
+    trim_truncated_tail,
+)
+
+
+def header_columns(spec: TableSpec) -> tuple[list[str], list[str | None]]:
+    """Column names and units from the names row (``name [unit]``) and the units row."""
+    names, units = [], []
+    for cell, row_unit in zip(spec.names, spec.units, strict=True):
+        name, unit = split_name_unit(cell)
+        names.append(name)
+        units.append(row_unit or unit)
+    return names, units
+
+
+def metadata(head: Head, spec: TableSpec, layout: str, preamble: dict[str, str]) -> TableMetadata:
+    """The metadata every text layout reports."""
+    return TableMetadata(
+        file=str(head.path),
+        layout=layout,
+        encoding=head.encoding,
+        delimiter=spec.delimiter,
+        decimal=spec.decimal,
+        preamble=preamble,
+        header_line=spec.header_index + 1,
+        first_data_line=spec.data_index + 1,
+    )
+
+
+def units_line(spec: TableSpec) -> int:
+    """The line to point at for a unit problem: the units row, else the names row."""
+    return (spec.units_index if spec.units_index is not None else spec.header_index) + 1
+
+
+def candidates(head: Head, spec: TableSpec, columns: Mapping | None) -> Candidates:
+    """Role candidates of a text table (see :func:`~pipeline.ingest.roles.find_candidates`)."""
+    names, units = header_columns(spec)
+    return find_candidates(names, units, columns, file=head.path,
+                           header_line=spec.header_index + 1)
+
+
+def raw_table(
+    parsed: tuple[dict[int, pa.ChunkedArray], int, set[int]],
+    region: Region,
+    spec: TableSpec,
+    found: Candidates,
+    meta: TableMetadata,
+) -> RawTable:
+    """Wrap a parsed body as a :class:`RawTable` (float candidates, empty others).
+
+    Parameters
+    ----------
+    parsed : tuple
+        :func:`~pipeline.ingest.textbody.split_table` of the parsed body; the
+        caller holds no other reference to the table, so that its columns are
+        freed as they are converted.
+    region : Region
+        Where the rows are in the file.
+    spec : TableSpec
+        The sniffed table.
+    found : Candidates
+        Role candidates.
+    meta : TableMetadata
+        The reader's metadata.
+
+    Raises
+    ------
+    EmptyFileError
+        If the body holds no row.
+    """
+    names, units = header_columns(spec)
+    chunks, rows, empty = parsed
+    if rows == 0:
+        raise EmptyFileError(
+            "the file has a header but no data rows",
+            file=region.path, row=region.first_line,
+            hint="the machine wrote no measurements: export the test again",
+        )
+    return RawTable(
+        names=names,
+        units=units,
+        arrays=float_arrays(chunks),
+        rows=rows,
+        candidates=found,
+        metadata=meta,
+        line_of=region.line_of,
+        empty=empty,
+        units_line=units_line(spec),
+    )
+
+
+def read_contiguous(
+    head: Head, spec: TableSpec, columns: Mapping | None, meta: TableMetadata
+) -> RawTable:
+    """Read a table whose data rows run from the first data row to the end of the file.
+
+    A truncated last line is dropped with a warning (see
+    :func:`~pipeline.ingest.textbody.trim_truncated_tail`).
+    """
+    found = candidates(head, spec, columns)
+    whole = Region(head.path, head.offsets[spec.data_index], head.size, spec.data_index + 1,
+                   head.codec)
+    region, truncated = trim_truncated_tail(whole.read, whole, spec.width, spec.delimiter)
+    names = header_columns(spec)[0]
+    try:
+        table = parse_body(
+            region.open(),
+            region,
+            names=names,
+            width=spec.width,
+            delimiter=spec.delimiter,
+            decimal=spec.decimal,
+            float_columns=found.indexes(),
+            as_text=spec.pairs,
+        )
+    except LayoutError as error:
+        if not spec.pairs:
+            raise
+        raise LayoutError(
+            error.message, file=error.file, row=error.row, column=error.column,
+            hint="the decimal comma is also the delimiter, so a value written without "
+            "decimals (or left empty) shifts the fields: export with ';' or tab as "
+            "delimiter, or with quoted numbers",
+        ) from error
+    if spec.pairs:
+        table = join_comma_pairs(table, region, names)
+        meta.warnings.append(
+            "the decimal comma is also the delimiter: values were rejoined in pairs"
+        )
+    parsed = split_table(table, found.indexes(), len(names))
+    del table
+    if truncated:
+        meta.warnings.append(
+            f"line {whole.line_of(parsed[1])} is truncated (a half-written last row): dropped"
+        )
+    return raw_table(parsed, region, spec, found, meta)

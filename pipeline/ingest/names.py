@@ -1,0 +1,125 @@
+"""Column names of test-machine exports, per language, and the roles they map to.
+
+A header cell such as ``"Standardkraft [kN]"`` is split into a name
+(``"Standardkraft"``) and a unit (``"kN"``, see :func:`split_name_unit`); the
+name is matched against :data:`COLUMN_NAMES` (see :func:`match_role`).
+Matching is case-insensitive and ignores diacritics, so ``"SILA"`` matches
+``"siła"``.
+"""
+
+from __future__ import annotations
+
+import re
+import unicodedata
+
+from pipeline.ingest.unitparse import spellings
+
+#: Names (whole words or word sequences) that give a column its role, per language.
+COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
+    "en": {
+        "time": ("time", "elapsed time", "test time"),
+        "force": ("force", "load", "tension"),
+        "gauge": (
+            "extension", "displacement", "gauge", "elongation", "extensometer", "ext",
+            "deflection", "position", "stroke", "crosshead", "lvdt", "dial",
+        ),
+        "angle": ("angle", "encoder", "rotation"),
+        "cycle_count": ("cycle", "cycles", "cycle count", "count"),
+    },
+    "de": {
+        "time": ("zeit", "prüfzeit", "testzeit", "versuchszeit"),
+        "force": ("kraft", "standardkraft", "prüfkraft", "last"),
+        "gauge": ("weg", "standardweg", "traversenweg", "dehnung", "verlängerung", "feindehnung"),
+        "angle": ("winkel", "drehwinkel"),
+        "cycle_count": ("zyklus", "zyklen", "zykluszahl", "lastwechsel"),
+    },
+    "pl": {
+        "time": ("czas",),
+        "force": ("siła", "obciążenie", "naciąg"),
+        "gauge": ("wydłużenie", "przemieszczenie", "czujnik", "ugięcie"),
+        "angle": ("kąt", "obrót"),
+        "cycle_count": ("cykl", "cykle", "liczba cykli"),
+    },
+    "es": {
+        "time": ("tiempo",),
+        "force": ("fuerza", "carga"),
+        "gauge": ("desplazamiento", "extensión", "alargamiento"),
+        "angle": ("ángulo",),
+        "cycle_count": ("ciclo", "ciclos", "recuento"),
+    },
+}
+
+_BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^()]*)\))\s*$")
+_TOKEN = re.compile(r"[^\W\d_]+|\d+")
+
+
+def fold(text: str) -> str:
+    """`text` in lower case without diacritics (``"Siła"`` -> ``"sila"``)."""
+    decomposed = unicodedata.normalize("NFKD", text.casefold().replace("ł", "l"))
+    return "".join(char for char in decomposed if not unicodedata.combining(char))
+
+
+def tokens(text: str) -> tuple[str, ...]:
+    """The words and numbers of `text`, folded (``"Machine_N_cycles"`` -> machine, n, cycles)."""
+    return tuple(_TOKEN.findall(fold(text)))
+
+
+_KEYWORDS: tuple[tuple[tuple[str, ...], str], ...] = tuple(
+    (tokens(word), role)
+    for language in COLUMN_NAMES.values()
+    for role, words in language.items()
+    for word in words
+)
+
+
+def split_name_unit(header: str) -> tuple[str, str | None]:
+    """Split a header cell into the column name and the unit in brackets.
+
+    Parameters
+    ----------
+    header : str
+        A names-row cell, e.g. ``"force [kN]"``, ``"Load (N)"``, ``"Kraft / kN"``
+        (ISO 80000 quantity / unit) or ``"Time"``.
+
+    Returns
+    -------
+    name : str
+        The name without the unit, stripped.
+    unit : str or None
+        The text inside a trailing ``[...]`` or ``(...)``, or after `` / `` (or
+        a single ``/``) when pint reads it as a unit; None when there is none.
+    """
+    text = header.strip().lstrip("\ufeff").strip()
+    match = _BRACKETED.match(text)
+    if match is not None and match["name"]:
+        unit = match["sq"] if match["sq"] is not None else match["par"]
+        return match["name"].strip(), unit.strip()
+    separator = " / " if " / " in text else "/" if text.count("/") == 1 else None
+    if separator:
+        name, _, unit = text.rpartition(separator)
+        if name.strip() and spellings(unit):
+            return name.strip(), unit.strip()
+    return text, None
+
+
+def match_role(name: str) -> str | None:
+    """The role a column name suggests, or None.
+
+    When several names match (``"Cycle time"``), the one ending last in the
+    name wins (the head noun in English and German compounds), then the longest.
+
+    Examples
+    --------
+    >>> match_role("Total Cycle Count"), match_role("Machine_Load"), match_role("Siła")
+    ('cycle_count', 'force', 'force')
+    """
+    words = tokens(name)
+    best: tuple[int, int, str] | None = None
+    for keyword, role in _KEYWORDS:
+        size = len(keyword)
+        for start in range(len(words) - size + 1):
+            if words[start : start + size] == keyword:
+                rank = (start + size, size, role)
+                if best is None or rank[:2] > best[:2]:
+                    best = rank
+    return best[2] if best else None

@@ -1,0 +1,461 @@
+"""Sniffing a text export from a small head sample: encoding, dialect, table.
+
+Only the first :data:`HEAD_BYTES` of a file are decoded in Python; the body is
+left to :mod:`pipeline.ingest.textbody` (pyarrow). The sniffers find:
+
+* the encoding: a BOM (UTF-8, UTF-16), UTF-16 without BOM (NUL bytes), UTF-8,
+  else cp1250 or latin-1, whichever decodes more non-ASCII bytes as letters
+  (Polish exports are cp1250, Spanish and German ones latin-1);
+* the dialect: the delimiter (tab, ``;``, ``,``, ``|``) and decimal mark that
+  make the most rows all-numeric with one field count;
+* the table: the first data row, the names row above it, an optional units
+  row between them and the free-text preamble above the names row.
+"""
+
+from __future__ import annotations
+
+import codecs
+import csv
+import re
+import unicodedata
+from collections import Counter
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pyarrow.csv as pacsv
+
+from pipeline.errors import EmptyFileError, EncodingError, LayoutError
+from pipeline.ingest.unitparse import looks_like_unit
+
+#: Bytes read to sniff a file.
+HEAD_BYTES = 1 << 16
+#: Delimiters tried, in order of preference when several fit.
+DELIMITERS = ("\t", ";", ",", "|")
+#: Cell texts read as missing values (pyarrow's defaults).
+NULL_VALUES = frozenset(pacsv.ConvertOptions().null_values)
+#: Single-byte encodings tried when a file is not UTF-8, in order of preference on a tie.
+SINGLE_BYTE_ENCODINGS = ("latin-1", "cp1250")
+
+_LINE = re.compile(r"([^\r\n]*)(\r\n|\r|\n|$)")
+_NON_ASCII = re.compile(r"[^\x00-\x7f]")
+#: Row kinds that belong to the table body (see :func:`_kind`).
+_DATA_KINDS = ("numeric", "partial", "missing")
+_SPECIALS = r"|[+-]?inf(?:inity)?"  # NaN is a missing value (NULL_VALUES), not a number
+_NUMBER = {
+    mark: re.compile(
+        rf" *(?:[+-]?(?:\d+(?:{re.escape(mark)}\d*)?|{re.escape(mark)}\d+)(?:[eE][+-]?\d+)?"
+        rf"{_SPECIALS}) *",
+        re.IGNORECASE,
+    )
+    for mark in ".,"
+}
+
+
+@dataclass(frozen=True)
+class Head:
+    """The decoded head of a text file.
+
+    Attributes
+    ----------
+    path : Path
+        The file.
+    size : int
+        Its size in bytes.
+    encoding : str
+        The encoding as reported (``"utf-8-sig"`` when a BOM was found).
+    codec : str
+        The Python codec of the text after the BOM.
+    lines : list of str
+        The complete lines of the sample, without line ends.
+    offsets : list of int
+        Byte offset of each line's start, plus the offset after the last line.
+    complete : bool
+        True if the sample is the whole file.
+    """
+
+    path: Path
+    size: int
+    encoding: str
+    codec: str
+    lines: list[str]
+    offsets: list[int]
+    complete: bool
+
+    @property
+    def ascii_compatible(self) -> bool:
+        """True if digits and delimiters are single ASCII bytes (all but UTF-16)."""
+        return not self.codec.startswith("utf-16")
+
+
+@dataclass(frozen=True)
+class TableSpec:
+    """Where the table sits in a text file's head, and its dialect.
+
+    Attributes
+    ----------
+    delimiter, decimal : str
+        The field delimiter and the decimal mark.
+    names : list of str
+        The names-row cells (units included), one per data field.
+    header_index : int
+        Index in :attr:`Head.lines` of the names row.
+    units_index : int or None
+        Index of the separate units row, if any.
+    data_index : int
+        Index of the first data row.
+    width : int
+        Fields per data row (twice the columns when ``pairs``).
+    units : list of str or None
+        The units-row cells, one per column.
+    preamble : list of str
+        The non-blank lines above the names row.
+    pairs : bool
+        True if a decimal comma is also the delimiter (``0,5,1,25``): each
+        value is two fields.
+    """
+
+    delimiter: str
+    decimal: str
+    names: list[str]
+    header_index: int
+    units_index: int | None
+    data_index: int
+    width: int
+    units: list[str | None] = field(default_factory=list)
+    preamble: list[str] = field(default_factory=list)
+    pairs: bool = False
+
+
+def split_fields(line: str, delimiter: str) -> list[str]:
+    """The fields of one line (``"`` quotes honoured)."""
+    if '"' not in line:
+        return line.split(delimiter)
+    try:
+        return next(csv.reader([line], delimiter=delimiter), [])
+    except csv.Error:
+        return [line]
+
+
+def is_number(text: str, decimal: str) -> bool:
+    """True if `text` is a number written with `decimal` as decimal mark."""
+    return _NUMBER[decimal].fullmatch(text) is not None
+
+
+def is_missing(text: str) -> bool:
+    """True if `text` denotes a missing value (empty, ``NaN``, ``N/A``...)."""
+    return text.strip() in NULL_VALUES
+
+
+def _line_of(raw: bytes, position: int) -> int:
+    return raw.count(b"\n", 0, position) + 1
+
+
+def detect_encoding(raw: bytes, complete: bool, file: Path) -> tuple[str, str, int]:
+    """Find the encoding of a file from its head.
+
+    Parameters
+    ----------
+    raw : bytes
+        The head sample.
+    complete : bool
+        True if `raw` is the whole file (otherwise its last line may be cut).
+    file : Path
+        The file, for messages.
+
+    Returns
+    -------
+    encoding : str
+        The name reported to the user.
+    codec : str
+        The codec decoding the text after the BOM.
+    bom : int
+        Length of the BOM in bytes.
+
+    Raises
+    ------
+    EncodingError
+        If the file is binary, or its BOM contradicts its content.
+    """
+    for bom, name, codec, shown in (
+        (codecs.BOM_UTF8, "utf-8-sig", "utf-8", "UTF-8"),
+        (codecs.BOM_UTF16_LE, "utf-16", "utf-16-le", "UTF-16"),
+        (codecs.BOM_UTF16_BE, "utf-16", "utf-16-be", "UTF-16"),
+    ):
+        if raw.startswith(bom):
+            _check_decodes(raw, len(bom), codec, complete, file, bom_name=shown)
+            return name, codec, len(bom)
+    if b"\x00" in raw:
+        half = max(len(raw) // 2, 1)
+        odd_zeros, even_zeros = raw[1::2].count(0), raw[0::2].count(0)
+        for codec, zeros, others in (("utf-16-le", odd_zeros, even_zeros),
+                                     ("utf-16-be", even_zeros, odd_zeros)):
+            if zeros > 0.3 * half and others == 0 and _printable(raw, codec):
+                return codec, codec, 0
+        raise EncodingError(
+            "the file is binary, not a text table",
+            file=file, row=_line_of(raw, raw.index(b"\x00")),
+            hint='check the file; give its format in the run sheet (format = "xlsx" or "tdms") '
+            "or export it from the machine as CSV",
+        )
+    text = raw if complete else raw[: raw.rfind(b"\n") + 1] or raw
+    try:
+        text.decode("utf-8")
+    except UnicodeDecodeError:
+        pass
+    else:
+        return "utf-8", "utf-8", 0
+    scores = {codec: _letter_score(text, codec) for codec in SINGLE_BYTE_ENCODINGS}
+    best = max(
+        (codec for codec, score in scores.items() if score is not None),
+        key=lambda codec: (scores[codec], codec == "latin-1"),
+    )
+    return best, best, 0
+
+
+def _printable(raw: bytes, codec: str) -> bool:
+    """True if `raw` decodes in `codec` to mostly printable text."""
+    text = raw[: len(raw) // 2 * 2].decode(codec, errors="replace")
+    return sum(char.isprintable() or char in "\r\n\t" for char in text) >= 0.95 * len(text)
+
+
+def _letter_score(raw: bytes, codec: str) -> int | None:
+    """How many non-ASCII bytes of `raw` decode to letters, minus control characters.
+
+    None if `raw` does not decode (latin-1 always does).
+    """
+    try:
+        text = raw.decode(codec)
+    except UnicodeDecodeError:
+        return None
+    score = 0
+    for char in _NON_ASCII.findall(text):
+        score += 1 if char.isalpha() else -2 if unicodedata.category(char) == "Cc" else 0
+    return score
+
+
+def _check_decodes(
+    raw: bytes, bom: int, codec: str, complete: bool, file: Path, *, bom_name: str
+) -> None:
+    decoder = codecs.getincrementaldecoder(codec)()
+    try:
+        decoder.decode(raw[bom:], final=complete)
+    except UnicodeDecodeError as error:
+        raise EncodingError(
+            f"the file starts with a {bom_name} byte-order mark but is not {bom_name} text",
+            file=file, row=_line_of(raw, bom + error.start),
+            hint="re-save the file as UTF-8 (or without the byte-order mark)",
+        ) from error
+
+
+def read_head(path: Path) -> Head:
+    """Read and decode the head of a text file.
+
+    Raises
+    ------
+    EmptyFileError
+        If the file is empty or blank.
+    EncodingError
+        See :func:`detect_encoding`.
+    """
+    size = path.stat().st_size
+    with path.open("rb") as stream:
+        raw = stream.read(HEAD_BYTES)
+    complete = len(raw) == size
+    if not raw.strip():
+        raise EmptyFileError(
+            "the file is empty" if size == 0 else "the file holds only blank lines",
+            file=path, hint="the machine wrote no data: export the test again",
+        )
+    encoding, codec, bom = detect_encoding(raw, complete, path)
+    text = codecs.getincrementaldecoder(codec)(errors="replace").decode(raw[bom:], final=complete)
+    lines, offsets, position = [], [bom], bom
+    for match in _LINE.finditer(text):
+        if not match.group(0):
+            break
+        lines.append(match.group(1))
+        position += len(match.group(0).encode(codec))
+        offsets.append(position)
+    if not complete and lines:
+        lines.pop()
+        offsets.pop()
+    return Head(path, size, encoding, codec, lines, offsets, complete)
+
+
+def detect_dialect(
+    lines: list[str], path: Path, delimiters: tuple[str, ...] = DELIMITERS
+) -> tuple[str, str, int]:
+    """Find the delimiter and decimal mark that make the most rows numeric.
+
+    The dialect with the most numeric rows of one width wins, then the one
+    reading more cells as numbers than as text, then the first in `delimiters`.
+
+    Parameters
+    ----------
+    lines : list of str
+        The head's lines.
+    path : Path
+        The file, for messages.
+    delimiters : tuple of str
+        The delimiters to try, preferred first.
+
+    Returns
+    -------
+    delimiter, decimal : str
+        The best dialect.
+    width : int
+        The number of fields of its numeric rows.
+
+    Raises
+    ------
+    EmptyFileError
+        If no line holds a number (a header without data).
+    LayoutError
+        If no dialect gives numeric rows.
+    """
+    sample = [line for line in lines if line.strip()][-400:]
+    best: tuple[tuple[int, int], str, str, int] = ((0, 0), ",", ".", 0)
+    for delimiter in delimiters:
+        rows = [split_fields(line, delimiter) for line in sample]
+        for decimal in ".,":
+            numeric = [row for row in rows if _numeric_row(row, decimal)]
+            if not numeric:
+                continue
+            width = Counter(len(row) for row in numeric).most_common(1)[0][0]
+            fitting = [row for row in numeric if len(row) == width]
+            score = (len(fitting), sum(_balance(row, decimal) for row in fitting))
+            if score > best[0]:
+                best = (score, delimiter, decimal, width)
+    if best[0][0] == 0:
+        if not any(_has_two_numbers(line) for line in sample):
+            raise EmptyFileError(
+                "no data rows: the file holds only text lines",
+                file=path, row=len(lines) + 1,
+                hint="the machine wrote no measurements: export the test again",
+            )
+        raise LayoutError(
+            "no table of numbers found at the start of the file",
+            file=path,
+            hint="the readers expect rows of numbers separated by ',', ';' or tabs; "
+            'give the format in the run sheet (format = "xlsx" or "tdms") if it is not text',
+        )
+    return best[1], best[2], best[3]
+
+
+def _has_two_numbers(line: str) -> bool:
+    return any(
+        sum(is_number(cell, decimal) for cell in split_fields(line, delimiter)) >= 2
+        for delimiter in DELIMITERS
+        for decimal in ".,"
+    )
+
+
+def _balance(row: list[str], decimal: str) -> int:
+    """Numbers minus texts among the cells of `row`."""
+    return sum(1 if is_number(cell, decimal) else 0 if is_missing(cell) else -1 for cell in row)
+
+
+def _numeric_row(row: list[str], decimal: str) -> bool:
+    """At least two fields, and more numbers than texts.
+
+    A text cell is allowed so that a table with a text column (a date, a
+    status) is still found; its text column takes no role.
+    """
+    numbers = texts = 0
+    for cell in row:
+        if is_number(cell, decimal):
+            numbers += 1
+        elif not is_missing(cell):
+            texts += 1
+    return len(row) >= 2 and numbers > texts
+
+
+def _kind(row: list[str], line: str, decimal: str) -> str:
+    """``"blank"``, ``"numeric"``, ``"missing"`` (only missing values), ``"partial"``
+    (numbers and text: a data row with a bad cell) or ``"text"``. A line of
+    delimiters only (``"\t\t"``) is a row of missing values, not a blank line."""
+    if not line.strip(" "):
+        return "blank"
+    if _numeric_row(row, decimal):
+        return "numeric"
+    if len(row) >= 2 and all(is_missing(cell) for cell in row):
+        return "missing"
+    if len(row) >= 2 and any(is_number(cell, decimal) for cell in row):
+        return "partial"
+    return "text"
+
+
+def find_table(
+    lines: list[str], path: Path, delimiter: str, decimal: str, width: int
+) -> TableSpec:
+    """Locate the names row, units row and first data row among a head's lines.
+
+    Rows with numbers just below the header count as data even with a bad
+    cell, only missing values or a wrong field count, so that the body parser
+    reports or keeps them.
+
+    Raises
+    ------
+    LayoutError
+        If there is no names row, or it does not fit the data rows.
+    """
+    rows = [split_fields(line, delimiter) for line in lines]
+    kinds = [_kind(row, line, decimal) for row, line in zip(rows, lines, strict=True)]
+    data = _first_data_row(rows, kinds, width)
+    while data > 0 and kinds[data - 1] in _DATA_KINDS:
+        data -= 1
+    above = data - 1
+    while above >= 0 and kinds[above] == "blank":
+        above -= 1
+    units_index = None
+    if (
+        above >= 1
+        and kinds[above] == "text"
+        and kinds[above - 1] == "text"
+        and len(rows[above]) <= width
+        and all(looks_like_unit(cell) for cell in rows[above])
+    ):
+        units_index, above = above, above - 1
+    if above < 0 or kinds[above] != "text":
+        raise LayoutError(
+            "no names row above the first data row",
+            file=path, row=data + 1,
+            hint="add a header row naming the columns, e.g. 'time [s],force [kN],gauge1 [mm]'",
+        )
+    names = rows[above]
+    pairs = delimiter == "," and decimal == "." and 2 * len(names) == width
+    columns = width // 2 if pairs else width
+    if len(names) > columns and not any(cell.strip() for cell in names[columns:]):
+        names = names[:columns]
+    if len(names) > columns:
+        raise LayoutError(
+            f"the names row has {len(names)} fields but the data rows have {width}",
+            file=path, row=above + 1,
+            hint="the header and the data do not match: check the delimiter and the export",
+        )
+    names = names + [""] * (columns - len(names))
+    units: list[str | None] = [None] * columns
+    if units_index is not None:
+        for index, cell in enumerate(rows[units_index][:columns]):
+            units[index] = cell.strip().strip("()[]").strip() or None
+    return TableSpec(
+        delimiter=delimiter,
+        decimal="," if pairs else decimal,
+        names=names,
+        header_index=above,
+        units_index=units_index,
+        data_index=data,
+        width=width,
+        units=units,
+        preamble=[line for line in lines[:above] if line.strip()],
+        pairs=pairs,
+    )
+
+
+def _first_data_row(rows: list[list[str]], kinds: list[str], width: int) -> int:
+    """The first numeric row of `width` fields followed by a data row (or by nothing)."""
+    candidates = [i for i, kind in enumerate(kinds) if kind == "numeric" and len(rows[i]) == width]
+    for i in candidates:
+        following = next((j for j in range(i + 1, len(kinds)) if kinds[j] != "blank"), None)
+        if following is None or (kinds[following] in _DATA_KINDS and len(rows[following]) == width):
+            return i
+    return candidates[0]

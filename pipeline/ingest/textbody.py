@@ -1,0 +1,382 @@
+"""Parsing the body of a delimited text export with pyarrow, and locating its defects.
+
+The body (every line from the first data row on) is handed to
+:func:`pyarrow.csv.read_csv` as one stream: no Python loop runs over its rows.
+Python reads lines only on the error path (to say which line and column is
+wrong) and to turn a row number into a line number for a warning.
+"""
+
+from __future__ import annotations
+
+import mmap
+import re
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+from functools import cached_property
+from pathlib import Path
+
+import numpy as np
+import pyarrow as pa
+import pyarrow.compute as pc
+import pyarrow.csv as pacsv
+
+from pipeline.errors import LayoutError, ValueParseError
+from pipeline.ingest.sniff import NULL_VALUES, is_missing, is_number, split_fields
+
+#: Bytes of the file's end searched for a truncated last line.
+TAIL_BYTES = 1 << 16
+
+_LINE = re.compile(rb"([^\r\n]*)(\r\n|\r|\n|\Z)")
+_INVALID = re.compile(r"column #(\d+).*invalid value '(.*)'", re.DOTALL)
+
+
+def column_label(index: int) -> str:
+    """The name pyarrow gives field `index` of a body (the file's names are kept apart)."""
+    return f"c{index}"
+
+
+@dataclass(frozen=True)
+class Region:
+    """A byte range of a text file holding table rows.
+
+    Attributes
+    ----------
+    path : Path
+        The file.
+    start, end : int
+        Byte offsets of the first data line and of the end of the rows.
+    first_line : int
+        1-based line number of the line at `start`.
+    codec : str
+        Codec of the text.
+    is_data : callable, optional
+        Tells a data line from a line pyarrow does not see (blank lines by
+        default; block headers for layouts that filter them out).
+    """
+
+    path: Path
+    start: int
+    end: int
+    first_line: int
+    codec: str
+    is_data: Callable[[str], bool] | None = None
+
+    def lines(self) -> Iterator[tuple[int, str]]:
+        """``(line number, text)`` of every data line, in order (Python speed: error path)."""
+        keep = self.is_data or bool
+        with self.path.open("rb") as stream:
+            # not closed explicitly: the match iterator may outlive an early-closed generator
+            view = mmap.mmap(stream.fileno(), 0, access=mmap.ACCESS_READ)
+        if self.codec.startswith("utf-16"):
+            text = view[self.start : self.end].decode(self.codec, errors="replace")
+            matches = (
+                (match.group(1).encode("utf-8"), match)
+                for match in re.finditer(r"([^\r\n]*)(\r\n|\r|\n|\Z)", text)
+            )
+            codec = "utf-8"
+        else:
+            matches = (
+                (match.group(1), match) for match in _LINE.finditer(view, self.start, self.end)
+            )
+            codec = self.codec
+        for number, (raw, match) in enumerate(matches, start=self.first_line):
+            if not match.group(0):
+                return
+            line = raw.decode(codec, errors="replace")
+            if keep(line):
+                yield number, line
+
+    def read(self, start: int, stop: int) -> bytes:
+        """The file's bytes from `start` to `stop`."""
+        with self.path.open("rb") as stream:
+            stream.seek(start)
+            return stream.read(stop - start)
+
+    def open(self) -> pa.NativeFile:
+        """A pyarrow stream of the region's bytes (read in blocks, not mapped)."""
+        if self.end == self.path.stat().st_size:
+            stream = pa.OSFile(str(self.path))
+            stream.seek(self.start)
+            return stream
+        return pa.BufferReader(pa.py_buffer(self.read(self.start, self.end)))
+
+    def line_of(self, row: int) -> int | None:
+        """1-based line number of table row `row` (0-based), or None if past the end."""
+        if self.is_data is None and not self._has_blank_lines:
+            return self.first_line + row
+        for index, (number, _) in enumerate(self.lines()):
+            if index == row:
+                return number
+        return None
+
+    @cached_property
+    def _has_blank_lines(self) -> bool:
+        with self.path.open("rb") as stream, mmap.mmap(
+            stream.fileno(), 0, access=mmap.ACCESS_READ
+        ) as view:
+            end = self.end
+            while end > self.start and view[end - 1 : end] in (b"\r", b"\n", b"\x00"):
+                end -= 1
+            return any(
+                view.find(pattern.encode(self.codec), self.start, end) >= 0
+                for pattern in ("\n\n", "\r\n\r\n", "\r\r")
+            )
+
+
+def trim_truncated_tail(
+    read: Callable[[int, int], bytes], region: Region, width: int, delimiter: str
+) -> tuple[Region, bool]:
+    """Cut a truncated last line off the region.
+
+    The last line is a half-written row if the file does not end with a line
+    end and the line has fewer fields than the data rows, or stops right after
+    a delimiter (last field empty where the line before has a value). A short
+    line that does end with a line end is left to the parser, which reports it.
+
+    Parameters
+    ----------
+    read : callable
+        ``read(start, stop)`` returns the bytes between two offsets of the
+        region's text (:meth:`Region.read` for a file).
+    region : Region
+        The rows.
+    width : int
+        Fields per row.
+    delimiter : str
+        The field delimiter.
+
+    Returns
+    -------
+    region : Region
+        The region without the truncated line.
+    truncated : bool
+        True if a line was cut off.
+    """
+    single_byte = not region.codec.startswith("utf-16")
+    start = max(region.start, region.end - TAIL_BYTES)
+    if not single_byte:
+        start += (start - region.start) % 2
+    raw = read(start, region.end)
+    text = raw.decode("latin-1" if single_byte else region.codec, errors="replace")
+    body = text.rstrip("\r\n")
+    ends_with_newline = len(body) < len(text)
+    lines = re.split(r"\r\n|\r|\n", body)
+    if len(lines) < 1 or not lines[-1]:
+        return region, False
+    last = split_fields(lines[-1], delimiter)
+    before = split_fields(lines[-2], delimiter) if len(lines) > 1 else []
+    truncated = not ends_with_newline and (
+        len(last) < width
+        or (not last[-1].strip() and len(before) == len(last) and bool(before[-1].strip()))
+    )
+    if not truncated:
+        return region, False
+    kept = body[: len(body) - len(lines[-1])]
+    end = start + (len(kept) if single_byte else len(kept.encode(region.codec)))
+    return Region(region.path, region.start, end, region.first_line, region.codec,
+                  region.is_data), True
+
+
+def parse_body(
+    source: pa.NativeFile,
+    region: Region,
+    *,
+    names: list[str],
+    width: int,
+    delimiter: str,
+    decimal: str,
+    float_columns: set[int],
+    as_text: bool = False,
+) -> pa.Table:
+    """Parse the rows of `source` with pyarrow.
+
+    Parameters
+    ----------
+    source : pyarrow.NativeFile
+        A stream of the body (data lines only, or data lines and blank lines).
+    region : Region
+        Where the rows sit in the file (for error messages).
+    names : list of str
+        The file's column names, for messages.
+    width : int
+        Fields per row.
+    delimiter, decimal : str
+        The dialect.
+    float_columns : set of int
+        Fields parsed as float64; the others are left to pyarrow's inference.
+    as_text : bool
+        Read every field as a string (see :mod:`pipeline.ingest.european_csv`).
+
+    Returns
+    -------
+    pyarrow.Table
+        Columns named by :func:`column_label`.
+
+    Raises
+    ------
+    ValueParseError
+        A cell of a float column is not a number (line and column named).
+    LayoutError
+        A row has the wrong number of fields, or pyarrow cannot read the body.
+    """
+    labels = [column_label(index) for index in range(width)]
+    kind = pa.string() if as_text else pa.float64()
+    read_options = pacsv.ReadOptions(
+        column_names=labels,
+        encoding=region.codec if region.codec.startswith("utf-16") else "utf8",
+    )
+    convert_options = pacsv.ConvertOptions(
+        column_types={
+            labels[index]: kind for index in (range(width) if as_text else float_columns)
+        },
+        decimal_point=decimal,
+        null_values=sorted(NULL_VALUES),
+        strings_can_be_null=True,
+    )
+    try:
+        with source:
+            return pacsv.read_csv(
+                source,
+                read_options=read_options,
+                parse_options=pacsv.ParseOptions(delimiter=delimiter),
+                convert_options=convert_options,
+            )
+    except (pa.ArrowException, UnicodeDecodeError) as error:
+        raise locate_defect(
+            region, names, width, delimiter, decimal, float_columns, error
+        ) from error
+
+
+def locate_defect(
+    region: Region,
+    names: list[str],
+    width: int,
+    delimiter: str,
+    decimal: str,
+    float_columns: set[int],
+    error: Exception,
+) -> LayoutError | ValueParseError:
+    """Find the first line pyarrow could not read and describe it as a typed error."""
+    reported = _INVALID.search(str(error))
+    for number, line in region.lines():
+        fields = split_fields(line, delimiter)
+        if len(fields) != width:
+            return LayoutError(
+                f"the row has {len(fields)} fields where the data rows have {width}",
+                file=region.path, row=number,
+                hint="a row is broken, or two tables were joined: fix or delete the line",
+            )
+        for index in sorted(float_columns):
+            cell = fields[index]
+            if not (is_number(cell, decimal) or is_missing(cell)):
+                return _bad_cell(region, names, number, index, cell, decimal)
+    if reported is not None:
+        index = int(reported.group(1))
+        return _bad_cell(region, names, None, index, reported.group(2), decimal)
+    return LayoutError(
+        f"the table cannot be read: {error}",
+        file=region.path, row=region.first_line,
+        hint="check the export; give columns and units in the run sheet if detection failed",
+    )
+
+
+def _bad_cell(
+    region: Region, names: list[str], line: int | None, index: int, cell: str, decimal: str
+) -> ValueParseError:
+    other = "," if decimal == "." else "."
+    hint = (
+        f"the file's decimal mark is {decimal!r} but this cell uses {other!r}: "
+        "re-export with one decimal mark"
+        if is_number(cell, other)
+        else "fix or delete the cell (missing values may be left empty or written NaN)"
+    )
+    return ValueParseError(
+        f"{cell.strip()[:40]!r} is not a number",
+        file=region.path, row=line, column=names[index] or f"#{index + 1}", hint=hint,
+    )
+
+
+def split_table(
+    table: pa.Table, floats: set[int], width: int
+) -> tuple[dict[int, pa.ChunkedArray], int, set[int]]:
+    """The float columns of a parsed body, its row count and its other empty fields.
+
+    The caller drops its reference to `table` next, so that
+    :func:`float_arrays` can free each column as it converts it.
+    """
+    chunks = {index: table.column(column_label(index)) for index in floats}
+    return chunks, table.num_rows, empty_columns(table, set(range(width)) - floats)
+
+
+def float_arrays(chunks: dict[int, pa.ChunkedArray]) -> dict[int, np.ndarray]:
+    """Float columns as writable numpy arrays (NaN for missing), emptying `chunks`.
+
+    Each pyarrow column is released as soon as it is converted, so that the
+    peak memory holds one column twice, not the whole table.
+    """
+    arrays = {}
+    for index in sorted(chunks):
+        array = chunks.pop(index).to_numpy()
+        arrays[index] = array if array.flags.writeable else array.copy()
+    pa.default_memory_pool().release_unused()
+    return arrays
+
+
+def empty_columns(table: pa.Table, columns: set[int]) -> set[int]:
+    """Fields among `columns` holding no value at all."""
+    return {
+        index for index in columns
+        if table.column(column_label(index)).null_count == table.num_rows
+    }
+
+
+def join_comma_pairs(table: pa.Table, region: Region, names: list[str]) -> pa.Table:
+    """Rebuild values split by a decimal comma that is also the delimiter.
+
+    ``0,5,1,25`` under the header ``time,force`` is read as four text fields
+    and rejoined as 0.5 and 1.25. This is unambiguous only if every pair is an
+    integer part and a digits-only fraction; otherwise the reader gives up.
+
+    Parameters
+    ----------
+    table : pyarrow.Table
+        The body read as text (:func:`parse_body` with ``as_text=True``), two
+        fields per column.
+    region : Region
+        Where the rows sit in the file.
+    names : list of str
+        The file's column names.
+
+    Returns
+    -------
+    pyarrow.Table
+        One float64 column per name, labelled by :func:`column_label`.
+
+    Raises
+    ------
+    LayoutError
+        If a row cannot be paired unambiguously (line and column named).
+    """
+    joined = {}
+    for index in range(table.num_columns // 2):
+        whole = pc.utf8_trim_whitespace(table.column(column_label(2 * index)))
+        fraction = pc.utf8_trim_whitespace(table.column(column_label(2 * index + 1)))
+        fits = pc.fill_null(
+            pc.and_(
+                pc.match_substring_regex(whole, r"^[+-]?\d+$"),
+                pc.match_substring_regex(fraction, r"^\d+$"),
+            ),
+            False,
+        )
+        if not pc.all(fits).as_py():
+            row = pc.index(fits, False).as_py()
+            raise LayoutError(
+                "the decimal comma is also the delimiter and this value cannot be split "
+                "unambiguously",
+                file=region.path, row=region.line_of(row), column=names[index] or None,
+                hint="export with ';' or tab as delimiter, or with quoted numbers",
+            )
+        joined[column_label(index)] = pc.cast(
+            pc.binary_join_element_wise(whole, fraction, "."), pa.float64()
+        )
+    return pa.table(joined)

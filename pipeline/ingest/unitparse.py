@@ -1,0 +1,119 @@
+"""Units of raw columns, read and converted with pint (:data:`pipeline.units.ureg`).
+
+No conversion table lives here: a unit text is handed to pint, which knows
+N, kN, daN, kgf, kG, tf, lbf, mm, µm/um, m, in, s, ms, min, deg, rad and the
+rest; only the *spelling* is helped (``"Sec"`` -> ``"sec"``, ``"KN"`` -> ``"kN"``).
+"""
+
+from __future__ import annotations
+
+from pipeline.errors import UnitError
+from pipeline.units import to_si, ureg
+
+#: The SI unit of each canonical column.
+ROLE_SI_UNIT = {"time": "s", "force": "N", "gauge": "m", "angle": "rad", "cycle_count": "1"}
+
+_ROLE_DIMENSION = {
+    "time": ureg.second.dimensionality,
+    "force": ureg.newton.dimensionality,
+    "gauge": ureg.meter.dimensionality,
+}
+
+#: Units a machine's own counter may carry; the counter is kept as counted.
+COUNTER_UNITS = frozenset(
+    {"", "1", "-", "#", "n", "cycle", "cycles", "segment", "segments", "count", "counts",
+     "zyklen", "cykle", "ciclos"}
+)
+
+#: What to tell a user whose unit is not understood.
+ACCEPTED_UNITS = "N, kN, daN, kgf (kG), tf, lbf; mm, µm (um), m, in; s, ms, min; deg, rad"
+
+
+def spellings(text: str) -> list[str]:
+    """The spellings of `text` that pint understands, best first.
+
+    Tries the text as written, in lower case, then with its first letter in
+    lower case (``"KN"`` -> ``"kn"`` (knot), ``"kN"``): the caller keeps the
+    first of the right dimension. Pint's parser evaluates nothing.
+    """
+    text = text.strip().strip("()[]{}").strip()
+    found = []
+    for spelling in dict.fromkeys((text, text.lower(), text[:1].lower() + text[1:])):
+        if not spelling:
+            continue
+        try:
+            ureg.parse_units(spelling)
+        except Exception:  # pint raises many kinds of error on odd text
+            continue
+        found.append(spelling)
+    return found
+
+
+def _role_of(spelling: str) -> str | None:
+    dimensionality = ureg.parse_units(spelling).dimensionality
+    for role, dimension in _ROLE_DIMENSION.items():
+        if dimensionality == dimension:
+            return role
+    return "angle" if "radian" in str(ureg.get_root_units(spelling)[1]) else None
+
+
+def unit_role(text: str | None) -> str | None:
+    """The role a unit alone suggests (``"kN"`` -> ``"force"``), or None."""
+    for spelling in spellings(text or ""):
+        role = _role_of(spelling)
+        if role is not None:
+            return role
+    return None
+
+
+def looks_like_unit(text: str) -> bool:
+    """True if `text` reads as a unit cell of a units row (``"(mm)"``, ``"Sec"``, ``""``)."""
+    stripped = text.strip()
+    if not stripped or stripped.lower() in COUNTER_UNITS:
+        return True
+    if stripped[0] + stripped[-1] in ("()", "[]"):
+        return True
+    return bool(spellings(stripped))
+
+
+def si_factor(
+    text: str, role: str, *, file: str, row: int | None, column: str, source: str
+) -> float:
+    """The factor taking values in unit `text` to the SI unit of `role`.
+
+    Parameters
+    ----------
+    text : str
+        The unit as found (``"kN"``, ``"(sec)"``).
+    role : str
+        ``"time"``, ``"force"``, ``"gauge"`` or ``"angle"``.
+    file, row, column : str, int or None, str
+        Where the unit was found, for the error message.
+    source : str
+        Where the unit came from, e.g. ``"the header"`` or ``"the run sheet"``.
+
+    Returns
+    -------
+    float
+        Multiply raw values by this to get SI values.
+
+    Raises
+    ------
+    UnitError
+        If pint does not know the unit or it is not of the role's dimension.
+    """
+    found = spellings(text)
+    if not found:
+        raise UnitError(
+            f"unknown unit {text!r} in {source}",
+            file=file, row=row, column=column,
+            hint=f"write a unit pint understands ({ACCEPTED_UNITS})",
+        )
+    for spelling in found:
+        if _role_of(spelling) == role:
+            return float(to_si(1.0, spelling))
+    raise UnitError(
+        f"unit {text!r} in {source} is not a unit of {role} ({ROLE_SI_UNIT[role]})",
+        file=file, row=row, column=column,
+        hint="check the column roles (columns = {...}) and units in the run sheet",
+    )

@@ -1,0 +1,161 @@
+"""``.xlsx`` workbooks (openpyxl through pandas): the same tables as the text layouts.
+
+The table is looked for on the first sheet, or on the sheet the run sheet
+names, exactly as in a text file: an optional preamble, a names row, an
+optional units row, then data rows. Line numbers in messages are sheet rows.
+
+File defects handled
+--------------------
+* empty sheet, or a sheet name that does not exist (error listing the sheets);
+* the table not in ``A1``: empty rows and columns around it are skipped;
+* a preamble, a separate units row, units in brackets in the names row;
+* numbers stored as text, with a ``.`` or ``,`` decimal mark;
+* a non-numeric cell (error naming the sheet row and the column);
+* empty rows inside the table (skipped), empty cells (NaN);
+* a file that is not a valid workbook (error).
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from collections.abc import Mapping
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from pipeline.errors import EmptyFileError, LayoutError, ValueParseError
+from pipeline.ingest.delimited import header_columns, units_line
+from pipeline.ingest.machine_export import parse_preamble
+from pipeline.ingest.raw import RawTable
+from pipeline.ingest.roles import display_name, find_candidates
+from pipeline.ingest.sniff import detect_dialect, find_table, is_missing, is_number
+from pipeline.ingest.table import TableMetadata
+
+LAYOUT = "xlsx"
+
+#: Sheet rows looked at to find the table.
+HEAD_ROWS = 200
+
+
+def _text(value: object) -> str:
+    """A cell as the text sniffing sees (numbers in Python's notation)."""
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return ""
+    if isinstance(value, numbers.Real) and not isinstance(value, bool):
+        return repr(float(value))
+    return str(value).replace("\t", " ").replace("\r", " ").replace("\n", " ")
+
+
+def _open_sheet(path: Path, sheet: str | int | None) -> tuple[pd.DataFrame, str]:
+    try:
+        workbook = pd.ExcelFile(path, engine="openpyxl")
+    except Exception as error:  # openpyxl / zipfile raise many kinds on a broken file
+        raise LayoutError(
+            f"not a readable .xlsx workbook ({type(error).__name__}: {error})",
+            file=path, hint="open it in a spreadsheet program and save it again as .xlsx",
+        ) from error
+    with workbook:
+        names = workbook.sheet_names
+        wanted = 0 if sheet is None else sheet
+        if (isinstance(wanted, int) and not 0 <= wanted < len(names)) or (
+            isinstance(wanted, str) and wanted not in names
+        ):
+            raise LayoutError(
+                f"no sheet {wanted!r} in the workbook",
+                file=path, hint="the workbook has the sheets: " + ", ".join(map(repr, names)),
+            )
+        name = names[wanted] if isinstance(wanted, int) else wanted
+        frame = pd.read_excel(workbook, sheet_name=name, header=None)
+    frame = frame.dropna(axis=1, how="all")
+    if frame.empty:
+        raise EmptyFileError(
+            f"sheet {name!r} is empty", file=path,
+            hint="give the sheet holding the data in the run sheet (sheet = \"...\")",
+        )
+    return frame, name
+
+
+def _to_float(cells: pd.Series, path: Path, column: str) -> np.ndarray:
+    """A column of cells as float64; raises on a cell that is not a number.
+
+    Numbers stored as text may use either decimal mark (``"1,5"`` or ``"1.5"``).
+    """
+    values = pd.to_numeric(cells, errors="coerce").to_numpy(dtype=float, copy=True)
+    for position in np.flatnonzero(np.isnan(values)):
+        cell = cells.iloc[position]
+        text = _text(cell).strip()
+        if is_missing(text):
+            continue
+        if isinstance(cell, str) and (is_number(text, ".") or is_number(text, ",")):
+            values[position] = float(text.replace(",", "."))
+            continue
+        raise ValueParseError(
+            f"{text[:40]!r} is not a number",
+            file=path, row=int(cells.index[position]) + 1, column=column,
+            hint="fix or delete the cell (missing values may be left empty)",
+        )
+    return values
+
+
+def read(
+    path: Path, sheet: str | int | None = None, columns: Mapping | None = None
+) -> RawTable:
+    """Read the table of one sheet of an ``.xlsx`` workbook.
+
+    Parameters
+    ----------
+    path : Path
+        The workbook.
+    sheet : str or int, optional
+        Sheet name or 0-based index; the first sheet by default.
+    columns : mapping, optional
+        Run-sheet ``columns`` (see :func:`~pipeline.ingest.roles.find_candidates`).
+
+    Returns
+    -------
+    RawTable
+    """
+    frame, sheet_name = _open_sheet(path, sheet)
+    lines = ["\t".join(_text(value) for value in row)
+             for row in frame.head(HEAD_ROWS).itertuples(index=False)]
+    _, decimal, width = detect_dialect(lines, path, delimiters=("\t",))
+    spec = find_table(lines, path, "\t", decimal, width)
+    names, units = header_columns(spec)
+    found = find_candidates(names, units, columns, file=path, header_line=spec.header_index + 1)
+    body = frame.iloc[spec.data_index:, : len(names)].dropna(axis=0, how="all")
+    if body.empty:
+        raise EmptyFileError(
+            f"sheet {sheet_name!r} has a header but no data rows",
+            file=path, row=spec.data_index + 1, hint="the sheet holds no measurements",
+        )
+    sheet_rows = body.index.to_numpy() + 1
+    arrays = {
+        index: _to_float(body.iloc[:, index], path, display_name(names, index))
+        for index in sorted(found.indexes())
+    }
+    empty = {
+        index for index in range(len(names))
+        if index not in arrays and body.iloc[:, index].isna().all()
+    }
+    meta = TableMetadata(
+        file=str(path),
+        layout=LAYOUT,
+        decimal=decimal,
+        preamble=parse_preamble(spec.preamble, "\t"),
+        sheet=sheet_name,
+        header_line=spec.header_index + 1,
+        first_data_line=int(sheet_rows[0]),
+    )
+    return RawTable(
+        names=names,
+        units=units,
+        arrays=arrays,
+        rows=len(body),
+        candidates=found,
+        metadata=meta,
+        line_of=lambda row: int(sheet_rows[row]) if 0 <= row < len(sheet_rows) else None,
+        empty=empty,
+        units_line=units_line(spec),
+    )

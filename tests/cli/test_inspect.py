@@ -1,0 +1,112 @@
+"""``chainbench inspect``: what the readers detect, and one clean line on error."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from pipeline.cli import app
+
+runner = CliRunner()
+
+#: Third-party exports (never copied into the repository); tests skip without them.
+REALDATA = Path(__file__).parents[2] / ".." / "shared" / "realdata"
+
+LOAD = [min(i % 10, 10 - i % 10) for i in range(60)]  # 6 load/unload cycles, 0 -> 5 -> 0 kN
+PLAIN = "time [s],force [kN],gauge1 [mm],gauge2 [mm]\n" + "".join(
+    f"{i / 10},{load},{load / 100},{load / 90}\n" for i, load in enumerate(LOAD)
+)
+
+
+@pytest.fixture
+def realdata() -> Path:
+    if not REALDATA.is_dir():
+        pytest.skip("../shared/realdata is absent")
+    return REALDATA.resolve()
+
+
+def inspect_json(*arguments: str) -> dict:
+    result = runner.invoke(app, ["inspect", "--json", *arguments])
+    assert result.exit_code == 0, result.output
+    return json.loads(result.stdout)
+
+
+def test_json_document(tmp_path):
+    path = tmp_path / "t.csv"
+    path.write_text(PLAIN)
+    report = inspect_json(str(path))
+    assert {"layout", "encoding", "delimiter", "decimal", "rows", "columns", "cycles",
+            "warnings"} <= set(report)
+    assert (report["layout"], report["delimiter"], report["decimal"], report["rows"]) == (
+        "plain_csv", ",", ".", 60)
+    assert report["columns"][1] == {"name": "force", "role": "force", "unit": "kN",
+                                    "si_unit": "N"}
+    assert report["cycles"] == 6 and report["machine_cycles"] is None
+    assert report["warnings"] == []
+
+
+def test_table_output(tmp_path):
+    path = tmp_path / "t.csv"
+    path.write_text(PLAIN)
+    result = runner.invoke(app, ["inspect", str(path)])
+    assert result.exit_code == 0
+    assert "plain_csv" in result.stdout and "gauge_2" in result.stdout
+
+
+def test_error_is_one_clean_line(tmp_path):
+    path = tmp_path / "bad.csv"
+    path.write_text("time [s],force [kN],gauge [mm]\n0,1,2\n0.1,x,2\n")
+    result = runner.invoke(app, ["inspect", str(path)])
+    assert result.exit_code == 1
+    lines = result.stderr.strip().splitlines()
+    assert lines == [f"error: {path}, line 3, column 'force': 'x' is not a number "
+                     "(hint: fix or delete the cell (missing values may be left empty or "
+                     "written NaN))"]
+    assert "Traceback" not in result.output
+
+
+def test_debug_shows_the_traceback(tmp_path):
+    path = tmp_path / "empty.csv"
+    path.write_bytes(b"")
+    result = runner.invoke(app, ["inspect", "--debug", str(path)])
+    assert result.exit_code != 0
+    assert type(result.exception).__name__ == "EmptyFileError"
+
+
+def test_missing_units_show_as_null_with_a_warning(tmp_path):
+    path = tmp_path / "u.csv"
+    path.write_text("time,force,gauge\n0,1,2\n1,2,3\n")
+    report = inspect_json(str(path))
+    assert [column["unit"] for column in report["columns"]] == [None, None, None]
+    assert [column["role"] for column in report["columns"]] == ["time", "force", "gauge_1"]
+    assert sum("no unit" in warning for warning in report["warnings"]) == 3
+    assert report["cycles"] is None
+
+
+@pytest.mark.realdata
+def test_bluehill_has_three_cycles(realdata):
+    report = inspect_json(str(realdata / "yadbor__bluer__Specimen_RawData_6.csv"))
+    assert (report["layout"], report["rows"], report["cycles"], report["machine_cycles"]) == (
+        "machine_export", 18_011, 3, 3)
+    assert {c["name"]: c["role"] for c in report["columns"]}["Extension"] == "gauge_1"
+
+
+@pytest.mark.realdata
+def test_ccfatigue_without_units(realdata):
+    report = inspect_json(str(realdata / "EPFL-ENAC__CCFatiguePlatform__TST_2021-10_FA_22.csv"))
+    load = next(c for c in report["columns"] if c["name"] == "Machine_Load")
+    assert load == {"name": "Machine_Load", "role": "force", "unit": None, "si_unit": None}
+    assert any("Machine_Load" in w and "run sheet" in w for w in report["warnings"])
+    assert report["machine_cycles"] == 373
+
+
+@pytest.mark.realdata
+@pytest.mark.parametrize("number", [1, 2])
+def test_mts(realdata, number):
+    report = inspect_json(
+        str(realdata / f"ramonbotella__MTS_data_process_Python__sampledatafiletype{number}.dat"))
+    assert (report["layout"], report["delimiter"], report["decimal"]) == ("mts", "\t", ",")
+    assert report["machine_cycles"] == 10

@@ -1,0 +1,108 @@
+"""Roles, SI units and the layout-independent checks of the canonical table."""
+
+import numpy as np
+import pytest
+
+from pipeline.errors import ColumnError, UnitError
+from pipeline.ingest import read_table
+
+HEADER = "time [s],force [kN],gauge1 [mm]\n"
+
+
+def rows(*values):
+    return "".join(",".join(str(v) for v in row) + "\n" for row in values)
+
+
+def test_sentinels_become_nan_and_empty_channels_are_dropped(write):
+    text = ("time [s],force [kN],gauge1 [mm],gauge2 [mm],Winkel [deg]\n"
+            + rows((0, 1, 0.1, -999999, -1000000), (1, 2, 0.2, -999999, -1000000),
+                   (2, -1000000, 0.3, -999999, -1000000)))
+    table, meta = read_table(write("s.csv", text))
+    assert list(table.columns) == ["time", "force", "gauge_1"]
+    assert np.isnan(table["force"][2])
+    assert sum("sentinel" in warning for warning in meta.warnings) == 3
+    assert "2 empty column(s) dropped: gauge2, Winkel" in meta.warnings
+
+
+def test_nan_stretch_is_reported_with_count_and_longest_run(write):
+    text = HEADER + rows((0, 1, 0), (1, "", 0), (2, "NaN", 0), (3, 4, 0), (4, "", 0), (5, 6, 0))
+    table, meta = read_table(write("n.csv", text))
+    assert int(table["force"].isna().sum()) == 3
+    assert meta.warnings == [
+        "force: 3 missing values kept as NaN; longest run 2 rows from line 3"
+    ]
+
+
+def test_time_backwards_and_gaps_are_warnings(write):
+    text = HEADER + rows(*[(t, 1, 0) for t in (0.0, 0.1, 0.2, 0.15, 0.3, 0.4, 9.0, 9.1)])
+    _, meta = read_table(write("t.csv", text))
+    assert meta.time_monotonic is False and meta.time_gaps == 1
+    assert "steps back 1 times, first at line 5" in meta.warnings[0]
+    assert "first before line 8" in meta.warnings[1]
+
+
+def test_run_sheet_units_fill_missing_units_and_override_with_warning(write):
+    text = "time,force [kN],gauge1\n" + rows((0, 1, 2), (1, 2, 3))
+    table, meta = read_table(write("u.csv", text),
+                             units={"time": "ms", "force": "daN", "gauges": ["um"]})
+    np.testing.assert_allclose(table["time"], [0.0, 1e-3])
+    np.testing.assert_allclose(table["force"], [10.0, 20.0])
+    np.testing.assert_allclose(table["gauge_1"], [2e-6, 3e-6])
+    assert "'daN' from the run sheet replaces 'kN'" in meta.warnings[0]
+
+
+def test_missing_unit_error_names_column_and_run_sheet_key(write):
+    with pytest.raises(UnitError) as caught:
+        read_table(write("u.csv", "time [s],force,gauge1 [mm]\n" + rows((0, 1, 2))))
+    error = caught.value
+    assert (error.row, error.column) == (1, "force")
+    assert 'units = {force = "..."}' in error.hint
+
+
+def test_lenient_mode_keeps_going(write):
+    table, meta = read_table(write("u.csv", "time [s],force,gauge1 [mm]\n" + rows((0, 1, 2))),
+                             strict=False)
+    assert list(table.columns) == ["time", "gauge_1"]
+    assert meta.columns[1].role == "force" and meta.columns[1].unit is None
+    assert "no unit for the force column" in meta.warnings[0]
+
+
+def test_wrong_dimension_of_a_named_column_is_skipped_with_warning(write):
+    text = "time [s],force [kN],gauge1 [mm],Dehnung [%]\n" + rows((0, 1, 2, 3))
+    table, meta = read_table(write("d.csv", text))
+    assert list(table.columns) == ["time", "force", "gauge_1"]
+    assert "unit '%' is not a unit of gauge" in meta.warnings[0]
+
+
+def test_unit_decides_role_of_an_unknown_name(write):
+    table, _ = read_table(write("x.csv", "t [s];F [kN];s1 [mm];s2 [mm]\n0;1;2;3\n"))
+    assert list(table.columns) == ["time", "force", "gauge_1", "gauge_2"]
+
+
+def test_explicit_columns_and_gauge_order(write):
+    text = "a [s],b [kN],c [mm],d [mm]\n" + rows((0, 1, 2, 3))
+    table, meta = read_table(write("e.csv", text),
+                             columns={"time": "A", "force": "b", "gauges": ["d", "c"]})
+    np.testing.assert_allclose(table[["gauge_1", "gauge_2"]].to_numpy(), [[3e-3, 2e-3]])
+    assert [c.role for c in meta.columns] == ["time", "force", "gauge_2", "gauge_1"]
+
+
+def test_explicit_column_missing_lists_columns(write):
+    with pytest.raises(ColumnError, match="no column 'Kraft'") as caught:
+        read_table(write("e.csv", HEADER + rows((0, 1, 2))), columns={"force": "Kraft"})
+    assert caught.value.hint == "the file has: time, force, gauge1"
+
+
+def test_unknown_role_key(write):
+    with pytest.raises(ColumnError, match="unknown role 'stress'"):
+        read_table(write("e.csv", HEADER + rows((0, 1, 2))), columns={"stress": "force"})
+
+
+def test_engagement_needs_time(write):
+    with pytest.raises(ColumnError, match="no time column"):
+        read_table(write("e.csv", "force [kN],gauge [mm]\n" + rows((1, 2))), kind="engagement")
+
+
+def test_invalid_kind():
+    with pytest.raises(ValueError, match="kind"):
+        read_table(__file__, kind="fatigue")

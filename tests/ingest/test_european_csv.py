@@ -1,0 +1,67 @@
+"""European CSV: ';' or tab delimiter, decimal comma, cp1250 / latin-1 / BOM."""
+
+import numpy as np
+import pytest
+
+from pipeline.errors import LayoutError, ValueParseError
+from pipeline.ingest import read_table
+from pipeline.units import STANDARD_GRAVITY
+
+POLISH = (
+    "czas [s];siła [kN];wydłużenie 1 [mm];wydłużenie 2 [mm]\r\n"
+    "0,0;0,892;0,010;0,011\r\n"
+    "0,5;1,784;0,020;0,021\r\n"
+)
+
+
+@pytest.mark.parametrize("encoding", ["cp1250", "utf-8", "utf-8-sig", "utf-16"])
+def test_polish_export(write, encoding):
+    table, meta = read_table(write("p.csv", POLISH, encoding))
+    assert (meta.layout, meta.delimiter, meta.decimal) == ("european_csv", ";", ",")
+    np.testing.assert_allclose(table["force"], [892.0, 1784.0])
+    np.testing.assert_allclose(table["gauge_2"], [1.1e-5, 2.1e-5])
+    assert meta.columns[1].name == "siła"
+
+
+def test_german_export_latin1_with_quotes(write):
+    text = ('"Zeit [s]";"Standardkraft [kgf]";"Weg [mm]"\n'
+            '"0,0";"100,0";"0,5"\n"1,0";"200,0";"1,5"\n')
+    table, meta = read_table(write("g.csv", text, "latin-1"))
+    np.testing.assert_allclose(table["force"], [100 * STANDARD_GRAVITY, 200 * STANDARD_GRAVITY])
+    assert meta.encoding == "utf-8"
+
+
+def test_tab_decimal_comma(write):
+    table, meta = read_table(write("t.txt", POLISH.replace(";", "\t")))
+    assert meta.delimiter == "\t" and meta.layout == "european_csv"
+    assert table.shape == (2, 4)
+
+
+def test_quoted_decimal_comma_with_comma_delimiter(write):
+    text = 'time [s],force [kN],gauge [mm]\n"0,5","1,25","0,01"\n"1,5","2,25","0,02"\n'
+    table, meta = read_table(write("q.csv", text))
+    assert (meta.delimiter, meta.decimal) == (",", ",")
+    np.testing.assert_allclose(table["force"], [1250.0, 2250.0])
+
+
+def test_unquoted_decimal_comma_with_comma_delimiter_is_rejoined(write):
+    text = "time [s],force [kN],gauge [mm]\n0,5,1,25,0,01\n1,5,-2,25,0,02\n"
+    table, meta = read_table(write("c.csv", text))
+    np.testing.assert_allclose(table["time"], [0.5, 1.5])
+    np.testing.assert_allclose(table["force"], [1250.0, -2250.0])
+    np.testing.assert_allclose(table["gauge_1"], [1e-5, 2e-5])
+    assert meta.decimal == "," and "rejoined" in meta.warnings[0]
+
+
+def test_unsplittable_pairs(write):
+    text = "time [s],force [kN],gauge [mm]\n0,5,1,25,0,01\n1,5,2,-25,0,02\n"
+    with pytest.raises(LayoutError, match="cannot be split") as caught:
+        read_table(write("c.csv", text))
+    assert (caught.value.row, caught.value.column) == (3, "force")
+
+
+def test_mixed_decimal_mark(write):
+    with pytest.raises(ValueParseError, match="'1.784'") as caught:
+        read_table(write("m.csv", POLISH.replace("1,784", "1.784")))
+    assert (caught.value.row, caught.value.column) == (3, "siła")
+    assert "decimal mark" in caught.value.hint

@@ -1,0 +1,62 @@
+"""Machine export: preamble, names row, units row (Instron Bluehill style)."""
+
+import numpy as np
+import pytest
+
+from pipeline.errors import ColumnError
+from pipeline.ingest import read_table
+from pipeline.ingest.machine_export import parse_preamble
+
+BLUEHILL = (
+    'Text Inputs : Specimen label,"22L.3"\r\n'
+    "General : Start Date,13/11/2018 5:14 PM\r\n"
+    "\r\n"
+    "Time,Extension,Load,Segment ID,Total Cycle Count\r\n"
+    "(sec),(mm),(N),,\r\n"
+    "0.00000,-2.04726,-4.31900,22476,0\r\n"
+    "0.02000,-2.04730,-4.37385,22476,0\r\n"
+    "0.04000,-2.04800,-4.49085,22476,1\r\n"
+)
+
+
+def test_bluehill_layout(write):
+    table, meta = read_table(write("b.csv", BLUEHILL))
+    assert meta.layout == "machine_export"
+    assert list(table.columns) == ["time", "force", "gauge_1", "cycle_count"]
+    np.testing.assert_allclose(table["gauge_1"], [-2.04726e-3, -2.0473e-3, -2.048e-3])
+    np.testing.assert_allclose(table["cycle_count"], [0, 0, 1])
+    assert meta.preamble == {"Specimen label": "22L.3", "Start Date": "13/11/2018 5:14 PM"}
+    assert (meta.header_line, meta.first_data_line) == (4, 6)
+    units = {c.name: (c.role, c.unit) for c in meta.columns}
+    assert units["Segment ID"] == (None, None) and units["Time"] == ("time", "sec")
+
+
+def test_units_row_in_brackets_and_kn(write):
+    text = "Machine: Amsler 50 t\nZeit;Kraft;Weg\n[s];[kN];[mm]\n0,0;1,0;0,1\n1,0;2,0;0,2\n"
+    table, meta = read_table(write("a.csv", text))
+    assert meta.layout == "machine_export" and meta.preamble == {"Machine": "Amsler 50 t"}
+    np.testing.assert_allclose(table["force"], [1000.0, 2000.0])
+
+
+def test_run_sheet_columns_pick_among_candidates(write):
+    text = BLUEHILL.replace("Segment ID", "Load 2")
+    with pytest.raises(ColumnError, match="could be the force"):
+        read_table(write("b.csv", text))
+    table, meta = read_table(write("b.csv", text), columns={"force": "load"})
+    np.testing.assert_allclose(table["force"], [-4.319, -4.37385, -4.49085])
+    assert meta.columns[3].role is None
+
+
+@pytest.mark.parametrize(
+    ("lines", "expected"),
+    [
+        (["Text Inputs : Specimen label,\"22L.3\""], {"Specimen label": "22L.3"}),
+        (['"Operator","J. Kowalski"'], {"Operator": "J. Kowalski"}),
+        (["Rate: 5 mm/min"], {"Rate": "5 mm/min"}),
+        (["Points: \t51"], {"Points": "51"}),
+        (["Title only", "Title only"], {"Title only": "", "Title only (2)": ""}),
+    ],
+)
+def test_parse_preamble(lines, expected):
+    delimiter = "\t" if "\t" in lines[0] else ","
+    assert parse_preamble(lines, delimiter) == expected

@@ -1,0 +1,53 @@
+"""MTS TestWare cyclic-acquisition exports: repeating block headers."""
+
+import numpy as np
+import pytest
+
+from pipeline.errors import LayoutError, ValueParseError
+from pipeline.ingest import read_table
+from pipeline.units import STANDARD_GRAVITY
+
+
+def mts(blocks: int = 3, points: int = 4, names: str = "Tiempo\tFuerza\tDesplazamiento\tRecuento",
+        bad: str | None = None) -> str:
+    lines = ["MTS***|MPT|**|*|*", ""]
+    for block in range(blocks):
+        lines += [f"Adquisición cíclica\t\t\tTiempo\t{10 * block},0\tSec",
+                  f"Parado en: \t{100 * (block + 1)}\tcycle", f"Puntos: \t{points}",
+                  names, "Sec\tkgf\tmm\tcycles"]
+        for point in range(points):
+            time = f"{10 * block + point / 100:.2f}".replace(".", ",")
+            lines.append(f"{time}\t{point},5\t-0,{point}1\t{100 * (block + 1) - 1}")
+        lines.append("")
+    if bad:
+        lines[9] = bad
+    return "\r\n".join(lines[:-1])
+
+
+def test_blocks_are_joined(write):
+    table, meta = read_table(write("m.dat", mts(), "latin-1"))
+    assert meta.layout == "mts" and meta.encoding == "latin-1" and meta.decimal == ","
+    assert meta.preamble["blocks"] == "3" and meta.preamble["Puntos"] == "4"
+    assert len(table) == 12
+    np.testing.assert_allclose(table["force"][:2], [0.5 * STANDARD_GRAVITY, 1.5 * STANDARD_GRAVITY])
+    np.testing.assert_allclose(table["time"][4:6], [10.0, 10.01])
+    assert meta.time_gaps == 2 and "first before line 18" in meta.warnings[0]
+
+
+def test_line_numbers_refer_to_the_file(write):
+    with pytest.raises(ValueParseError) as caught:
+        read_table(write("m.dat", mts(bad="0,02\tx\t-0,21\t99"), "latin-1"))
+    assert (caught.value.row, caught.value.column) == (10, "Fuerza")
+
+
+def test_block_naming_other_columns(write):
+    text = mts().replace("Desplazamiento", "Deformación", 2).replace("Deformación",
+                                                                     "Desplazamiento", 1)
+    with pytest.raises(LayoutError, match="other columns") as caught:
+        read_table(write("m.dat", text, "latin-1"))
+    assert caught.value.row == 16
+
+
+def test_truncated_last_point(write):
+    table, meta = read_table(write("m.dat", mts() + "\r\n30,05\t1,", "latin-1"))
+    assert len(table) == 12 and "line 32 is truncated" in meta.warnings[0]

@@ -1,0 +1,58 @@
+"""Column names per language -> roles; units in header cells."""
+
+import pytest
+
+from pipeline.ingest.names import COLUMN_NAMES, fold, match_role, split_name_unit
+
+
+@pytest.mark.parametrize(
+    ("name", "role"),
+    [
+        ("Time", "time"), ("Zeit", "time"), ("czas", "time"), ("Tiempo", "time"),
+        ("Load", "force"), ("Standardkraft", "force"), ("siła", "force"),
+        ("OBCIĄŻENIE", "force"), ("obciazenie", "force"), ("Channel 1 Force", "force"),
+        ("Axial Fuerza", "force"), ("Machine_Load", "force"),
+        ("Extension", "gauge"), ("Weg", "gauge"), ("Dehnung", "gauge"),
+        ("wydłużenie 2", "gauge"), ("przemieszczenie", "gauge"), ("gauge1", "gauge"),
+        ("Ext2", "gauge"), ("Axial Desplazamiento", "gauge"),
+        ("Winkel", "angle"), ("kąt", "angle"), ("encoder", "angle"),
+        ("Total Cycle Count", "cycle_count"), ("Zyklus", "cycle_count"),
+        ("cykl", "cycle_count"), ("Channel 1 Recuento", "cycle_count"),
+        ("Machine_N_cycles", "cycle_count"),
+        ("Cycle time", "time"), ("Load test/Time", "time"), ("Rig/Branch tension", "force"),
+        ("Segment ID", None), ("exx--1", None), ("", None),
+    ],
+)
+def test_match_role(name, role):
+    assert match_role(name) == role
+
+
+def test_every_listed_name_matches_its_own_role():
+    for language in COLUMN_NAMES.values():
+        for role, words in language.items():
+            for word in words:
+                assert match_role(word) == role, (word, role)
+
+
+@pytest.mark.parametrize(
+    ("cell", "expected"),
+    [
+        ("force [kN]", ("force", "kN")),
+        ("Load (N)", ("Load", "N")),
+        ("  gauge1 [ mm ] ", ("gauge1", "mm")),
+        ("\ufefftime [s]", ("time", "s")),
+        ("Time", ("Time", None)),
+        ("(sec)", ("(sec)", None)),
+        ("wydłużenie [µm]", ("wydłużenie", "µm")),
+        ("Kraft / kN", ("Kraft", "kN")),
+        ("F/kN", ("F", "kN")),
+        ("Speed/mm/s", ("Speed/mm/s", None)),
+        ("Rig/Branch tension", ("Rig/Branch tension", None)),
+    ],
+)
+def test_split_name_unit(cell, expected):
+    assert split_name_unit(cell) == expected
+
+
+def test_fold_drops_case_and_diacritics():
+    assert fold("SIŁA Ąę Straße") == "sila ae strasse"

@@ -1,0 +1,91 @@
+"""Plain CSV: one header row with units, ',' delimiter, '.' decimal mark."""
+
+import numpy as np
+import pytest
+
+from pipeline.errors import LayoutError, ValueParseError
+from pipeline.ingest import read_table
+
+PLAIN = (
+    "time [s],force [kN],gauge1 [mm],gauge2 [mm]\n"
+    "0.0,0.10,0.000,0.001\n"
+    "0.1,0.20,0.010,0.011\n"
+    "0.2,0.30,0.020,0.021\n"
+)
+
+
+def test_reads_roles_and_si_units(write):
+    table, meta = read_table(write("t.csv", PLAIN))
+    assert list(table.columns) == ["time", "force", "gauge_1", "gauge_2"]
+    np.testing.assert_allclose(table["force"], [100.0, 200.0, 300.0])
+    np.testing.assert_allclose(table["gauge_2"], [1e-6, 1.1e-5, 2.1e-5])
+    assert (meta.layout, meta.delimiter, meta.decimal, meta.rows) == ("plain_csv", ",", ".", 3)
+    assert [(c.name, c.role, c.unit, c.si_unit) for c in meta.columns] == [
+        ("time", "time", "s", "s"), ("force", "force", "kN", "N"),
+        ("gauge1", "gauge_1", "mm", "m"), ("gauge2", "gauge_2", "mm", "m"),
+    ]
+    assert (meta.header_line, meta.first_data_line, meta.warnings) == (1, 2, [])
+    assert table["force"].dtype == np.float64
+
+
+def test_parenthesised_units_crlf_and_cr(write):
+    text = PLAIN.replace("[", "(").replace("]", ")")
+    for newline in ("\r\n", "\r"):
+        table, _ = read_table(write("t.csv", text.replace("\n", newline)))
+        np.testing.assert_allclose(table["time"], [0.0, 0.1, 0.2])
+
+
+def test_tab_and_pipe_delimiters(write):
+    for delimiter in ("\t", "|"):
+        table, meta = read_table(write("t.csv", PLAIN.replace(",", delimiter)))
+        assert meta.delimiter == delimiter and meta.layout == "plain_csv"
+        assert table.shape == (3, 4)
+
+
+def test_quoted_cells_missing_tokens_and_trailing_delimiter(write):
+    text = ('"time [s]","force [kN]","gauge [mm]",\n'
+            '"0.0","0.1","0.0",\n"0.1",N/A,"0.01",\n"0.2",,0.02,\n')
+    table, meta = read_table(write("t.csv", text))
+    assert list(table.columns) == ["time", "force", "gauge_1"]
+    assert np.isnan(table["force"][1:]).all()
+    assert any("empty column" in warning and "column 4" in warning for warning in meta.warnings)
+
+
+def test_blank_lines_inside_the_table_and_line_numbers(write):
+    text = "time [s],force [kN],gauge [mm]\n0.0,1,0\n\n0.1,x,0\n"
+    with pytest.raises(ValueParseError) as caught:
+        read_table(write("t.csv", text))
+    assert (caught.value.row, caught.value.column) == (4, "force")
+    table, meta = read_table(write("t.csv", text.replace("x", "")))
+    assert len(table) == 2 and "from line 4" in meta.warnings[0]
+
+
+def test_text_column_is_kept_out(write):
+    text = "date,force [kN],gauge [mm]\n2021-01-01,1.5,0.1\n2021-01-02,1.6,0.2\n"
+    table, meta = read_table(write("t.csv", text))
+    assert list(table.columns) == ["force", "gauge_1"]
+    assert meta.columns[0].role is None
+
+
+def test_short_row_in_the_middle(write):
+    with pytest.raises(LayoutError, match="2 fields where the data rows have 3") as caught:
+        read_table(write("t.csv", "time [s],force [kN],gauge [mm]\n0,1,2\n0,1\n0,1,2\n"))
+    assert caught.value.row == 3
+
+
+def test_truncated_last_line_is_dropped_with_a_warning(write):
+    table, meta = read_table(write("t.csv", PLAIN + "0.3,0.4"))
+    assert len(table) == 3
+    assert meta.warnings == ["line 5 is truncated (a half-written last row): dropped"]
+    table, meta = read_table(write("t.csv", PLAIN + "0.3,0.4,0.03,"))
+    assert len(table) == 3 and "truncated" in meta.warnings[0]
+
+
+def test_complete_last_line_without_line_end_is_kept(write):
+    table, meta = read_table(write("t.csv", PLAIN + "0.3,0.40,0.030,0.031"))
+    assert len(table) == 4 and meta.warnings == []
+
+
+def test_forced_layout(write):
+    _, meta = read_table(write("t.csv", PLAIN), format="plain_csv")
+    assert meta.layout == "plain_csv"

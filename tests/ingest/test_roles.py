@@ -1,0 +1,42 @@
+"""Role candidates from the run sheet, names and units."""
+
+import pytest
+
+from pipeline.errors import ColumnError
+from pipeline.ingest.roles import find_candidates
+
+
+def candidates(names, units=None, columns=None):
+    units = units or [None] * len(names)
+    return find_candidates(names, units, columns, file="f.csv", header_line=1)
+
+
+def test_automatic_roles_in_file_order():
+    found = candidates(["Zeit", "Weg 2", "Kraft", "Weg 1", "Status"])
+    assert found.roles == {"time": [0], "gauge": [1, 3], "force": [2]}
+    assert found.explicit == frozenset() and found.indexes() == {0, 1, 2, 3}
+
+
+def test_unit_gives_the_role_of_an_unknown_name():
+    assert candidates(["A", "B"], ["s", "kN"]).roles == {"time": [0], "force": [1]}
+
+
+def test_explicit_roles_exclude_their_columns_from_automatic_matching():
+    found = candidates(["Load", "Load 2", "Time"], columns={"force": "load 2"})
+    assert found.roles == {"force": [1], "time": [2]}
+    assert found.explicit == frozenset({"force"})
+
+
+def test_group_channel_names():
+    found = candidates(["Rig/Force", "Rig/Time"], columns={"force": "Force"})
+    assert found.roles == {"force": [0], "time": [1]}
+
+
+@pytest.mark.parametrize(
+    ("columns", "message"),
+    [({"force": "Kraft"}, "no column 'Kraft'"), ({"force": "Load"}, "appears 2 times"),
+     ({"strain": "Load"}, "unknown role")],
+)
+def test_run_sheet_errors(columns, message):
+    with pytest.raises(ColumnError, match=message):
+        candidates(["Load", "Load", "Time"], columns=columns)

@@ -1,0 +1,132 @@
+"""Sniffing: encoding, dialect and the table's place in the head."""
+
+import codecs
+
+import pytest
+
+from pipeline.errors import EmptyFileError, EncodingError, LayoutError
+from pipeline.ingest.sniff import (
+    HEAD_BYTES,
+    detect_dialect,
+    find_table,
+    is_number,
+    read_head,
+)
+
+POLISH = "czas [s];siła [kN];wydłużenie [mm]\r\n0,0;1,5;0,01\r\n0,1;1,6;0,02\r\n"
+SPANISH = "Tiempo\tFuerza\tDesplazamiento\r\nSec\tkgf\tmm\r\n0,0\t1,5\t0,01\r\n0,1\t1,6\t0,02\r\n"
+
+
+@pytest.mark.parametrize(
+    ("text", "encoding", "expected"),
+    [
+        (POLISH, "cp1250", "cp1250"),
+        (SPANISH.replace("Fuerza", "Fuerza señal"), "latin-1", "latin-1"),
+        (POLISH, "utf-8", "utf-8"),
+        (POLISH, "utf-8-sig", "utf-8-sig"),
+        (POLISH, "utf-16", "utf-16"),
+        (POLISH, "utf-16-le", "utf-16-le"),
+    ],
+)
+def test_encoding(write, text, encoding, expected):
+    head = read_head(write("f.csv", text, encoding))
+    assert head.encoding == expected
+    assert head.lines[0] == text.splitlines()[0]
+
+
+def test_offsets_are_bytes_of_line_starts(write):
+    path = write("f.csv", POLISH, "utf-16")
+    head = read_head(path)
+    raw = path.read_bytes()
+    assert raw[head.offsets[1] : head.offsets[2]].decode("utf-16-le") == "0,0;1,5;0,01\r\n"
+
+
+def test_long_file_head_drops_the_cut_line(write):
+    line = "1.5,2.5,3.5\n"
+    header = "a [s],b [kN],c [mm]\n"
+    head = read_head(write("f.csv", header + line * (HEAD_BYTES // len(line) + 50)))
+    assert not head.complete
+    assert all(text in ("1.5,2.5,3.5",) for text in head.lines[1:])
+    assert head.offsets[-1] % len(line) == len(header) % len(line)
+
+
+def test_binary_file(write):
+    with pytest.raises(EncodingError, match="binary"):
+        read_head(write("f.csv", b"\x00\x01\x02\x03" * 100))
+
+
+def test_bom_contradicted(write):
+    with pytest.raises(EncodingError, match="byte-order mark") as caught:
+        read_head(write("f.csv", codecs.BOM_UTF8 + POLISH.encode("cp1250")))
+    assert caught.value.row == 1
+
+
+@pytest.mark.parametrize(("content", "message"), [(b"", "empty"), (b"\r\n \n", "blank")])
+def test_empty(write, content, message):
+    with pytest.raises(EmptyFileError, match=message):
+        read_head(write("f.csv", content))
+
+
+@pytest.mark.parametrize(
+    ("lines", "dialect"),
+    [
+        (["t,f", "0.5,1.5", "1.5,2.5"], (",", ".", 2)),
+        (["t;f", "0,5;1,5", "1,5;2,5"], (";", ",", 2)),
+        (["t\tf", "0,5\t1,5"], ("\t", ",", 2)),
+        (["t\tf", "0.5\t1.5"], ("\t", ".", 2)),
+        (['"t","f"', '"0,5","1,5"'], (",", ",", 2)),
+        (["t|f|g", "1|2|3"], ("|", ".", 3)),
+        (["date,f,g", "2021-01-01,1.5,2.5", "2021-01-02,1.5,2.5"], (",", ".", 3)),
+        (["t,f", "0,5,1,5", "1,5,2,5"], (",", ".", 4)),
+    ],
+)
+def test_dialect(lines, dialect, tmp_path):
+    assert detect_dialect(lines, tmp_path) == dialect
+
+
+def test_header_only_is_empty(tmp_path):
+    with pytest.raises(EmptyFileError, match="no data rows"):
+        detect_dialect(["Machine : Amsler", "", "time [s],force [kN]"], tmp_path)
+    with pytest.raises(EmptyFileError, match="no data rows"):
+        detect_dialect(["Points: 51", "Cycles: 3 5", "end"], tmp_path)
+
+
+def test_no_numbers_is_layout_error(tmp_path):
+    with pytest.raises(LayoutError, match="no table of numbers"):
+        detect_dialect(["a,b,c,1,2", "d,e,f,3,4"], tmp_path)
+
+
+def test_find_machine_export(tmp_path):
+    lines = ["Text Inputs : Specimen label,\"22L.3\"", "General : Start Date,13/11/2018", "",
+             "Time,Extension,Load,Segment ID,Total Cycle Count", "(sec),(mm),(N),,",
+             "0.0,-2.0,-4.3,22476,0", "0.1,-2.1,-4.4,22476,0"]
+    spec = find_table(lines, tmp_path, ",", ".", 5)
+    assert (spec.header_index, spec.units_index, spec.data_index) == (3, 4, 5)
+    assert spec.units == ["sec", "mm", "N", None, None]
+    assert spec.preamble == lines[:2]
+
+
+def test_find_plain_table_with_bad_first_row(tmp_path):
+    spec = find_table(["t [s],f [kN]", "0.0,abc", "0.1,2.0", "0.2,3.0"], tmp_path, ",", ".", 2)
+    assert (spec.header_index, spec.data_index) == (0, 1)
+
+
+def test_trailing_delimiter_pads_names(tmp_path):
+    spec = find_table(["t [s],f [kN]", "0.0,1.0,", "0.1,2.0,"], tmp_path, ",", ".", 3)
+    assert spec.names == ["t [s]", "f [kN]", ""]
+
+
+def test_names_row_too_wide(tmp_path):
+    with pytest.raises(LayoutError, match="names row has 3 fields") as caught:
+        find_table(["a,b,c", "1.0,2.0", "1.0,2.0"], tmp_path, ",", ".", 2)
+    assert caught.value.row == 1
+
+
+@pytest.mark.parametrize(
+    ("text", "decimal", "expected"),
+    [("1.5", ".", True), ("-1,5e-3", ",", True), (" 2 ", ".", True), (".5", ".", True),
+     ("1,5", ".", False), ("1.5", ",", False), ("abc", ".", False), ("inf", ".", True),
+     ("1.0.0", ".", False), ("", ".", False)],
+)
+def test_is_number(text, decimal, expected):
+    assert is_number(text, decimal) is expected

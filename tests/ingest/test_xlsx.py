@@ -1,0 +1,76 @@
+"""``.xlsx`` workbooks: first or named sheet, table anywhere on the sheet."""
+
+import numpy as np
+import openpyxl
+import pytest
+
+from pipeline.errors import EmptyFileError, LayoutError, ValueParseError
+from pipeline.ingest import read_table
+
+
+@pytest.fixture
+def workbook(tmp_path):
+    """Write sheets (name -> rows, placed from the cell given) to a workbook; return its path."""
+
+    def _workbook(sheets: dict, origin=(1, 1), name="w.xlsx"):
+        book = openpyxl.Workbook()
+        book.remove(book.active)
+        for title, rows in sheets.items():
+            sheet = book.create_sheet(title)
+            for r, row in enumerate(rows):
+                for c, value in enumerate(row):
+                    if value is not None:
+                        sheet.cell(origin[0] + r, origin[1] + c, value)
+        path = tmp_path / name
+        book.save(path)
+        return path
+
+    return _workbook
+
+
+ROWS = [["time [s]", "force [kN]", "gauge [mm]"], [0.0, 1.5, 0.1], [0.1, 2.5, 0.2]]
+
+
+def test_first_sheet(workbook):
+    table, meta = read_table(workbook({"Data": ROWS, "Other": [["x"]]}))
+    assert (meta.layout, meta.sheet, meta.header_line, meta.first_data_line) == (
+        "xlsx", "Data", 1, 2)
+    np.testing.assert_allclose(table["force"], [1500.0, 2500.0])
+
+
+def test_named_sheet_offset_table_with_preamble_and_units_row(workbook):
+    rows = [["Specimen", "18-A"], [], ["Zeit", "Kraft", "Weg"], ["s", "kN", "mm"],
+            [0.0, "1,5", 0.1], [None, None, None], [0.1, 2.5, 0.2]]
+    table, meta = read_table(workbook({"Cover": [["x"]], "Run 1": rows}, origin=(3, 2)),
+                             sheet="Run 1")
+    np.testing.assert_allclose(table["force"], [1500.0, 2500.0])
+    assert meta.preamble == {"Specimen": "18-A"} and meta.first_data_line == 7
+    assert meta.columns[0].unit == "s"
+
+
+def test_empty_sheet(workbook):
+    with pytest.raises(EmptyFileError, match="sheet 'Empty' is empty"):
+        read_table(workbook({"Empty": []}))
+
+
+def test_missing_sheet_lists_sheets(workbook):
+    with pytest.raises(LayoutError, match="no sheet 'Run 2'") as caught:
+        read_table(workbook({"Run 1": ROWS}), sheet="Run 2")
+    assert "'Run 1'" in caught.value.hint
+
+
+def test_non_numeric_cell_gives_sheet_row(workbook):
+    rows = [*ROWS, [0.2, "broken", 0.3]]
+    with pytest.raises(ValueParseError) as caught:
+        read_table(workbook({"Data": rows}))
+    assert (caught.value.row, caught.value.column) == (4, "force")
+
+
+def test_header_only_sheet(workbook):
+    with pytest.raises(EmptyFileError):
+        read_table(workbook({"Data": ROWS[:1]}))
+
+
+def test_broken_workbook(write):
+    with pytest.raises(LayoutError, match="not a readable .xlsx"):
+        read_table(write("w.xlsx", b"PK\x03\x04 this is not a zip file"))
