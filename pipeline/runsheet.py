@@ -47,6 +47,15 @@ class CampaignInfo(_Strict):
     machine: str = ""
     synthetic: bool = False  #: data made by the virtual test bench, not a machine
     note: str = ""
+    #: the lab's band for (E0_exp - E0_theory) / E0_theory [%] (Paper 001: 3 to 6 %)
+    discrepancy_band_pct: tuple[float, float] = (3.0, 6.0)
+
+    @model_validator(mode="after")
+    def _ordered_band(self) -> CampaignInfo:
+        low, high = self.discrepancy_band_pct
+        if not low < high:
+            raise ValueError("discrepancy_band_pct must be [low, high] with low < high")
+        return self
 
 
 class ChainDef(_Strict):

@@ -5,6 +5,8 @@ from __future__ import annotations
 import typer
 
 from pipeline import __version__
+from pipeline.cli import inspect, run
+from pipeline.cli.simulate import simulate_app
 from pipeline.cli.theory import theory_app
 
 app = typer.Typer(
@@ -13,6 +15,10 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
 )
 app.add_typer(theory_app, name="theory")
+app.command("inspect")(inspect.command)
+app.command("run")(run.run_command)
+app.command("validate")(run.validate_command)
+app.add_typer(simulate_app, name="simulate")
 
 
 @app.callback()

@@ -1,16 +1,16 @@
 """``chainbench simulate ...``: synthetic campaigns from the virtual test benches.
 
-``chainbench simulate tensile`` writes the logs of a tensile campaign (one file
-per specimen, in any layout and units the readers accept), its run sheet
-``campaign.toml`` and ``truth.json``, the true values each log was made from.
+``chainbench simulate tensile`` and ``chainbench simulate engagement`` write the
+logs of a campaign (one file per run, in any layout and units the readers
+accept), its run sheet ``campaign.toml`` and ``truth.json``, the true values each
+log was made from (:mod:`pipeline.simulate.campaign`). ``chainbench simulate
+demo`` (re)writes the demo campaigns of ``raw/`` (:mod:`pipeline.simulate.demo`).
+The commands only parse options.
 """
 
 from __future__ import annotations
 
-import json
 import math
-import re
-from dataclasses import asdict
 from enum import StrEnum
 from pathlib import Path
 from typing import Annotated
@@ -18,22 +18,23 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from pipeline import catalog
 from pipeline.cli._options import MultiValueCommand
 from pipeline.cli._output import emit
-from pipeline.simulate.engagement import (
-    EngagementSettings,
-    simulate_engagement,
-    write_engagement_csv,
-    write_engagement_tdms,
+from pipeline.simulate.campaign import (
+    CampaignSpec,
+    EngagementRunSpec,
+    TensileRunSpec,
+    engagement_settings,
+    write_engagement_campaign,
+    write_tensile_campaign,
 )
+from pipeline.simulate.demo import DEMOS
 from pipeline.simulate.export import (
     FORCE_UNITS,
     LENGTH_UNITS,
     SUFFIXES,
-    write_table,
 )
-from pipeline.simulate.tensile import TensileTruth, simulate_tensile
+from pipeline.simulate.tensile import TensileTruth
 from pipeline.units import from_si, to_si
 
 simulate_app = typer.Typer(
@@ -64,33 +65,17 @@ def _choice(value: str, allowed: tuple[str, ...], option: str) -> str:
     return value
 
 
-def _run_sheet(campaign: str, chain: str, runs: list[dict]) -> str:
-    """Text of a ``campaign.toml`` for the simulated tensile runs."""
-    key = "c" + chain.replace(".", "_")
-    lines = [
-        "# Written by `chainbench simulate tensile`: a synthetic campaign with known truth",
-        "# (see truth.json beside this file).",
-        "[campaign]",
-        f"id = {json.dumps(campaign)}",
-        f"title = {json.dumps(f'Virtual tensile bench, chain {chain}')}",
-        'machine = "chainbench virtual tensile bench"',
-        "",
-        f"[chains.{key}]",
-        f"catalog = {json.dumps(chain)}",
-    ]
-    for run in runs:
-        lines += [
-            "",
-            "[[runs]]",
-            f"id = {json.dumps(run['id'])}",
-            'kind = "tensile"',
-            f"file = {json.dumps(run['file'])}",
-            f"chain = {json.dumps(key)}",
-            f"specimen = {json.dumps(run['specimen'])}",
-            f"gauge_length_mm = {run['gauge_length_mm']:g}",
-            f"cycles = {run['cycles']}",
-        ]
-    return "\n".join(lines) + "\n"
+def _campaign(campaign: str, title: str, command: str, seed: int) -> CampaignSpec:
+    """The ``[campaign]`` table of a simulated campaign, or a bad ``--campaign``."""
+    try:
+        return CampaignSpec(
+            id=campaign, title=title, machine=f"chainbench virtual {command} bench",
+            note=f"Synthetic data written by `chainbench simulate {command} --seed {seed}`: "
+                 "the virtual test bench, not a testing machine.")
+    except ValueError:
+        raise typer.BadParameter(
+            "use letters, digits, '.', '_' and '-' only", param_hint="--campaign"
+        ) from None
 
 
 @simulate_app.command("tensile")
@@ -148,10 +133,7 @@ def tensile(
     """Write the logs of a simulated tensile campaign with known truth."""
     _choice(force_unit, FORCE_UNITS, "--force-unit")
     _choice(length_unit, LENGTH_UNITS, "--length-unit")
-    if not re.fullmatch(r"[A-Za-z0-9._-]+", campaign):
-        raise typer.BadParameter(
-            "use letters, digits, '.', '_' and '-' only", param_hint="--campaign"
-        )
+    spec = _campaign(campaign, f"Virtual tensile bench, chain {chain}", "tensile", seed)
     rng = np.random.default_rng(seed)
     try:
         base = TensileTruth.for_chain(
@@ -165,62 +147,24 @@ def tensile(
         )
     except (KeyError, ValueError) as error:
         raise typer.BadParameter(str(error).strip("'\"")) from None
-    out.mkdir(parents=True, exist_ok=True)
-    runs, truths = [], {}
+    runs = []
     prefix = "T" + chain.split("x")[0]
     for number in range(1, specimens + 1):
         truth = base.with_(E0=base.E0 * (1.0 + specimen_scatter * rng.standard_normal()))
-        run_seed = int(rng.integers(2**31))
         run_id = f"{prefix}-{number}"
-        file = run_id + SUFFIXES[layout]
-        write_table(
-            simulate_tensile(truth, run_seed),
-            out / file,
-            layout=layout,
-            force_unit=force_unit,
-            length_unit=length_unit,
-            language=language,
-            encoding=encoding,
-            preamble=[
-                ("Text Inputs", f'Specimen label,"{run_id}"'),
-                ("General", 'Machine,"chainbench virtual tensile bench"'),
-            ],
-        )
-        runs.append(
-            {
-                "id": run_id,
-                "file": file,
-                "specimen": f"{chain}-{number}",
-                "gauge_length_mm": gauge_length_mm,
-                "cycles": cycles,
-                "E0_kN": from_si(truth.E0, "kN"),
-            }
-        )
-        truths[run_id] = {
-            "seed": run_seed,
-            "truth": asdict(truth),
-            "permanent_set_m": [truth.permanent_set(k) for k in range(1, cycles + 1)],
-            "hysteresis_energy_J": [truth.hysteresis_energy(k) for k in range(1, cycles + 1)],
-        }
-    (out / "campaign.toml").write_text(_run_sheet(campaign, chain, runs), encoding="utf-8")
-    document = {
-        "chain": chain,
-        "layout": str(layout),
-        "force_unit": force_unit,
-        "length_unit": length_unit,
-        "seed": seed,
-        "runs": truths,
-    }
-    (out / "truth.json").write_text(json.dumps(document, indent=2) + "\n", encoding="utf-8")
+        runs.append(TensileRunSpec(
+            id=run_id, chain=chain, specimen=f"{chain}-{number}", truth=truth,
+            seed=int(rng.integers(2**31)), file=run_id + SUFFIXES[layout], layout=str(layout),
+            force_unit=force_unit, length_unit=length_unit, language=str(language),
+            encoding=encoding, preamble=(("Text Inputs", f'Specimen label,"{run_id}"'),
+                                         ("General", f'Machine,"{spec.machine}"')),
+        ))
+    sheet = write_tensile_campaign(out, runs, spec)
     emit(
-        [{key: run[key] for key in ("id", "file", "E0_kN")} for run in runs],
+        [{"id": run.id, "file": run.file, "E0_kN": from_si(run.truth.E0, "kN")} for run in runs],
         title=f"Simulated tensile campaign in {out}",
         as_json=as_json,
-        extra={
-            "out": str(out),
-            "run_sheet": str(out / "campaign.toml"),
-            "truth": str(out / "truth.json"),
-        },
+        extra={"out": str(out), "run_sheet": str(sheet), "truth": str(out / "truth.json")},
         digits=6,
     )
 
@@ -230,39 +174,6 @@ class EngagementFormat(StrEnum):
 
     csv = "csv"
     tdms = "tdms"
-
-
-def _engagement_sheet(campaign: str, chain: str, wheels: dict[str, tuple[int, float]],
-                      runs: list[dict]) -> str:
-    """Text of a ``campaign.toml`` for the simulated engagement runs."""
-    key = "c" + chain.replace(".", "_")
-    lines = [
-        "# Written by `chainbench simulate engagement`: a synthetic campaign with known truth",
-        "# (see truth.json beside this file).",
-        "[campaign]",
-        f"id = {json.dumps(campaign)}",
-        f"title = {json.dumps(f'Virtual engagement bench, chain {chain}')}",
-        'machine = "chainbench virtual engagement bench"',
-        "",
-        f"[chains.{key}]",
-        f"catalog = {json.dumps(chain)}",
-    ]
-    for wheel, (teeth, apex_deg) in wheels.items():
-        lines += ["", f"[wheels.{wheel}]", f"teeth = {teeth}", f"apex_angle_deg = {apex_deg:g}"]
-    for run in runs:
-        lines += [
-            "",
-            "[[runs]]",
-            f"id = {json.dumps(run['id'])}",
-            'kind = "engagement"',
-            f"file = {json.dumps(run['file'])}",
-            f"chain = {json.dumps(key)}",
-            f"wheel = {json.dumps(run['wheel'])}",
-            f"branch_length_m = {run['branch_length_m']:g}",
-            f"omega_per_s = {run['omega_per_s']:g}",
-            f"E0_N = {run['E0_N']:.6g}",
-        ]
-    return "\n".join(lines) + "\n"
 
 
 @simulate_app.command("engagement", cls=MultiValueCommand)
@@ -331,55 +242,61 @@ def engagement(
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
 ) -> None:
     """Write the logs of a simulated engagement campaign with known truth (Paper 000)."""
-    if not re.fullmatch(r"[A-Za-z0-9._-]+", campaign):
-        raise typer.BadParameter(
-            "use letters, digits, '.', '_' and '-' only", param_hint="--campaign"
-        )
-    try:
-        spec = catalog.chain(chain)
-        geometry = {"t": spec["t"], "d": spec["d"], "mass_per_length": spec["mass_per_length"]}
-    except KeyError as error:
-        raise typer.BadParameter(str(error).strip("'\""), param_hint="--chain") from None
+    spec = _campaign(campaign, f"Virtual engagement bench, chain {chain}", "engagement", seed)
     rng = np.random.default_rng(seed)
-    wheels = {f"w{z}_{a:g}".replace(".", "p"): (z, a)
-              for z in teeth or [8] for a in apex_deg or [40.0]}
-    runs, truths, writers = [], {}, {"csv": write_engagement_csv, "tdms": write_engagement_tdms}
-    out.mkdir(parents=True, exist_ok=True)
-    for wheel, (z, apex) in wheels.items():
-        for speed in omega or [20.0]:
-            try:
-                settings = EngagementSettings(
-                    z=z, psi=math.radians(apex), omega=speed, E0=to_si(e0_kn, "kN"),
-                    branch_length=branch_length, k=k, pretension=to_si(pretension_kn, "kN"),
-                    polygon_amplitude=to_si(polygon_kn, "kN"), damping_ratio=damping,
-                    natural_frequency=(None if natural_frequency_hz is None
-                                       else 2 * math.pi * natural_frequency_hz),
-                    sample_rate=sample_rate, duration=duration, snr=snr,
-                    jitter=jitter_ms / 1000, amplitude_scatter=amplitude_scatter,
-                    with_angle=angle, clip_level=None if clip_kn is None else to_si(clip_kn, "kN"),
-                    **geometry)
-            except ValueError as error:
-                raise typer.BadParameter(str(error)) from None
-            run_seed = int(rng.integers(2**31))
-            table, truth = simulate_engagement(settings, run_seed)
-            run_id = f"E{z}-{apex:g}-{speed:g}".replace(".", "p")
-            file = f"{run_id}.{file_format}"
-            writers[str(file_format)](table, out / file)
-            runs.append({"id": run_id, "file": file, "wheel": wheel, "branch_length_m":
-                         branch_length, "omega_per_s": speed, "E0_N": settings.E0,
-                         "N_u1": truth["N_u1"], "N_u2": truth["N_u2"]})
-            truths[run_id] = {"seed": run_seed, **{
-                name: value.tolist() if isinstance(value, np.ndarray) else value
-                for name, value in truth.items()}}
-    (out / "campaign.toml").write_text(_engagement_sheet(campaign, chain, wheels, runs),
-                                       encoding="utf-8")
-    document = {"chain": chain, "format": str(file_format), "seed": seed, "runs": truths}
-    (out / "truth.json").write_text(json.dumps(document, indent=2) + "\n", encoding="utf-8")
+    runs = []
+    for z in dict.fromkeys(teeth or [8]):
+        for apex in dict.fromkeys(apex_deg or [40.0]):
+            for speed in dict.fromkeys(omega or [20.0]):
+                try:
+                    settings = engagement_settings(
+                        chain, z=z, psi=math.radians(apex), omega=speed, E0=to_si(e0_kn, "kN"),
+                        branch_length=branch_length, k=k, pretension=to_si(pretension_kn, "kN"),
+                        polygon_amplitude=to_si(polygon_kn, "kN"), damping_ratio=damping,
+                        natural_frequency=(None if natural_frequency_hz is None
+                                           else 2 * math.pi * natural_frequency_hz),
+                        sample_rate=sample_rate, duration=duration, snr=snr,
+                        jitter=jitter_ms / 1000, amplitude_scatter=amplitude_scatter,
+                        with_angle=angle,
+                        clip_level=None if clip_kn is None else to_si(clip_kn, "kN"))
+                except KeyError as error:
+                    raise typer.BadParameter(str(error).strip("'\""),
+                                             param_hint="--chain") from None
+                except ValueError as error:
+                    raise typer.BadParameter(str(error)) from None
+                run_id = f"E{z}-{apex:g}-{speed:g}".replace(".", "p")
+                runs.append(EngagementRunSpec(
+                    id=run_id, chain=chain, settings=settings, seed=int(rng.integers(2**31)),
+                    file=f"{run_id}.{file_format}", format=str(file_format)))
+    sheet = write_engagement_campaign(out, runs, spec)
+    rows = []
+    for run in runs:
+        n_u1, n_u2 = run.settings.impact_tensions()
+        rows.append({"id": run.id, "file": run.file, "omega_per_s": run.settings.omega,
+                     "N_u1": n_u1, "N_u2": n_u2})
     emit(
-        [{key: run[key] for key in ("id", "file", "omega_per_s", "N_u1", "N_u2")} for run in runs],
+        rows,
         title=f"Simulated engagement campaign in {out}",
         as_json=as_json,
-        extra={"out": str(out), "run_sheet": str(out / "campaign.toml"),
-               "truth": str(out / "truth.json")},
+        extra={"out": str(out), "run_sheet": str(sheet), "truth": str(out / "truth.json")},
         digits=6,
     )
+
+
+@simulate_app.command("demo")
+def demo(
+    out: Annotated[
+        Path, typer.Option("--out", help="Folder of the campaigns (raw/ of the project).")
+    ] = Path("raw"),
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
+) -> None:
+    """(Re)write the demo campaigns: stiffness-demo (Paper 001) and engagement-demo (Paper 000)."""
+    rows = []
+    for name, write in DEMOS.items():
+        folder = out / name
+        write(folder)
+        files = sorted(path for path in folder.iterdir() if path.is_file())
+        rows.append({"campaign": name, "folder": str(folder), "files": len(files),
+                     "size_kB": sum(path.stat().st_size for path in files) / 1e3})
+    emit(rows, title=f"Demo campaigns in {out}", as_json=as_json, extra={"out": str(out)},
+         digits=4)

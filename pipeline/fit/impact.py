@@ -483,6 +483,13 @@ def _free_phase_residuals(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray,
     return (sliding_window_view(y, geo.width)[start] - fitted).ravel()
 
 
+def _require_ringing_events(onset1: np.ndarray) -> None:
+    if onset1.size < 2:
+        raise FitError("too few events to fit the branch's ringing",
+                       hint="check the speed and teeth in the run sheet and the force "
+                            "channel, or record a longer log")
+
+
 def _fit_ringing(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: _Geometry,
                 omega_n: float, margin: float) -> tuple[Ringing, np.ndarray, np.ndarray]:
     """Fit omega_n and zeta of the branch on a few events.
@@ -498,6 +505,7 @@ def _fit_ringing(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: _Ge
     def residual_of(omega: float, zeta: float) -> np.ndarray:
         return _free_phase_residuals(y, onset1, onset2, geo, Ringing(omega, zeta))
 
+    _require_ringing_events(onset1)
     grid = omega_n * np.exp(np.linspace(math.log(0.88), math.log(1.14), 9))
     best = float(min(grid, key=lambda w: float(np.sum(residual_of(w, ASSUMED_DAMPING) ** 2))))
     ringing = Ringing(best, ASSUMED_DAMPING)
@@ -507,15 +515,13 @@ def _fit_ringing(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: _Ge
     for second in (False, True):
         fits = _settle(y, onset1, onset2, margin, geo, ringing)
         onset1, onset2, margin = fits.onset1[~fits.moved], fits.onset2[~fits.moved], 0.0
+        _require_ringing_events(onset1)
         if second:
             residual = residual_of(ringing.omega_n, ringing.zeta).reshape(onset1.size, -1)
             rms = np.sqrt(np.mean(residual**2, axis=1))
             kept = rms <= RESIDUAL_OUTLIER * np.median(rms)
             onset1, onset2 = onset1[kept], onset2[kept]
-        if onset1.size < 2:
-            raise FitError("too few events to fit the branch's ringing",
-                           hint="check the speed and teeth in the run sheet and the force "
-                                "channel, or record a longer log")
+        _require_ringing_events(onset1)
         try:
             result = lmfit.minimize(lambda p: residual_of(p["omega_n"].value, p["zeta"].value),
                                     params, method="leastsq")

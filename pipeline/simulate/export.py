@@ -15,7 +15,9 @@ Layouts (``formats.md``, "Tensile-test logs"):
     line, a names row ``Time,Extension 1,Extension 2,Load`` and a units row
     ``(sec),(mm),(mm),(kN)``; CRLF line ends.
 ``xlsx``
-    The plain header and the values (as numbers) on the first sheet.
+    The plain header and the values (as numbers) on the first sheet. The
+    workbook's dates (document properties, zip entries) are :data:`XLSX_DATE`,
+    so the same table always gives the same bytes.
 
 Units are converted with pint (:func:`pipeline.units.from_si`). Numbers are
 written in fixed-point notation with :data:`SIGNIFICANT_DIGITS` significant
@@ -25,13 +27,18 @@ gauge reading of 0.01 mm stays ``0.01`` and no exponent ever appears.
 
 from __future__ import annotations
 
+import io
 import os
 from collections.abc import Sequence
+from datetime import datetime
 from pathlib import Path
+from zipfile import ZIP_DEFLATED, ZipFile, ZipInfo
 
 import numpy as np
 import pandas as pd
 from openpyxl import Workbook
+from openpyxl.xml.constants import ARC_CORE
+from openpyxl.xml.functions import tostring
 
 from pipeline.units import from_si
 
@@ -58,6 +65,9 @@ NAMES = {
 
 #: Default encoding of the European layout per language.
 EUROPEAN_ENCODINGS = {"pl": "cp1250", "de": "latin-1"}
+
+#: Creation and modification date written into workbooks, in place of the clock.
+XLSX_DATE = datetime(2000, 1, 1)
 
 
 def _converted(table: pd.DataFrame, force_unit: str, length_unit: str):
@@ -117,6 +127,26 @@ def _lines(
     for values in columns[1:]:
         rows = np.char.add(np.char.add(rows, delimiter), format_numbers(values, decimal))
     return [delimiter.join(header), *rows.tolist()]
+
+
+def _xlsx_bytes(workbook: Workbook) -> bytes:
+    """The saved `workbook` with :data:`XLSX_DATE` in place of every clock reading.
+
+    openpyxl stamps the time of saving into ``docProps/core.xml`` and into
+    every zip entry; both are replaced, so equal content gives equal bytes.
+    """
+    saved = io.BytesIO()
+    workbook.save(saved)
+    workbook.properties.created = workbook.properties.modified = XLSX_DATE
+    core = tostring(workbook.properties.to_tree())
+    fixed = io.BytesIO()
+    with ZipFile(saved) as source, ZipFile(fixed, "w", ZIP_DEFLATED) as target:
+        for info in source.infolist():
+            entry = ZipInfo(info.filename, date_time=XLSX_DATE.timetuple()[:6])
+            entry.external_attr = 0o644 << 16
+            data = core if info.filename == ARC_CORE else source.read(info)
+            target.writestr(entry, data, compress_type=ZIP_DEFLATED)
+    return fixed.getvalue()
 
 
 def _write_atomic(path: Path, data: bytes) -> None:
@@ -181,9 +211,7 @@ def write_table(
         sheet.append([f"{_name(role, 'plain', gauges)} [{unit}]" for role, unit, _ in columns])
         for row in np.column_stack([values for _, _, values in columns]).tolist():
             sheet.append(row)
-        temporary = path.with_name(f".{path.name}.tmp")
-        workbook.save(temporary)
-        os.replace(temporary, path)
+        _write_atomic(path, _xlsx_bytes(workbook))
         return path
     if layout == "machine":
         columns = [column for column in columns if column[0] != "force"] + [

@@ -1,0 +1,192 @@
+"""``chainbench run`` and ``chainbench validate``: process or check campaigns."""
+
+from __future__ import annotations
+
+import json
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Annotated
+
+import numpy as np
+import typer
+from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+from rich.table import Table
+
+from pipeline.campaign import CampaignResult, process_campaign, read_run, summary_table
+from pipeline.cli._output import console
+from pipeline.errors import ChainbenchError
+from pipeline.runsheet import RUN_SHEET_NAME, load_run_sheet
+
+RAW = Path("raw")
+PROCESSED = Path("processed")
+
+CampaignArgs = Annotated[
+    list[Path] | None,
+    typer.Argument(help="Campaign folders (default: every campaign under raw/).",
+                   show_default=False),
+]
+
+
+def campaign_folders(given: list[Path] | None) -> list[Path]:
+    """The folders to process: those given, else every ``raw/*`` with a run sheet."""
+    if given:
+        return list(given)
+    folders = sorted(path.parent for path in RAW.glob(f"*/{RUN_SHEET_NAME}"))
+    if not folders:
+        raise ChainbenchError(
+            "no campaign found", file=RAW,
+            hint=f"run from the project folder, or name a folder holding a {RUN_SHEET_NAME}",
+        )
+    return folders
+
+
+@contextmanager
+def _progress_reporter(total_runs: int):
+    """A ``progress(run_id, stage)`` callback: a rich bar on a terminal, plain lines otherwise."""
+    if not console.is_terminal:
+        yield lambda run_id, stage: print(f"  {run_id}: {stage}", flush=True)
+        return
+    columns = (TextColumn("{task.description}"), BarColumn(), TextColumn("{task.completed}/"
+               "{task.total} runs"), TimeElapsedColumn())
+    with Progress(*columns, console=console, transient=True) as bar:
+        task = bar.add_task("processing", total=total_runs)
+        seen: set[str] = set()
+
+        def step(run_id: str, stage: str) -> None:
+            if run_id not in seen and seen:
+                bar.advance(task)
+            seen.add(run_id)
+            bar.update(task, description=f"{run_id}: {stage}")
+
+        yield step
+
+
+def _fmt(value: float, scale: float = 1.0, digits: int = 4) -> str:
+    return "-" if not np.isfinite(value) else f"{value / scale:.{digits}g}"
+
+
+def _chain_table(summary) -> Table:
+    low, high = (100 * float(value) for value in summary.attrs["band"].split())
+    table = Table(title=f"chain stiffness E0 (lab band {low:g} to {high:g} %)")
+    for column in ("chain", "specimens", "E0_exp [kN]", "95 % interval [kN]",
+                   "E0_theory [kN]", "discrepancy [%]", "in band"):
+        table.add_column(column, justify="right")
+    for chain in summary["chain"].values:
+        row = summary.sel(chain=chain)
+        interval = f"{_fmt(float(row['E0_exp_ci_low']), 1e3, 5)} .. " \
+                   f"{_fmt(float(row['E0_exp_ci_high']), 1e3, 5)}"
+        table.add_row(
+            str(chain), str(int(row["n_specimens"])), _fmt(float(row["E0_exp"]), 1e3, 5),
+            interval, _fmt(float(row["E0_theory"]), 1e3, 5),
+            _fmt(100 * float(row["discrepancy"]), 1, 3),
+            {1: "yes", 0: "NO", -1: "-"}[int(row["in_band"])],
+        )
+    return table
+
+
+def _impact_table(summary) -> Table:
+    table = Table(title="impact tensions: measured (median) vs Paper 000 eq. (16), k = 2")
+    for column in ("run", "z", "psi [deg]", "omega [1/s]", "N_u1 meas [N]", "N_u1 theory [N]",
+                   "N_u2 meas [N]", "N_u2 theory [N]"):
+        table.add_column(column, justify="right")
+    for point in summary["operating_point"].values:
+        row = summary.sel(operating_point=point)
+        table.add_row(str(point), *(_fmt(float(row[name])) for name in (
+            "teeth", "apex_angle", "omega", "N_u1_meas", "N_u1_theory", "N_u2_meas",
+            "N_u2_theory")))
+    return table
+
+
+def _print_result(result: CampaignResult) -> None:
+    summary = result.summary
+    if summary.sizes.get("chain", 0):
+        console.print(_chain_table(summary))
+    if summary.sizes.get("operating_point", 0):
+        console.print(_impact_table(summary))
+        if np.isfinite(float(summary["k_fit"])):
+            console.print(
+                f"fitted mass share k = {float(summary['k_fit']):.4g} "
+                f"(95 % interval {float(summary['k_fit_ci_low']):.4g} .. "
+                f"{float(summary['k_fit_ci_high']):.4g}; Ryabov: k = 2)", highlight=False)
+    for note in filter(None, summary.attrs.get("notes", "").split("\n")):
+        console.print(f"[yellow]note[/yellow] {note}", highlight=False)
+    for failure in result.failures:
+        console.print(f"[red]failed[/red] {failure.run_id}: {failure.message}", highlight=False)
+    console.print(f"results in {result.output}", highlight=False)
+
+
+def _result_json(result: CampaignResult) -> dict:
+    summary = result.summary
+    tables = {
+        dim: json.loads(summary_table(summary, dim).reset_index().to_json(orient="records"))
+        for dim in ("chain", "operating_point") if summary.sizes.get(dim, 0)
+    }
+    scalars = {name: float(summary[name]) for name in summary.data_vars
+               if summary[name].ndim == 0}
+    return {
+        "campaign": result.campaign_id,
+        "output": str(result.output),
+        "chains": tables.get("chain", []),
+        "operating_points": tables.get("operating_point", []),
+        **scalars,
+        "failed_runs": [{"run": f.run_id, "error": f.message} for f in result.failures],
+    }
+
+
+def run_command(
+    campaigns: CampaignArgs = None,
+    output_root: Annotated[Path, typer.Option("--output", help="Root of the outputs.")] = PROCESSED,
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
+    debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks.")] = False,
+) -> None:
+    """Process campaigns: ingest, condition, fit, store and compare."""
+    all_ok, documents = True, []
+    for folder in campaign_folders(campaigns):
+        if not as_json:
+            console.print(f"[bold]campaign {folder}[/bold]", highlight=False)
+        try:
+            total = len(load_run_sheet(folder).runs)
+            with _progress_reporter(total) as progress:
+                result = process_campaign(folder, output_root / folder.name,
+                                          progress=None if as_json else progress, debug=debug)
+        except ChainbenchError as error:
+            if debug:
+                raise
+            all_ok = False
+            console.print(f"[red]error[/red] {error}", highlight=False)
+            documents.append({"campaign": str(folder), "error": str(error)})
+            continue
+        all_ok &= result.ok
+        if as_json:
+            documents.append(_result_json(result))
+        else:
+            _print_result(result)
+    if as_json:
+        print(json.dumps(documents, indent=2))
+    raise typer.Exit(0 if all_ok else 1)
+
+
+def validate_command(
+    campaigns: CampaignArgs = None,
+) -> None:
+    """Check run sheets and read every run file, without processing."""
+    all_ok = True
+    for folder in campaign_folders(campaigns):
+        try:
+            sheet = load_run_sheet(folder)
+        except ChainbenchError as error:
+            console.print(f"[red]error[/red] {error}", highlight=False)
+            all_ok = False
+            continue
+        problems = [str(error) for error in sheet.invalid_runs]
+        for run in sheet.runs:
+            try:
+                read_run(sheet, run)
+            except ChainbenchError as error:
+                problems.append(f"run {run.id}: {error}")
+        for problem in problems:
+            console.print(f"[red]error[/red] {problem}", highlight=False)
+        all_ok &= not problems
+        summary = f"{folder}: {len(sheet.runs)} runs, {len(problems)} problems"
+        console.print(summary, highlight=False)
+    raise typer.Exit(0 if all_ok else 1)

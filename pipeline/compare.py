@@ -1,0 +1,216 @@
+"""Experiment against theory: the campaign's tables per chain and per operating point.
+
+For each chain of the run sheet: the experimental E0 (mean over its specimens
+with a 95 % interval), the theoretical E0 of Paper 001, eq. (20) (printed and
+exact coefficients), the discrepancy (E0_exp - E0_theory) / E0_theory with the
+interval carried over from E0_exp, the other common definition referred to
+E0_exp, and the lab's band check. Where the chain is one of Table 1's, the
+published values stand beside.
+
+The check reports what the data say: the verdict is the point estimate's, and
+the interval shows how sure it is.
+
+For engagement runs, per operating point: the measured impact tensions
+against Paper 000's eq. (16) with Ryabov's k = 2 and with the fitted k.
+"""
+
+from __future__ import annotations
+
+import warnings
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+import xarray as xr
+
+from pipeline.fit.impact_model import ImpactModelFit, model_tensions
+from pipeline.fit.stiffness import SpecimenStiffness, combine_specimens
+from pipeline.theory import link_stiffness as ls
+from pipeline.theory.wheel_impact import RYABOV_MASS_SHARE
+from pipeline.units import to_si
+
+
+@dataclass(frozen=True)
+class ChainInput:
+    """What the comparison needs of one run-sheet chain (SI units)."""
+
+    key: str  #: the run sheet's chain key
+    catalog: str | None  #: catalogue name, used to find Table 1's published row
+    d: float | None
+    t: float | None
+    R0: float | None
+    a: float | None
+    E_steel: float  #: Young's modulus of the steel [Pa]
+
+
+_VARIABLES = {
+    "E0_exp": ("N", "experimental stiffness: mean over specimens"),
+    "E0_exp_ci_low": ("N", "lower limit of the 95 % interval of E0_exp"),
+    "E0_exp_ci_high": ("N", "upper limit of the 95 % interval of E0_exp"),
+    "E0_exp_stderr": ("N", "standard error of E0_exp"),
+    "n_specimens": ("1", "specimens counted in E0_exp"),
+    "E0_theory": ("N", "theoretical stiffness, Paper 001 eq. (20), printed coefficients"),
+    "E0_theory_exact": ("N", "theoretical stiffness, Paper 001 eq. (20), exact coefficients"),
+    "discrepancy": ("1", "(E0_exp - E0_theory) / E0_theory"),
+    "discrepancy_ci_low": ("1", "discrepancy at the lower limit of E0_exp's interval"),
+    "discrepancy_ci_high": ("1", "discrepancy at the upper limit of E0_exp's interval"),
+    "discrepancy_vs_exp": ("1", "(E0_exp - E0_theory) / E0_exp"),
+    "in_band": ("1", "1 when the discrepancy lies in the lab's band, else 0"),
+    "geometry_mismatch": ("m", "t - (a + 2 R0 - d): 0 for a link whose dimensions close"),
+    "E0_exp_published": ("N", "experimental E0 published in Paper 001, Table 1"),
+    "E0_theory_published": ("N", "theoretical E0 published in Paper 001, Table 1"),
+}
+
+
+def _theory(chain: ChainInput) -> tuple[float, float, float, list[str]]:
+    if None in (chain.d, chain.t, chain.R0, chain.a):
+        return np.nan, np.nan, np.nan, [
+            f"{chain.key}: no theoretical E0 (eq. (20) needs d, t, R0 and a)"]
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", ls.GeometryWarning)
+        printed = ls.chain_stiffness(chain.d, chain.t, chain.R0, chain.a, E=chain.E_steel)
+        exact = ls.chain_stiffness(chain.d, chain.t, chain.R0, chain.a, E=chain.E_steel,
+                                   coefficients=ls.exact_coefficients())
+    mismatch = ls.geometry_mismatch(chain.d, chain.t, chain.R0, chain.a)
+    notes = sorted({f"{chain.key}: {warning.message}" for warning in caught})
+    return printed, exact, mismatch, notes
+
+
+def _published(chain: ChainInput) -> tuple[float, float]:
+    row = ls.TABLE_1_PUBLISHED.get(chain.catalog or "")
+    if row is None:
+        return np.nan, np.nan
+    return to_si(row.E0_exp_kgf, "kgf"), to_si(row.E0_theor_kgf, "kgf")
+
+
+def _row(chain: ChainInput, specimens: Sequence[SpecimenStiffness], band) -> tuple[dict, list]:
+    theory, exact, mismatch, notes = _theory(chain)
+    row = dict.fromkeys(_VARIABLES, np.nan)
+    row.update(E0_theory=theory, E0_theory_exact=exact, geometry_mismatch=mismatch)
+    row["E0_exp_published"], row["E0_theory_published"] = _published(chain)
+    row["n_specimens"] = len(specimens)
+    if specimens:
+        combined = combine_specimens(specimens)
+        row.update(E0_exp=combined.E0, E0_exp_ci_low=combined.E0_ci_low,
+                   E0_exp_ci_high=combined.E0_ci_high, E0_exp_stderr=combined.E0_stderr)
+    if specimens and np.isfinite(theory):
+        row["discrepancy"] = ls.discrepancy(row["E0_exp"], theory)
+        row["discrepancy_vs_exp"] = ls.discrepancy_vs_experiment(row["E0_exp"], theory)
+        row["discrepancy_ci_low"] = (row["E0_exp_ci_low"] - theory) / theory
+        row["discrepancy_ci_high"] = (row["E0_exp_ci_high"] - theory) / theory
+        row["in_band"] = float(ls.in_band(row["discrepancy"], band))
+    return row, notes
+
+
+def stiffness_summary(
+    chains: Sequence[ChainInput],
+    specimens: Mapping[str, Sequence[SpecimenStiffness]],
+    band: tuple[float, float] = ls.LAB_BAND,
+) -> xr.Dataset:
+    """The per-chain table of experimental against theoretical E0.
+
+    Parameters
+    ----------
+    chains : sequence of ChainInput
+        The run sheet's chains that have tensile runs.
+    specimens : mapping
+        Chain key -> the stiffness of each of its successfully processed specimens.
+    band : (float, float)
+        The lab's band for the discrepancy [-]; default (0.03, 0.06).
+
+    Returns
+    -------
+    xarray.Dataset
+        Variables of :data:`_VARIABLES` on dimension ``chain`` (labels = chain
+        keys); attributes ``band`` (``"0.03 0.06"``) and ``notes``.
+
+    References
+    ----------
+    Paper 001, eq. (20) and Table 1; ``spec/models.md`` 001 (discrepancy check).
+    """
+    rows, notes = [], []
+    for chain in chains:
+        row, chain_notes = _row(chain, specimens.get(chain.key, ()), band)
+        rows.append(row)
+        notes.extend(chain_notes)
+    data = {
+        name: ("chain", np.array([row[name] for row in rows], dtype=float),
+               {"units": units, "long_name": long_name})
+        for name, (units, long_name) in _VARIABLES.items()
+    }
+    summary = xr.Dataset(data, coords={"chain": [chain.key for chain in chains]})
+    summary["in_band"] = summary["in_band"].fillna(-1).astype("int8")
+    summary["in_band"].attrs.update(
+        units="1", long_name=_VARIABLES["in_band"][1], _FillValue=np.int8(-1),
+        flag_values=np.array([0, 1], dtype="int8"), flag_meanings="out_of_band in_band")
+    summary["n_specimens"] = summary["n_specimens"].astype("int32")
+    summary.attrs.update(band=f"{band[0]:g} {band[1]:g}", notes="\n".join(notes))
+    return summary
+
+
+_POINT_VARIABLES = {
+    "teeth": ("1", "number of teeth (pockets) of the wheel"),
+    "apex_angle": ("degree", "tooth apex angle psi"),
+    "omega": ("s-1", "wheel angular velocity stated in the run sheet"),
+    "omega_measured": ("s-1", "wheel angular velocity measured in the log"),
+    "N_u1_meas": ("N", "measured impact tension 1: median over the run's events"),
+    "N_u1_iqr": ("N", "interquartile range of N_u1 over the run's events"),
+    "N_u1_stderr": ("N", "standard error of the median N_u1"),
+    "N_u1_count": ("1", "events counted in N_u1_meas"),
+    "N_u2_meas": ("N", "measured impact tension 2: median over the run's events"),
+    "N_u2_iqr": ("N", "interquartile range of N_u2 over the run's events"),
+    "N_u2_stderr": ("N", "standard error of the median N_u2"),
+    "N_u2_count": ("1", "events counted in N_u2_meas"),
+    "N_u1_theory": ("N", "impact tension 1, Paper 000 eq. (16) with k = 2 (Ryabov)"),
+    "N_u2_theory": ("N", "impact tension 2, Paper 000 eq. (16) with k = 2 (Ryabov)"),
+    "N_u1_fit": ("N", "impact tension 1 of the model with the fitted k"),
+    "N_u2_fit": ("N", "impact tension 2 of the model with the fitted k"),
+    "E0": ("N", "chain stiffness used by the model"),
+    "branch_length": ("m", "length of the active chain branch"),
+}
+
+
+def impact_summary(points: pd.DataFrame, fit: ImpactModelFit | None) -> xr.Dataset:
+    """The per-operating-point table of measured against theoretical impact tensions.
+
+    Parameters
+    ----------
+    points : pandas.DataFrame
+        One row per engagement run (index: run id) with the
+        :data:`~pipeline.fit.impact_model.POINT_COLUMNS` (SI) and the measured
+        ``N_u1_meas``, ``N_u2_meas`` with their spread.
+    fit : ImpactModelFit or None
+        The campaign fit of k (None when it could not be made).
+
+    Returns
+    -------
+    xarray.Dataset
+        Variables on dimension ``operating_point`` (labels = run ids), and the
+        scalars ``k_fit``, ``k_fit_stderr``, ``k_fit_ci_low``, ``k_fit_ci_high``,
+        ``k_fit_chi2_reduced`` (NaN without a fit).
+
+    References
+    ----------
+    Paper 000, eqs. (1)-(2) and (16); ``spec/models.md`` 000.
+    """
+    table = points.copy()
+    table["N_u1_theory"], table["N_u2_theory"] = model_tensions(table, k=RYABOV_MASS_SHARE)
+    if fit is not None:
+        table["N_u1_fit"], table["N_u2_fit"] = model_tensions(table, k=fit.k)
+    else:
+        table["N_u1_fit"] = table["N_u2_fit"] = np.nan
+    table["apex_angle"] = np.degrees(table["apex_angle"])
+    data = {
+        name: ("operating_point", table[name].to_numpy(dtype=float),
+               {"units": units, "long_name": long_name})
+        for name, (units, long_name) in _POINT_VARIABLES.items()
+    }
+    summary = xr.Dataset(data, coords={"operating_point": table.index.astype(str).to_numpy()})
+    values = (fit.value, fit.stderr, fit.ci_low, fit.ci_high, fit.chi2_reduced) if fit else (
+        (np.nan,) * 5)
+    for name, value in zip(("k_fit", "k_fit_stderr", "k_fit_ci_low", "k_fit_ci_high",
+                            "k_fit_chi2_reduced"), values, strict=True):
+        summary[name] = ((), float(value), {"units": "1", "long_name": name.replace("_", " ")})
+    summary["k_fit"].attrs["long_name"] = "share k of link masses in the impact, fitted"
+    return summary

@@ -1,0 +1,418 @@
+"""Write synthetic campaigns: logs from the virtual benches, a run sheet and the truth.
+
+A campaign folder written here is what a lab would hand over: the logs, one a
+run, in the layouts and units each run asks for, and the run sheet
+``campaign.toml`` (marked ``synthetic = true``, with a note saying where the
+data come from). Beside them ``truth.json`` keeps the true values each log was
+made from; the run sheet never refers to it, so the folder processes like any
+other.
+
+:func:`write_tensile_campaign` writes tensile runs (:class:`TensileRunSpec`),
+:func:`write_engagement_campaign` engagement runs (:class:`EngagementRunSpec`);
+``chainbench simulate`` and :mod:`pipeline.simulate.demo` both go through them.
+Run sheets are written as TOML text by a small writer: strings are quoted with
+:func:`json.dumps`, whose escapes TOML basic strings accept.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from collections.abc import Iterable, Sequence
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+import numpy as np
+
+from pipeline.catalog import chain as catalog_chain
+from pipeline.runsheet import RUN_SHEET_NAME, SAFE_ID
+from pipeline.simulate.engagement import (
+    EngagementSettings,
+    simulate_engagement,
+    write_engagement_csv,
+    write_engagement_tdms,
+)
+from pipeline.simulate.export import (
+    EUROPEAN_ENCODINGS,
+    FORCE_UNITS,
+    LAYOUTS,
+    LENGTH_UNITS,
+    write_table,
+)
+from pipeline.simulate.tensile import TensileTruth, simulate_tensile
+from pipeline.store.netcdf import write_text_atomic
+from pipeline.units import from_si
+
+#: Name of the file holding the true values beside the run sheet.
+TRUTH_NAME = "truth.json"
+
+#: File formats of engagement logs, and their writers.
+ENGAGEMENT_WRITERS = {"csv": write_engagement_csv, "tdms": write_engagement_tdms}
+
+_BARE_KEY = re.compile(r"[A-Za-z0-9_-]+")
+
+
+@dataclass(frozen=True)
+class CampaignSpec:
+    """The ``[campaign]`` table of a synthetic campaign.
+
+    Parameters
+    ----------
+    id : str
+        Campaign id (letters, digits, ``.``, ``_`` and ``-``: it names folders).
+    title, lab, machine : str
+        As in the run sheet.
+    note : str
+        Where the data come from; the run sheet also gets ``synthetic = true``.
+    """
+
+    id: str
+    title: str = ""
+    lab: str = ""
+    machine: str = ""
+    note: str = "Synthetic data from the chainbench virtual test bench."
+
+    def __post_init__(self) -> None:
+        if not re.fullmatch(SAFE_ID, self.id):
+            raise ValueError(
+                f"campaign id {self.id!r}: use letters, digits, '.', '_' and '-' only"
+            )
+
+
+@dataclass(frozen=True)
+class TensileRunSpec:
+    """One tensile run to simulate and write.
+
+    Parameters
+    ----------
+    id : str
+        Run id in the run sheet.
+    chain : str
+        Catalogue chain (e.g. ``"18x64"``); its run-sheet key is :func:`chain_key`.
+    specimen : str
+        Specimen label.
+    truth : TensileTruth
+        The run's settings and true properties.
+    seed : int
+        Seed of the log's noise.
+    file : str
+        File name in the campaign folder.
+    layout, force_unit, length_unit, language, encoding, preamble
+        How the log is written (:func:`pipeline.simulate.export.write_table`).
+    """
+
+    id: str
+    chain: str
+    specimen: str
+    truth: TensileTruth
+    seed: int
+    file: str
+    layout: str = "plain"
+    force_unit: str = "kN"
+    length_unit: str = "mm"
+    language: str = "pl"
+    encoding: str | None = None
+    preamble: tuple[tuple[str, str], ...] = ()
+
+    def __post_init__(self) -> None:
+        _check_run(self.id, self.file)
+        for name, value, allowed in (("layout", self.layout, LAYOUTS),
+                                     ("force_unit", self.force_unit, FORCE_UNITS),
+                                     ("length_unit", self.length_unit, LENGTH_UNITS),
+                                     ("language", self.language, tuple(EUROPEAN_ENCODINGS))):
+            if value not in allowed:
+                raise ValueError(f"run {self.id}: {name} must be one of "
+                                 f"{', '.join(allowed)}, got {value!r}")
+
+
+@dataclass(frozen=True)
+class EngagementRunSpec:
+    """One engagement run to simulate and write.
+
+    Parameters
+    ----------
+    id : str
+        Run id in the run sheet.
+    chain : str
+        Catalogue chain (e.g. ``"18x64"``); `settings` should carry its geometry
+        (see :func:`engagement_settings`).
+    settings : EngagementSettings
+        Operating point, branch and measurement.
+    seed : int
+        Seed of the log's randomness.
+    file : str
+        File name in the campaign folder.
+    format : str
+        ``"csv"`` or ``"tdms"`` (:data:`ENGAGEMENT_WRITERS`).
+    """
+
+    id: str
+    chain: str
+    settings: EngagementSettings
+    seed: int
+    file: str
+    format: str = "tdms"
+
+    def __post_init__(self) -> None:
+        _check_run(self.id, self.file)
+        if self.format not in ENGAGEMENT_WRITERS:
+            raise ValueError(f"run {self.id}: format must be one of "
+                             f"{', '.join(ENGAGEMENT_WRITERS)}, got {self.format!r}")
+
+    @property
+    def wheel(self) -> str:
+        """Run-sheet key of the wheel: ``w<teeth>_<apex angle in deg>``."""
+        return wheel_key(self.settings.z, math.degrees(self.settings.psi))
+
+
+def _check_run(run_id: str, file: str) -> None:
+    if not re.fullmatch(SAFE_ID, run_id):
+        raise ValueError(f"run id {run_id!r}: use letters, digits, '.', '_' and '-' only")
+    if Path(file).name != file or file in (RUN_SHEET_NAME, TRUTH_NAME):
+        raise ValueError(f"run {run_id}: file {file!r} must be a plain file name "
+                         f"other than {RUN_SHEET_NAME} and {TRUTH_NAME}")
+
+
+def chain_key(chain: str) -> str:
+    """Run-sheet key of catalogue chain `chain`.
+
+    Examples
+    --------
+    >>> chain_key("18x64")
+    'c18x64'
+    """
+    return "c" + chain.replace(".", "_")
+
+
+def wheel_key(teeth: int, apex_deg: float) -> str:
+    """Run-sheet key of a wheel of `teeth` teeth and apex angle `apex_deg` [deg].
+
+    Examples
+    --------
+    >>> wheel_key(8, 40.0), wheel_key(6, 22.5)
+    ('w8_40', 'w6_22p5')
+    """
+    return f"w{teeth}_{round(apex_deg, 6):g}".replace(".", "p")
+
+
+def engagement_settings(chain: str, **settings) -> EngagementSettings:
+    """Engagement settings for catalogue chain `chain`: its pitch, bar and mass per metre.
+
+    Parameters
+    ----------
+    chain : str
+        Catalogue round-link chain with a mass per metre, e.g. ``"18x64"``.
+    **settings
+        Any other field of :class:`~pipeline.simulate.engagement.EngagementSettings`.
+
+    Raises
+    ------
+    KeyError
+        For a chain the catalogue does not have, or has no mass per metre for.
+    ValueError
+        For settings :class:`EngagementSettings` rejects.
+    """
+    spec = catalog_chain(chain)
+    geometry = {"t": spec["t"], "d": spec["d"], "mass_per_length": spec["mass_per_length"]}
+    return EngagementSettings(**geometry, **settings)
+
+
+def _toml_value(value: str | bool | int | float) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        if not math.isfinite(value):
+            raise ValueError(f"a run sheet value must be finite, got {value!r}")
+        return f"{value:.10g}"
+    if isinstance(value, str):
+        # JSON string escapes are TOML basic-string escapes; TOML also wants DEL escaped.
+        return json.dumps(value, ensure_ascii=False).replace("\x7f", "\\u007f")
+    raise TypeError(f"cannot write {type(value).__name__} {value!r} to a run sheet")
+
+
+def _toml_key(key: str) -> str:
+    return key if _BARE_KEY.fullmatch(key) else _toml_value(key)
+
+
+def _toml_table(header: str, values: dict[str, str | bool | int | float]) -> list[str]:
+    return ["", header, *(f"{_toml_key(key)} = {_toml_value(value)}"
+                          for key, value in values.items())]
+
+
+def run_sheet_text(
+    campaign: CampaignSpec,
+    chains: Iterable[str],
+    runs: Sequence[dict[str, str | bool | int | float]],
+    wheels: dict[str, tuple[int, float]] | None = None,
+) -> str:
+    """Text of the ``campaign.toml`` of a synthetic campaign.
+
+    Parameters
+    ----------
+    campaign : CampaignSpec
+        The ``[campaign]`` table (written with ``synthetic = true``).
+    chains : iterable of str
+        Catalogue chains, each written as ``[chains.<chain_key>]`` with ``catalog``.
+    runs : sequence of dict
+        The ``[[runs]]`` entries, in order.
+    wheels : dict, optional
+        Wheel key -> (teeth, apex angle [deg]), written as ``[wheels.<key>]``.
+
+    Returns
+    -------
+    str
+        TOML text (UTF-8 when written).
+
+    Examples
+    --------
+    >>> text = run_sheet_text(CampaignSpec("demo"), ["18x64"], [{"id": "T1"}])
+    >>> import tomllib; tomllib.loads(text)["campaign"]["synthetic"]
+    True
+    """
+    info = {"id": campaign.id, "title": campaign.title, "lab": campaign.lab,
+            "machine": campaign.machine, "synthetic": True, "note": campaign.note}
+    lines = ["# Synthetic campaign written by chainbench's virtual test bench.",
+             "[campaign]", *(f"{key} = {_toml_value(value)}" for key, value in info.items())]
+    for chain in dict.fromkeys(chains):
+        lines += _toml_table(f"[chains.{_toml_key(chain_key(chain))}]", {"catalog": chain})
+    for key, (teeth, apex_deg) in (wheels or {}).items():
+        lines += _toml_table(f"[wheels.{_toml_key(key)}]",
+                             {"teeth": teeth, "apex_angle_deg": float(apex_deg)})
+    for run in runs:
+        lines += _toml_table("[[runs]]", run)
+    return "\n".join(lines) + "\n"
+
+
+def _check_unique(runs: Sequence[TensileRunSpec] | Sequence[EngagementRunSpec]) -> None:
+    if not runs:
+        raise ValueError("a campaign needs at least one run")
+    for attribute in ("id", "file"):
+        values = [getattr(run, attribute) for run in runs]
+        duplicates = sorted({value for value in values if values.count(value) > 1})
+        if duplicates:
+            raise ValueError(f"duplicate run {attribute}(s): {', '.join(duplicates)}")
+
+
+def _plain(value):
+    """`value` with numpy arrays and scalars turned into JSON-ready Python values."""
+    if isinstance(value, dict):
+        return {key: _plain(item) for key, item in value.items()}
+    if isinstance(value, np.ndarray | np.generic):
+        return value.tolist()
+    return value
+
+
+def _write_truth(out: Path, campaign: CampaignSpec, runs: dict[str, dict]) -> None:
+    document = {"campaign": campaign.id, "runs": runs}
+    write_text_atomic(json.dumps(_plain(document), indent=2) + "\n", out / TRUTH_NAME)
+
+
+def write_tensile_campaign(
+    out: str | Path, runs: Sequence[TensileRunSpec], campaign: CampaignSpec
+) -> Path:
+    """Simulate and write a tensile campaign: logs, run sheet and ``truth.json``.
+
+    Parameters
+    ----------
+    out : str or Path
+        Campaign folder (created; files of the same names are replaced).
+    runs : sequence of TensileRunSpec
+        The runs, in run-sheet order (unique ids and file names).
+    campaign : CampaignSpec
+        The ``[campaign]`` table.
+
+    Returns
+    -------
+    Path
+        The run sheet written. ``truth.json`` holds per run its file, chain,
+        layout and units, seed, ``truth`` (the :class:`TensileTruth` fields, SI),
+        ``permanent_set_m`` and ``hysteresis_energy_J`` per cycle.
+
+    Raises
+    ------
+    ValueError
+        For an empty or duplicated run list.
+    """
+    _check_unique(runs)
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    entries, truths = [], {}
+    for run in runs:
+        write_table(simulate_tensile(run.truth, run.seed), out / run.file, layout=run.layout,
+                    force_unit=run.force_unit, length_unit=run.length_unit,
+                    language=run.language, encoding=run.encoding, preamble=run.preamble)
+        cycles = range(1, run.truth.n_cycles + 1)
+        entries.append({
+            "id": run.id, "kind": "tensile", "file": run.file, "chain": chain_key(run.chain),
+            "specimen": run.specimen,
+            "gauge_length_mm": float(from_si(run.truth.gauge_length, "mm")),
+            "cycles": run.truth.n_cycles,
+        })
+        truths[run.id] = {
+            "file": run.file, "chain": run.chain, "specimen": run.specimen,
+            "layout": run.layout, "force_unit": run.force_unit,
+            "length_unit": run.length_unit, "language": run.language,
+            "encoding": run.encoding, "seed": run.seed, "truth": asdict(run.truth),
+            "permanent_set_m": [run.truth.permanent_set(k) for k in cycles],
+            "hysteresis_energy_J": [run.truth.hysteresis_energy(k) for k in cycles],
+        }
+    sheet = write_text_atomic(
+        run_sheet_text(campaign, [run.chain for run in runs], entries), out / RUN_SHEET_NAME)
+    _write_truth(out, campaign, truths)
+    return sheet
+
+
+def write_engagement_campaign(
+    out: str | Path, runs: Sequence[EngagementRunSpec], campaign: CampaignSpec
+) -> Path:
+    """Simulate and write an engagement campaign: logs, run sheet and ``truth.json``.
+
+    Parameters
+    ----------
+    out : str or Path
+        Campaign folder (created; files of the same names are replaced).
+    runs : sequence of EngagementRunSpec
+        The runs, in run-sheet order (unique ids and file names). Their wheels
+        become ``[wheels.*]`` tables (:func:`wheel_key`).
+    campaign : CampaignSpec
+        The ``[campaign]`` table.
+
+    Returns
+    -------
+    Path
+        The run sheet written. ``truth.json`` holds per run its file, format,
+        chain, seed and the truth of
+        :func:`~pipeline.simulate.engagement.simulate_engagement` (``N_u1``,
+        ``N_u2``, the events...).
+
+    Raises
+    ------
+    ValueError
+        For an empty or duplicated run list.
+    """
+    _check_unique(runs)
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    entries, truths, wheels = [], {}, {}
+    for run in runs:
+        s = run.settings
+        table, truth = simulate_engagement(s, run.seed)
+        ENGAGEMENT_WRITERS[run.format](table, out / run.file)
+        wheels[run.wheel] = (s.z, math.degrees(s.psi))
+        entry = {"id": run.id, "kind": "engagement", "file": run.file,
+                 "chain": chain_key(run.chain), "wheel": run.wheel,
+                 "branch_length_m": float(s.branch_length), "omega_per_s": float(s.omega),
+                 "E0_N": float(s.E0)}
+        if s.clip_level is not None:
+            entry["clip_level_kN"] = float(from_si(s.clip_level, "kN"))
+        entries.append(entry)
+        truths[run.id] = {"file": run.file, "format": run.format, "chain": run.chain,
+                          "seed": run.seed, **truth}
+    sheet = write_text_atomic(
+        run_sheet_text(campaign, [run.chain for run in runs], entries, wheels),
+        out / RUN_SHEET_NAME)
+    _write_truth(out, campaign, truths)
+    return sheet

@@ -1,0 +1,173 @@
+"""The demo campaigns of ``raw/``: synthetic, deterministic, with known truth.
+
+``chainbench simulate demo`` writes both with :func:`write_stiffness_demo` and
+:func:`write_engagement_demo`; fixed seeds make every byte reproducible (a test
+regenerates them and compares with the committed files).
+
+``stiffness-demo``
+    Paper 001, section 3, re-created on the virtual tensile bench: chains
+    13x50, 14x50, 18x64 and 22x86, four specimens each (A to D) on segments of
+    about 0.9 m (896 to 904 mm as measured), three cycles between the paper's
+    preload and upper force (500/3500 kgf, 1000/10000 kgf, 2000/20000 kgf).
+    The true E0 of each chain is Table 1's experimental value, with a
+    specimen-to-specimen scatter of at most 0.4 %. The logs are spread over
+    the layouts and units a lab meets (:data:`STIFFNESS_FORMATS`).
+``engagement-demo``
+    Paper 000's rig: chain 18x64 on a 2 m branch, E0 = 2.26e7 N, wheels of
+    z = 6, 8, 10 teeth with apex angles 20, 40, 60 deg, each at omega = 10, 20,
+    30 1/s (27 runs): TDMS and CSV alternately, some with the wheel-angle
+    channel, noise at SNR 20, 1.2 s at 5 kHz (at least 11 seating periods a run).
+
+Both run sheets say ``synthetic = true``; ``truth.json`` beside them keeps the
+true values, and the run sheets do not depend on it.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from pathlib import Path
+from typing import NamedTuple
+
+import numpy as np
+
+from pipeline.simulate.campaign import (
+    CampaignSpec,
+    EngagementRunSpec,
+    TensileRunSpec,
+    engagement_settings,
+    write_engagement_campaign,
+    write_tensile_campaign,
+)
+from pipeline.simulate.export import SUFFIXES
+from pipeline.simulate.tensile import TensileTruth
+from pipeline.units import to_si
+
+#: Seeds of the two demos.
+STIFFNESS_SEED = 1969
+ENGAGEMENT_SEED = 2000
+
+
+class LogFormat(NamedTuple):
+    """How one tensile log is written (:func:`pipeline.simulate.export.write_table`)."""
+
+    layout: str
+    force_unit: str
+    length_unit: str
+    language: str = "pl"
+    encoding: str | None = None
+
+
+#: Format of the logs of specimens A to D of each chain: a Polish lab PC (European
+#: CSV, kgf, cp1250), a plain CSV logger in kN (one specimen logged on a German PC:
+#: European CSV with BOM, daN), an Instron-style export in N (one in lbf and inches)
+#: and spreadsheets in kN and micrometres.
+STIFFNESS_FORMATS = {
+    "13x50": 4 * [LogFormat("european", "kgf", "mm", "pl")],
+    "14x50": 3 * [LogFormat("plain", "kN", "mm")]
+    + [LogFormat("european", "daN", "mm", "de", "utf-8-sig")],
+    "18x64": 3 * [LogFormat("machine", "N", "mm")] + [LogFormat("machine", "lbf", "in")],
+    "22x86": 4 * [LogFormat("xlsx", "kN", "um")],
+}
+
+#: Loading and unloading rate per chain [kgf/s]: some 45 to 60 s a ramp.
+LOADING_RATES_KGF_PER_S = {"13x50": 50.0, "14x50": 50.0, "18x64": 200.0, "22x86": 400.0}
+
+#: Largest relative deviation of a specimen's E0 from Table 1's value.
+E0_SCATTER = 0.004
+
+
+def write_stiffness_demo(folder: str | Path) -> Path:
+    """Write the ``stiffness-demo`` campaign (Paper 001's tensile tests) into `folder`.
+
+    Parameters
+    ----------
+    folder : str or Path
+        Campaign folder (created; the demo's files are replaced).
+
+    Returns
+    -------
+    Path
+        The run sheet written.
+    """
+    rng = np.random.default_rng(STIFFNESS_SEED)
+    runs = []
+    for chain, formats in STIFFNESS_FORMATS.items():
+        base = TensileTruth.for_chain(
+            chain, sample_rate=10.0,
+            loading_rate=to_si(LOADING_RATES_KGF_PER_S[chain], "kgf/s"))
+        for letter, log in zip("ABCD", formats, strict=True):
+            truth = base.with_(
+                E0=base.E0 * (1.0 + rng.uniform(-E0_SCATTER, E0_SCATTER)),
+                gauge_length=to_si(float(rng.integers(896, 905)), "mm"),
+                slack=to_si(rng.uniform(0.2, 0.4), "mm"),
+                set_first=to_si(rng.uniform(0.05, 0.15), "mm"),
+                bending=rng.uniform(0.02, 0.08),
+            )
+            run_id = f"T{chain.split('x')[0]}-{letter}"
+            specimen = f"{chain}-{letter}"
+            runs.append(TensileRunSpec(
+                id=run_id, chain=chain, specimen=specimen, truth=truth,
+                seed=int(rng.integers(2**31)), file=run_id + SUFFIXES[log.layout],
+                layout=log.layout, force_unit=log.force_unit, length_unit=log.length_unit,
+                language=log.language, encoding=log.encoding,
+                preamble=(("Test Method", "Chain stiffness, 3 cycles"),
+                          ("Specimen label", specimen),
+                          ("Machine", "Amsler 50 t (virtual)")),
+            ))
+    campaign = CampaignSpec(
+        id="stiffness-demo",
+        title="Static stiffness of round-link mining chains (Paper 001, re-created)",
+        lab="Strength testing laboratory (virtual)",
+        machine="Amsler 50 t (virtual)",
+        note="Synthetic data made with `chainbench simulate demo`: Paper 001's tensile "
+             "tests re-created on the virtual test bench, with Table 1's experimental E0 "
+             "as the true stiffness. Not measurements.",
+    )
+    return write_tensile_campaign(folder, runs, campaign)
+
+
+def write_engagement_demo(folder: str | Path) -> Path:
+    """Write the ``engagement-demo`` campaign (Paper 000's chain wheel) into `folder`.
+
+    Parameters
+    ----------
+    folder : str or Path
+        Campaign folder (created; the demo's files are replaced).
+
+    Returns
+    -------
+    Path
+        The run sheet written.
+    """
+    rng = np.random.default_rng(ENGAGEMENT_SEED)
+    runs = []
+    points = [(z, apex, omega) for z in (6, 8, 10) for apex in (20, 40, 60)
+              for omega in (10, 20, 30)]
+    for index, (z, apex, omega) in enumerate(points):
+        settings = engagement_settings(
+            "18x64", z=z, psi=math.radians(apex), omega=float(omega), E0=2.26e7,
+            branch_length=2.0, sample_rate=5000.0, duration=1.2, snr=20.0,
+            amplitude_scatter=0.02, with_angle=index % 3 != 2)
+        run_id = f"E{z}-{apex}-{omega}"
+        file_format = "tdms" if index % 2 == 0 else "csv"
+        runs.append(EngagementRunSpec(
+            id=run_id, chain="18x64", settings=settings, seed=int(rng.integers(2**31)),
+            file=f"{run_id}.{file_format}", format=file_format))
+    campaign = CampaignSpec(
+        id="engagement-demo",
+        title="Impact tensions of an 18x64 chain on pocket wheels (Paper 000, re-created)",
+        lab="Chain drive laboratory (virtual)",
+        machine="Chain-wheel rig (virtual)",
+        note="Synthetic data made with `chainbench simulate demo`: branch-tension logs "
+             "of Paper 000's rig from the virtual engagement bench (k = 2). "
+             "Not measurements.",
+    )
+    return write_engagement_campaign(folder, runs, campaign)
+
+
+#: The demo campaigns by folder name, and their writers.
+DEMOS: dict[str, Callable[[str | Path], Path]] = {
+    "stiffness-demo": write_stiffness_demo,
+    "engagement-demo": write_engagement_demo,
+}

@@ -1,0 +1,84 @@
+"""The demo campaigns of ``raw/``: reproducible to the byte, and they give back their truth."""
+
+from __future__ import annotations
+
+import json
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from pipeline.campaign import process_campaign
+from pipeline.cli import app
+from pipeline.simulate.demo import DEMOS
+from pipeline.units import to_si
+
+RAW = Path(__file__).resolve().parents[2] / "raw"
+
+#: Paper 001, Table 1: experimental E0 [kgf], by the demo's run-sheet chain key.
+TABLE_1_E0_EXP_KGF = {"c13x50": 1.12e6, "c14x50": 1.24e6, "c18x64": 2.26e6, "c22x86": 3.68e6}
+
+
+def committed(name: str) -> Path:
+    folder = RAW / name
+    if not (folder / "campaign.toml").is_file():
+        pytest.skip(f"{folder} is absent")
+    return folder
+
+
+@pytest.mark.parametrize("name", list(DEMOS))
+def test_regenerates_the_committed_files_byte_for_byte(tmp_path, name):
+    folder = committed(name)
+    DEMOS[name](tmp_path)
+    written = sorted(path.name for path in tmp_path.iterdir())
+    assert written == sorted(path.name for path in folder.iterdir())
+    for file in written:
+        assert (tmp_path / file).read_bytes() == (folder / file).read_bytes(), file
+
+
+@pytest.mark.parametrize("name", list(DEMOS))
+def test_run_sheet_is_marked_synthetic_and_does_not_name_the_truth(name):
+    text = (committed(name) / "campaign.toml").read_text(encoding="utf-8")
+    campaign = tomllib.loads(text)["campaign"]
+    assert campaign["synthetic"] is True
+    assert "chainbench simulate demo" in campaign["note"]
+    assert "truth.json" not in text
+
+
+def test_cli_writes_both_demos(tmp_path):
+    result = CliRunner().invoke(app, ["simulate", "demo", "--out", str(tmp_path), "--json"])
+    assert result.exit_code == 0, result.output
+    assert [row["campaign"] for row in json.loads(result.stdout)["rows"]] == list(DEMOS)
+    assert all((tmp_path / name / "campaign.toml").is_file() for name in DEMOS)
+
+
+def test_stiffness_demo_recovers_table_1(tmp_path):
+    result = process_campaign(committed("stiffness-demo"), output=tmp_path)
+    assert result.failures == []
+    summary = result.summary
+    assert sorted(summary["chain"].values) == sorted(TABLE_1_E0_EXP_KGF)
+    low, high = (float(value) for value in summary.attrs["band"].split())
+    for chain, published in TABLE_1_E0_EXP_KGF.items():
+        row = summary.sel(chain=chain)
+        assert int(row["n_specimens"]) == 4
+        assert float(row["E0_exp"]) == pytest.approx(to_si(published, "kgf"), rel=0.01), chain
+        # the band check reports what the data say, row by row
+        discrepancy = float(row["discrepancy"])
+        assert int(row["in_band"]) == int(low <= discrepancy <= high), chain
+
+
+def test_engagement_demo_recovers_its_truth(tmp_path):
+    folder = committed("engagement-demo")
+    truth = json.loads((folder / "truth.json").read_text(encoding="utf-8"))["runs"]
+    result = process_campaign(folder, output=tmp_path)
+    assert result.failures == []
+    summary = result.summary
+    assert sorted(summary["operating_point"].values) == sorted(truth)
+    for name in ("N_u1", "N_u2"):
+        measured = summary[f"{name}_meas"].sel(operating_point=list(truth)).to_numpy()
+        expected = np.array([run[name] for run in truth.values()])
+        np.testing.assert_allclose(measured, expected, rtol=0.03, err_msg=name)
+    assert float(summary["k_fit"]) == pytest.approx(2.0, rel=0.05)
+    assert float(summary["k_fit_ci_low"]) <= 2.0 <= float(summary["k_fit_ci_high"])
