@@ -278,6 +278,8 @@ def process_campaign(
         except Exception as error:  # one bad run must not stop the campaign
             if debug and not isinstance(error, ChainbenchError):
                 raise
+            if isinstance(error, ChainbenchError) and error.file is None:
+                error.file = str(sheet.run_file(run))  # stages after ingest know no file
             failures.append(RunFailure(run.id, error))
             continue
         run_files[run.id] = write_atomic(dataset, output / f"{run.id}.nc")

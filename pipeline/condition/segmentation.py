@@ -182,11 +182,18 @@ def segment_cycles(
         above the preload, when there is no cycle, or fewer than `n_cycles`.
     """
     force = np.asarray(force, dtype=float)
-    if force.size < 3 or not np.all(np.isfinite(force)):
+    if force.size < 3:
         raise SignalError(
-            "the force record is too short or holds missing values",
+            f"the force record holds only {force.size} usable sample(s)",
             column="force",
-            hint="condition the run with condition_tensile, which drops isolated gaps",
+            hint="a tensile test needs its whole load history: check that the file is complete",
+        )
+    if not np.all(np.isfinite(force)):
+        raise SignalError(
+            f"the force record holds {int(np.sum(~np.isfinite(force)))} missing or infinite "
+            "value(s)",
+            column="force",
+            hint="check the force channel of the file around the missing values",
         )
     sign = load_sign(force)
     oriented = sign * force
