@@ -86,6 +86,9 @@ def test_run_file_carries_provenance(campaign, tmp_path):
     assert json.loads(run.attrs["run_entry"])["id"] == "T18-2"
     assert run["force"].attrs["units"] == "N"
     assert set(run["fit_E0"].dims) == {"cycle", "branch"}
+    assert list(run["gauge"].values) == ["gauge_1", "gauge_2"]  # the bench's two gauges
+    mean = run["gauge_elongation"].mean("gauge")
+    assert run["elongation"].values == pytest.approx(mean.values)
     assert float(run["specimen_E0_ci_low"]) < float(run["specimen_E0"]) < float(
         run["specimen_E0_ci_high"])
 

@@ -11,6 +11,7 @@ cycle ``hysteresis_energy`` [J] and ``permanent_set`` [m]; the specimen's E0
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 
 import numpy as np
@@ -62,7 +63,7 @@ def _flags(values: np.ndarray, meanings: tuple[str, ...]) -> tuple[np.ndarray, d
 
 def _samples(run: TensileRun) -> xr.Dataset:
     samples = run.samples
-    gauges = [name for name in samples.columns if name.startswith("gauge_")]
+    gauges = [name for name in samples.columns if re.fullmatch(r"gauge_\d+", name)]
     branch, branch_attrs = _flags(samples["branch"].astype(str).to_numpy(), BRANCHES)
     variables = {
         "force": ("sample", samples["force"].to_numpy(), {"units": "N", "long_name": "force"}),

@@ -1,0 +1,25 @@
+"""Fixtures shared across the suite."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).parents[1]
+DEMOS = ("stiffness-demo", "engagement-demo")
+
+
+@pytest.fixture(scope="session")
+def processed_demos(tmp_path_factory) -> Path:
+    """The demo campaigns processed once per session into a temporary ``processed/``."""
+    from pipeline.campaign import process_campaign
+
+    root = tmp_path_factory.mktemp("processed")
+    for name in DEMOS:
+        folder = ROOT / "raw" / name
+        if not folder.is_dir():
+            pytest.skip(f"demo campaign {folder} is absent")
+        result = process_campaign(folder, root / name)
+        assert result.ok, [failure.message for failure in result.failures]
+    return root
