@@ -1,47 +1,64 @@
-"""Processing a campaign: the flow of a run, top to bottom.
+"""Processing a campaign: what is (re)done, in what order, and where it is stored.
 
 ``raw/<campaign>/campaign.toml`` + machine exports
--> ingest (:mod:`pipeline.ingest`) -> condition (:mod:`pipeline.condition`)
--> fit (:mod:`pipeline.fit`) -> store (:mod:`pipeline.store`)
--> compare (:mod:`pipeline.compare`) -> ``processed/<campaign>/``.
+-> per run (:mod:`pipeline.runs`): ingest -> condition -> fit -> one netCDF file
+-> compare (:mod:`pipeline.compare`) -> ``summary.nc``, CSV tables
+-> report (:mod:`pipeline.report`) -> ``processed/<campaign>/report.html``.
 
-One bad run does not stop a campaign: its error is recorded, the other runs
-are processed, and the summary lists the failures. ``raw/`` is only read.
+* One bad run does not stop a campaign: its error is recorded, the other runs
+  are processed, and the summary lists the failures. ``raw/`` is only read.
+* Incremental: a run is redone only when its input key changes (the raw file's
+  SHA-256, its run-sheet entry, its chain and wheel definitions, the stiffness
+  it uses and the chainbench version); the summary and report only when one of
+  their inputs does. ``force=True`` redoes everything.
+* Safe: every output is written to a temporary file and renamed; one process
+  at a time writes a campaign's outputs (:mod:`pipeline.store.lock`); a run
+  interrupted at any point is completed by the next.
+* Scale-out: with a dask.distributed ``client``, each run is a task.
 """
 
 from __future__ import annotations
 
-import math
-import warnings
-from collections.abc import Callable
+import hashlib
+import json
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import pandas as pd
 import xarray as xr
 
+from pipeline import __version__
 from pipeline.compare import ChainInput, impact_summary, stiffness_summary
-from pipeline.condition.engagement import SpeedMismatchWarning, detect_events
-from pipeline.condition.tensile import condition_tensile
-from pipeline.errors import ChainbenchError, FitError, RunSheetError
-from pipeline.fit.impact import extract_impacts
+from pipeline.errors import ChainbenchError, FitError, IngestError
 from pipeline.fit.impact_model import ImpactModelFit, fit_impact_model
-from pipeline.fit.stiffness import SpecimenStiffness, fit_stiffness, specimen_stiffness
-from pipeline.ingest import read_table
+from pipeline.fit.stiffness import SpecimenStiffness
+from pipeline.report.build import build_report
+from pipeline.runs import (
+    Progress,
+    chain_stiffness_for,
+    operating_point,
+    process_engagement_run,
+    process_tensile_run,
+)
 from pipeline.runsheet import RunDef, RunSheet, load_run_sheet
-from pipeline.store.engagement import engagement_dataset, operating_point
+from pipeline.store.engagement import measured_point
+from pipeline.store.lock import campaign_lock, remove_stale_temporaries
 from pipeline.store.netcdf import (
     provenance_attrs,
     read_dataset,
+    read_scalars,
     sha256_of,
     write_atomic,
     write_text_atomic,
 )
-from pipeline.store.tensile import tensile_dataset
-from pipeline.units import to_si
+from pipeline.store.tensile import specimen_from
 
-#: Called as ``progress(run_id, stage)`` while a campaign is processed.
-Progress = Callable[[str, str], None]
+if TYPE_CHECKING:
+    from distributed import Client
+
+#: Name of the attribute holding the key of the inputs a file was made from.
+INPUT_KEY = "input_key"
 
 
 @dataclass(frozen=True)
@@ -67,10 +84,25 @@ class CampaignResult:
     summary: xr.Dataset
     run_files: dict[str, Path] = field(default_factory=dict)
     failures: list[RunFailure] = field(default_factory=list)
+    report: Path | None = None  #: the report written, None when it could not be built
+    report_error: str | None = None  #: why the report could not be built
+    redone: list[str] = field(default_factory=list)  #: runs processed this time
+    reused: list[str] = field(default_factory=list)  #: runs whose stored result was current
+    warnings: dict[str, list[str]] = field(default_factory=dict)  #: per run
 
     @property
     def ok(self) -> bool:
-        return not self.failures
+        return not self.failures and self.report_error is None
+
+
+@dataclass(frozen=True)
+class _Plan:
+    """One run to do (or reuse): its inputs and their key."""
+
+    run: RunDef
+    raw_sha256: str
+    E0: float | None  #: chain stiffness of an engagement run [N]
+    key: str
 
 
 def default_output(campaign_folder: Path) -> Path:
@@ -80,123 +112,80 @@ def default_output(campaign_folder: Path) -> Path:
     return root / "processed" / campaign_folder.name
 
 
-def read_run(sheet: RunSheet, run: RunDef):
-    """Read a run's raw file into the canonical table, as its run-sheet entry says."""
-    columns = run.columns.model_dump(exclude_none=True) if run.columns else None
-    units = run.units.model_dump(exclude_none=True) if run.units else None
-    return read_table(sheet.run_file(run), kind=run.kind, columns=columns, units=units,
-                      format=run.format, sheet=run.sheet)
+def _digest(document) -> str:
+    text = json.dumps(document, sort_keys=True, default=str)
+    return hashlib.sha256(text.encode()).hexdigest()
 
 
-def _attrs(sheet: RunSheet, run: RunDef, title: str) -> dict[str, str]:
+def _plan(sheet: RunSheet, run: RunDef, output: Path) -> _Plan:
     raw = sheet.run_file(run)
-    attrs = provenance_attrs(
-        title=title,
-        source=("chainbench virtual test bench (synthetic)" if sheet.campaign.synthetic
-                else sheet.campaign.machine or "testing machine"),
-        run_sheet_sha256=sheet.sha256,
-        raw_file=run.file,
-        raw_sha256=sha256_of(raw),
-        run_entry=sheet.entries[run.id],
-    )
-    attrs.update(campaign=sheet.campaign.id, run_id=run.id, kind=run.kind, chain=run.chain)
-    return attrs
+    if not raw.is_file():
+        raise IngestError("file not found", file=raw,
+                          hint="check the run's file name in the run sheet")
+    raw_sha256 = sha256_of(raw)
+    E0 = chain_stiffness_for(sheet, run, output) if run.kind == "engagement" else None
+    key = _digest({
+        "raw_sha256": raw_sha256, "entry": sheet.entries[run.id], "E0": E0,
+        "chain": sheet.chains[run.chain].model_dump(mode="json"),
+        "wheel": sheet.wheels[run.wheel].model_dump(mode="json") if run.wheel else None,
+        "campaign": sheet.campaign.model_dump(mode="json"), "version": __version__,
+    })
+    return _Plan(run, raw_sha256, E0, key)
 
 
-def process_tensile_run(
-    sheet: RunSheet, run: RunDef, progress: Progress | None = None
-) -> tuple[xr.Dataset, SpecimenStiffness]:
-    """Ingest, condition and fit one tensile run.
-
-    Returns
-    -------
-    (xarray.Dataset, SpecimenStiffness)
-        The run's dataset (see :mod:`pipeline.store.tensile`) and its stiffness.
-    """
-    step = progress or (lambda run_id, stage: None)
-    step(run.id, "ingest")
-    table, metadata = read_run(sheet, run)
-    step(run.id, "condition")
-    chain = sheet.chains[run.chain].si()
-    conditioned = condition_tensile(
-        table, to_si(run.gauge_length_mm, "mm"), preload=chain["preload"], n_cycles=run.cycles)
-    step(run.id, "fit")
-    window = None
-    if run.fit_window is not None:
-        window = (to_si(run.fit_window.force_low_kN, "kN"),
-                  to_si(run.fit_window.force_high_kN, "kN"))
-    fits = fit_stiffness(conditioned, force_window=window)
-    specimen = specimen_stiffness(fits)
-    attrs = _attrs(sheet, run, f"Tensile test {run.id} of campaign {sheet.campaign.id}")
-    attrs.update(specimen=run.specimen or "", layout=metadata.layout,
-                 ingest_warnings="; ".join(metadata.warnings))
-    return tensile_dataset(conditioned, fits, specimen, attrs), specimen
+def _stored(path: Path) -> tuple[dict[str, float], dict[str, str]] | None:
+    """Scalars and attributes of a stored result, or None when absent or unreadable."""
+    if not path.is_file():
+        return None
+    try:
+        return read_scalars(path)
+    except OSError:  # unreadable: redo it
+        return None
 
 
-def chain_stiffness_for(sheet: RunSheet, run: RunDef, output: Path) -> float:
-    """E0 [N] of an engagement run: ``E0_N`` of the run sheet, or ``stiffness_from``.
-
-    ``stiffness_from = "<campaign>/<chain>"`` takes ``E0_exp`` of that chain from
-    the processed ``summary.nc`` of another campaign (beside `output`).
-    """
-    if run.E0_N is not None:
-        return run.E0_N
-    if run.stiffness_from is None:
-        raise RunSheetError(
-            f"run {run.id} needs the chain stiffness", file=sheet.path, column="E0_N",
-            hint='give E0_N = ... [N] or stiffness_from = "<campaign>/<chain>"')
-    campaign, _, chain = run.stiffness_from.partition("/")
-    source = output.parent / campaign / "summary.nc"
-    if not source.is_file():
-        raise RunSheetError(
-            f"no processed stiffness campaign at {source}", file=sheet.path,
-            column="stiffness_from", hint=f"process campaign {campaign!r} first")
-    summary = read_dataset(source)
-    if chain not in summary.get("chain", []):
-        raise RunSheetError(
-            f"campaign {campaign!r} has no chain {chain!r}", file=sheet.path,
-            column="stiffness_from", hint=f"its chains: {list(summary.get('chain', []).values)}")
-    value = float(summary["E0_exp"].sel(chain=chain))
-    if not math.isfinite(value):
-        raise RunSheetError(f"chain {chain!r} of {campaign!r} has no measured E0",
-                            file=sheet.path, column="stiffness_from")
-    return value
+def _process(sheet: RunSheet, plan: _Plan, output: Path, progress: Progress | None) -> Path:
+    """Process one run and store its dataset (a dask task when a client is given)."""
+    progress = progress or (lambda run_id, stage: None)
+    if plan.run.kind == "tensile":
+        dataset = process_tensile_run(sheet, plan.run, plan.raw_sha256, progress)
+    else:
+        dataset = process_engagement_run(sheet, plan.run, plan.raw_sha256, plan.E0, progress)
+    dataset.attrs[INPUT_KEY] = plan.key
+    return write_atomic(dataset, output / f"{plan.run.id}.nc")
 
 
-def process_engagement_run(
-    sheet: RunSheet, run: RunDef, output: Path, progress: Progress | None = None
-) -> tuple[xr.Dataset, dict[str, float]]:
-    """Ingest one engagement log, detect its events and extract the impact tensions.
+def _failure(sheet: RunSheet, run: RunDef, error: Exception, debug: bool) -> RunFailure:
+    if debug and not isinstance(error, ChainbenchError):
+        raise error
+    if isinstance(error, ChainbenchError) and error.file is None:
+        error.file = str(sheet.run_file(run))  # stages after ingest know no file
+    return RunFailure(run.id, error)
 
-    Returns
-    -------
-    (xarray.Dataset, dict)
-        The run's dataset (see :mod:`pipeline.store.engagement`) and its
-        operating point (the model's inputs in SI and the measured medians).
-    """
-    step = progress or (lambda run_id, stage: None)
-    step(run.id, "ingest")
-    raw = sheet.run_file(run)
-    table, metadata = read_run(sheet, run)
-    chain, wheel = sheet.chains[run.chain].si(), sheet.wheels[run.wheel]
-    point = {"teeth": wheel.teeth, "apex_angle": math.radians(wheel.apex_angle_deg),
-             "omega": run.omega, "t": chain["t"], "d": chain["d"],
-             "mass_per_length": chain["mass_per_length"],
-             "E0": chain_stiffness_for(sheet, run, output), "branch_length": run.branch_length_m}
-    step(run.id, "detect events")
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", SpeedMismatchWarning)  # kept in events.messages
-        natural = math.sqrt(point["E0"] / (point["mass_per_length"] * run.branch_length_m ** 2))
-        events = detect_events(table, z=wheel.teeth, omega=run.omega,
-                               natural_frequency=natural, file=raw)
-    step(run.id, "extract impacts")
-    clip = to_si(run.clip_level_kN, "kN") if run.clip_level_kN is not None else None
-    result = extract_impacts(table, events, clip_level=clip, file=raw)
-    attrs = _attrs(sheet, run, f"Engagement log {run.id} of campaign {sheet.campaign.id}")
-    attrs.update(wheel=run.wheel, layout=metadata.layout,
-                 ingest_warnings="; ".join(metadata.warnings))
-    point.update(operating_point(events, result))
-    return engagement_dataset(table, events, result, attrs), point
+
+def _execute(sheet: RunSheet, plans: list[_Plan], output: Path, progress: Progress | None,
+             debug: bool, client: Client | None) -> tuple[dict[str, Path], list[RunFailure]]:
+    """Process `plans` serially, or as dask tasks on `client`."""
+    done, failures = {}, []
+    if client is None:
+        for plan in plans:
+            try:
+                done[plan.run.id] = _process(sheet, plan, output, progress)
+            except Exception as error:  # one bad run must not stop the campaign
+                failures.append(_failure(sheet, plan.run, error, debug))
+        return done, failures
+    from distributed import as_completed
+
+    futures = {client.submit(_process, sheet, plan, output, None, key=f"run-{plan.key}"): plan
+               for plan in plans}
+    for future in as_completed(futures):
+        plan = futures[future]
+        try:
+            done[plan.run.id] = future.result()
+        except Exception as error:
+            failures.append(_failure(sheet, plan.run, error, debug))
+        if progress:
+            progress(plan.run.id, "done")
+    return done, failures
 
 
 def _impact_fit(points: pd.DataFrame) -> tuple[ImpactModelFit | None, list[str]]:
@@ -232,59 +221,37 @@ def summary_table(summary: xr.Dataset, dim: str) -> pd.DataFrame:
     return summary[columns].to_dataframe()
 
 
-def process_campaign(
-    path: str | Path,
-    output: str | Path | None = None,
-    progress: Progress | None = None,
-    debug: bool = False,
-) -> CampaignResult:
-    """Process every run of a campaign and write its results.
-
-    Parameters
-    ----------
-    path : str or Path
-        The campaign folder (holding ``campaign.toml``) or the run sheet.
-    output : str or Path, optional
-        Output folder; default ``processed/<campaign>`` (see :func:`default_output`).
-    progress : callable, optional
-        Called as ``progress(run_id, stage)`` at each stage.
-    debug : bool
-        Re-raise unexpected (non-chainbench) errors instead of recording them.
-
-    Returns
-    -------
-    CampaignResult
-        The summary dataset, the written run files and the failures.
-
-    Raises
-    ------
-    RunSheetError
-        When the run sheet as a whole is unusable.
-    """
-    sheet = load_run_sheet(path)
-    output = Path(output) if output is not None else default_output(sheet.folder)
-    failures = [RunFailure(_invalid_run_id(error), error) for error in sheet.invalid_runs]
-    run_files: dict[str, Path] = {}
+def _collect(sheet: RunSheet, plans: dict[str, _Plan], stored: dict[str, tuple]):
+    """Each stored run's result: specimen stiffness per chain, operating points, warnings."""
     specimens: dict[str, list[SpecimenStiffness]] = {}
     points: dict[str, dict[str, float]] = {}
-
+    notes: dict[str, list[str]] = {}
     for run in sheet.runs:
-        try:
-            if run.kind == "tensile":
-                dataset, specimen = process_tensile_run(sheet, run, progress)
-                specimens.setdefault(run.chain, []).append(specimen)
-            else:
-                dataset, points[run.id] = process_engagement_run(sheet, run, output, progress)
-        except Exception as error:  # one bad run must not stop the campaign
-            if debug and not isinstance(error, ChainbenchError):
-                raise
-            if isinstance(error, ChainbenchError) and error.file is None:
-                error.file = str(sheet.run_file(run))  # stages after ingest know no file
-            failures.append(RunFailure(run.id, error))
+        if run.id not in stored:
             continue
-        run_files[run.id] = write_atomic(dataset, output / f"{run.id}.nc")
+        scalars, attrs = stored[run.id]
+        if run.kind == "tensile":
+            specimens.setdefault(run.chain, []).append(specimen_from(scalars))
+        else:
+            points[run.id] = {**operating_point(sheet, run, plans[run.id].E0),
+                              **measured_point(scalars)}
+        found = [attrs.get(name, "") for name in ("ingest_warnings", "warnings", "messages")]
+        notes[run.id] = [text for joined in found for text in joined.split("; ") if text]
+    return specimens, points, {run_id: found for run_id, found in notes.items() if found}
 
-    parts, notes = [_failures_dataset(failures)], []
+
+def _runs_dataset(sheet: RunSheet, stored: list[str]) -> xr.Dataset:
+    kinds = {run.id: run.kind for run in sheet.runs}
+    return xr.Dataset(
+        {"run_kind": ("run", [kinds[run_id] for run_id in stored],
+                      {"long_name": "kind of the run (tensile or engagement)"})},
+        coords={"run": list(stored)},
+    )
+
+
+def _summary(sheet: RunSheet, stored: list[str], specimens, points,
+             failures: list[RunFailure]) -> xr.Dataset:
+    parts, notes = [_runs_dataset(sheet, stored), _failures_dataset(failures)], []
     chain_keys = sorted({run.chain for run in sheet.runs if run.kind == "tensile"})
     if chain_keys:
         band = tuple(value / 100 for value in sheet.campaign.discrepancy_band_pct)
@@ -298,13 +265,110 @@ def process_campaign(
     summary.attrs.update(provenance_attrs(
         title=sheet.campaign.title or f"Campaign {sheet.campaign.id}",
         source=sheet.campaign.machine, run_sheet_sha256=sheet.sha256))
-    summary.attrs.update(campaign=sheet.campaign.id, synthetic=int(sheet.campaign.synthetic))
+    summary.attrs.update(campaign=sheet.campaign.id, synthetic=int(sheet.campaign.synthetic),
+                         lab=sheet.campaign.lab, campaign_note=sheet.campaign.note)
+    return summary
+
+
+def _write_summary(summary: xr.Dataset, output: Path) -> None:
     write_atomic(summary, output / "summary.nc")
     for dim, name in (("chain", "summary.csv"), ("operating_point", "impact_summary.csv")):
         if summary.sizes.get(dim, 0):
             csv = summary_table(summary, dim).to_csv(float_format="%.6g")
             write_text_atomic(csv, output / name)
-    return CampaignResult(sheet.campaign.id, output, summary, run_files, failures)
+
+
+def _summary_is_current(output: Path, key: str) -> bool:
+    found = _stored(output / "summary.nc")
+    return found is not None and found[1].get(INPUT_KEY) == key and (
+        output / "report.html").is_file()
+
+
+def process_campaign(
+    path: str | Path,
+    output: str | Path | None = None,
+    progress: Progress | None = None,
+    debug: bool = False,
+    force: bool = False,
+    client: Client | None = None,
+) -> CampaignResult:
+    """Process the runs of a campaign whose inputs changed, and write its results.
+
+    Parameters
+    ----------
+    path : str or Path
+        The campaign folder (holding ``campaign.toml``) or the run sheet.
+    output : str or Path, optional
+        Output folder; default ``processed/<campaign>`` (see :func:`default_output`).
+    progress : callable, optional
+        Called as ``progress(run_id, stage)`` at each stage.
+    debug : bool
+        Re-raise unexpected (non-chainbench) errors instead of recording them.
+    force : bool
+        Redo every run, the summary and the report, changed or not.
+    client : distributed.Client, optional
+        Process the runs as tasks on this dask cluster (default: in this process).
+
+    Returns
+    -------
+    CampaignResult
+        The summary dataset, the run files, the failures, the report (a report
+        that cannot be built is recorded in ``report_error``; the results
+        written before it are kept), and which runs were redone or reused.
+
+    Raises
+    ------
+    RunSheetError
+        When the run sheet as a whole is unusable.
+    CampaignBusyError
+        When another process is writing the same outputs.
+    """
+    sheet = load_run_sheet(path)
+    output = Path(output) if output is not None else default_output(sheet.folder)
+    with campaign_lock(output):
+        remove_stale_temporaries(output)
+        failures = [RunFailure(_invalid_run_id(error), error) for error in sheet.invalid_runs]
+        plans: dict[str, _Plan] = {}
+        for run in sheet.runs:
+            try:
+                plans[run.id] = _plan(sheet, run, output)
+            except Exception as error:
+                failures.append(_failure(sheet, run, error, debug))
+        stored = {run_id: _stored(output / f"{run_id}.nc") for run_id in plans}
+        current = {run_id: found for run_id, found in stored.items()
+                   if not force and found is not None and found[1].get(INPUT_KEY) == plans[
+                       run_id].key}
+        todo = [plan for run_id, plan in plans.items() if run_id not in current]
+        for run_id in current:
+            if progress:
+                progress(run_id, "unchanged")
+        done, failed = _execute(sheet, todo, output, progress, debug, client)
+        failures += failed
+        current.update({run_id: read_scalars(path) for run_id, path in done.items()})
+        files = {run_id: output / f"{run_id}.nc" for run_id in current}
+        specimens, points, run_warnings = _collect(sheet, plans, current)
+        key = _digest({"runs": {run_id: plans[run_id].key for run_id in sorted(files)},
+                       "failures": [failure.message for failure in failures],
+                       "sheet": sheet.sha256, "version": __version__})
+        result = CampaignResult(
+            sheet.campaign.id, output, xr.Dataset(), files, failures,
+            redone=[plan.run.id for plan in todo],
+            reused=[run_id for run_id in plans if run_id in current and run_id not in done],
+            warnings=run_warnings)
+        if not force and _summary_is_current(output, key):
+            result.summary = read_dataset(output / "summary.nc")
+            result.report = output / "report.html"
+            return result
+        result.summary = _summary(sheet, list(files), specimens, points, failures)
+        result.summary.attrs[INPUT_KEY] = key
+        _write_summary(result.summary, output)
+        try:  # the results are written: a failing report loses nothing but itself
+            result.report = build_report(output)
+        except Exception as error:
+            if debug and not isinstance(error, ChainbenchError):
+                raise
+            result.report_error = RunFailure("report", error).message
+    return result
 
 
 def _invalid_run_id(error: ChainbenchError) -> str:
@@ -312,11 +376,11 @@ def _invalid_run_id(error: ChainbenchError) -> str:
     return (error.column or "runs").split(".")[0]
 
 
-def run_campaign(path: str | Path, output: str | Path | None = None) -> xr.Dataset:
+def run_campaign(path: str | Path, output: str | Path | None = None, *, force: bool = False,
+                 client: Client | None = None) -> xr.Dataset:
     """Process a campaign and return its summary (the Python API of ``chainbench run``).
 
     For example, ``run_campaign("raw/stiffness-demo")["E0_exp"].sel(chain="c18x64")``
     is the measured stiffness of chain 18x64 [N], with ``E0_theory`` beside it.
     """
-    return process_campaign(path, output).summary
-
+    return process_campaign(path, output, force=force, client=client).summary

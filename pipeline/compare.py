@@ -168,6 +168,9 @@ _POINT_VARIABLES = {
     "N_u2_fit": ("N", "impact tension 2 of the model with the fitted k"),
     "E0": ("N", "chain stiffness used by the model"),
     "branch_length": ("m", "length of the active chain branch"),
+    "t": ("m", "chain pitch"),
+    "d": ("m", "bar diameter of the chain links"),
+    "mass_per_length": ("kg m-1", "chain mass per metre (q/g)"),
 }
 
 

@@ -45,6 +45,11 @@ class ChainbenchError(Exception):
         self.hint = hint
         super().__init__(self.__str__())
 
+    def __reduce__(self):
+        """Pickle with every field, so that errors raised in dask workers arrive whole."""
+        fields = {"file": self.file, "row": self.row, "column": self.column, "hint": self.hint}
+        return (_restore, (type(self), self.message, fields))
+
     def __str__(self) -> str:
         where = []
         if self.file is not None:
@@ -57,6 +62,10 @@ class ChainbenchError(Exception):
         if self.hint:
             text += f" (hint: {self.hint})"
         return text
+
+
+def _restore(cls: type[ChainbenchError], message: str, fields: dict) -> ChainbenchError:
+    return cls(message, **fields)
 
 
 class RunSheetError(ChainbenchError):

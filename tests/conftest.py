@@ -21,5 +21,5 @@ def processed_demos(tmp_path_factory) -> Path:
         if not folder.is_dir():
             pytest.skip(f"demo campaign {folder} is absent")
         result = process_campaign(folder, root / name)
-        assert result.ok, [failure.message for failure in result.failures]
+        assert result.ok, ([failure.message for failure in result.failures], result.report_error)
     return root

@@ -5,7 +5,7 @@ from __future__ import annotations
 import typer
 
 from pipeline import __version__
-from pipeline.cli import inspect, run
+from pipeline.cli import inspect, report, run
 from pipeline.cli.simulate import simulate_app
 from pipeline.cli.theory import theory_app
 
@@ -18,6 +18,7 @@ app.add_typer(theory_app, name="theory")
 app.command("inspect")(inspect.command)
 app.command("run")(run.run_command)
 app.command("validate")(run.validate_command)
+app.command("report")(report.command)
 app.add_typer(simulate_app, name="simulate")
 
 

@@ -12,9 +12,10 @@ import typer
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
-from pipeline.campaign import CampaignResult, process_campaign, read_run, summary_table
+from pipeline.campaign import CampaignResult, process_campaign, summary_table
 from pipeline.cli._output import console
 from pipeline.errors import ChainbenchError
+from pipeline.runs import read_run
 from pipeline.runsheet import RUN_SHEET_NAME, load_run_sheet
 
 RAW = Path("raw")
@@ -110,9 +111,17 @@ def _print_result(result: CampaignResult) -> None:
                 f"{float(summary['k_fit_ci_high']):.4g}; Ryabov: k = 2)", highlight=False)
     for note in filter(None, summary.attrs.get("notes", "").split("\n")):
         console.print(f"[yellow]note[/yellow] {note}", highlight=False)
+    for run_id, found in result.warnings.items():
+        for warning in found:
+            console.print(f"[yellow]warning[/yellow] {run_id}: {warning}", highlight=False)
     for failure in result.failures:
         console.print(f"[red]failed[/red] {failure.run_id}: {failure.message}", highlight=False)
-    console.print(f"results in {result.output}", highlight=False)
+    console.print(f"{len(result.redone)} run(s) processed, {len(result.reused)} unchanged; "
+                  f"results in {result.output}", highlight=False)
+    if result.report is not None:
+        console.print(f"report: {result.report}", highlight=False)
+    else:
+        console.print(f"[red]report not written[/red]: {result.report_error}", highlight=False)
 
 
 def _result_json(result: CampaignResult) -> dict:
@@ -130,37 +139,70 @@ def _result_json(result: CampaignResult) -> dict:
         "operating_points": tables.get("operating_point", []),
         **scalars,
         "failed_runs": [{"run": f.run_id, "error": f.message} for f in result.failures],
+        "warnings": result.warnings,
+        "redone": result.redone,
+        "reused": result.reused,
+        "report": str(result.report) if result.report else None,
     }
+
+
+@contextmanager
+def _dask_client(workers: int | None, scheduler: str | None):
+    """A dask.distributed client: a local cluster of `workers` processes, or `scheduler`'s."""
+    if workers is None and scheduler is None:
+        yield None
+        return
+    if workers is not None and scheduler is not None:
+        raise typer.BadParameter("give --workers or --scheduler, not both")
+    from distributed import Client, LocalCluster
+
+    if scheduler is not None:
+        with Client(scheduler) as client:
+            yield client
+        return
+    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                      dashboard_address=None) as cluster, Client(cluster) as client:
+        yield client
 
 
 def run_command(
     campaigns: CampaignArgs = None,
     output_root: Annotated[Path, typer.Option("--output", help="Root of the outputs.")] = PROCESSED,
+    force: Annotated[bool, typer.Option("--force", help="Redo every run, changed or not.")] = False,
+    workers: Annotated[int | None, typer.Option(
+        "--workers", min=1, help="Process runs on a local dask cluster of N workers.")] = None,
+    scheduler: Annotated[str | None, typer.Option(
+        "--scheduler", help="Process runs on an existing dask scheduler (ADDRESS).")] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks.")] = False,
 ) -> None:
-    """Process campaigns: ingest, condition, fit, store and compare."""
+    """Process campaigns: ingest, condition, fit, store, compare and report.
+
+    Runs whose inputs did not change since the last run are not redone.
+    """
     all_ok, documents = True, []
-    for folder in campaign_folders(campaigns):
-        if not as_json:
-            console.print(f"[bold]campaign {folder}[/bold]", highlight=False)
-        try:
-            total = len(load_run_sheet(folder).runs)
-            with _progress_reporter(total) as progress:
-                result = process_campaign(folder, output_root / folder.name,
-                                          progress=None if as_json else progress, debug=debug)
-        except ChainbenchError as error:
-            if debug:
-                raise
-            all_ok = False
-            console.print(f"[red]error[/red] {error}", highlight=False)
-            documents.append({"campaign": str(folder), "error": str(error)})
-            continue
-        all_ok &= result.ok
-        if as_json:
-            documents.append(_result_json(result))
-        else:
-            _print_result(result)
+    with _dask_client(workers, scheduler) as client:
+        for folder in campaign_folders(campaigns):
+            if not as_json:
+                console.print(f"[bold]campaign {folder}[/bold]", highlight=False)
+            try:
+                total = len(load_run_sheet(folder).runs)
+                with _progress_reporter(total) as progress:
+                    result = process_campaign(
+                        folder, output_root / folder.name, progress=None if as_json else progress,
+                        debug=debug, force=force, client=client)
+            except ChainbenchError as error:
+                if debug:
+                    raise
+                all_ok = False
+                console.print(f"[red]error[/red] {error}", highlight=False)
+                documents.append({"campaign": str(folder), "error": str(error)})
+                continue
+            all_ok &= result.ok
+            if as_json:
+                documents.append(_result_json(result))
+            else:
+                _print_result(result)
     if as_json:
         print(json.dumps(documents, indent=2))
     raise typer.Exit(0 if all_ok else 1)

@@ -121,13 +121,20 @@ def engagement_dataset(
     return dataset
 
 
-def operating_point(events: EngagementEvents, result: ImpactResult) -> dict[str, float]:
-    """The run's measured impact tensions as one row of the campaign's operating points."""
+def measured_point(dataset: Mapping) -> dict[str, float]:
+    """The run's measured impact tensions, as stored by :func:`engagement_dataset`.
+
+    `dataset` is the run's dataset or any mapping of its scalar variables
+    (:func:`pipeline.store.netcdf.read_scalars`).
+
+    Keys: ``N_u1_meas``, ``N_u1_iqr``, ``N_u1_stderr``, ``N_u1_count`` (and the
+    same for ``N_u2``) and ``omega_measured``: one row of the campaign's
+    operating points.
+    """
     row = {}
     for impact in ("N_u1", "N_u2"):
-        stats = result.statistics[impact]
-        row.update({f"{impact}_meas": stats.median, f"{impact}_iqr": stats.iqr,
-                    f"{impact}_stderr": stats.stderr, f"{impact}_count": stats.count})
-    row["omega_measured"] = events.omega
+        row[f"{impact}_meas"] = float(dataset[f"{impact}_median"])
+        for statistic in ("iqr", "stderr", "count"):
+            row[f"{impact}_{statistic}"] = float(dataset[f"{impact}_{statistic}"])
+    row["omega_measured"] = float(dataset["omega_measured"])
     return row
-

@@ -19,11 +19,15 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
+import netCDF4
 import xarray as xr
 
 from pipeline import __version__
 
 CONVENTIONS = "CF-1.10"
+
+#: Permissions of written outputs (``mkstemp`` creates its files private: 0600).
+FILE_MODE = 0o644
 
 
 def sha256_of(path: str | Path) -> str:
@@ -92,6 +96,7 @@ def write_atomic(dataset: xr.Dataset, path: str | Path) -> Path:
     os.close(handle)
     try:
         dataset.to_netcdf(temporary, format="NETCDF4", engine="netcdf4")
+        os.chmod(temporary, FILE_MODE)
         os.replace(temporary, path)
     except BaseException:
         Path(temporary).unlink(missing_ok=True)
@@ -107,6 +112,7 @@ def write_text_atomic(text: str, path: str | Path) -> Path:
     try:
         with os.fdopen(handle, "w", encoding="utf-8", newline="\n") as stream:
             stream.write(text)
+        os.chmod(temporary, FILE_MODE)
         os.replace(temporary, path)
     except BaseException:
         Path(temporary).unlink(missing_ok=True)
@@ -118,3 +124,23 @@ def read_dataset(path: str | Path) -> xr.Dataset:
     """Load a chainbench netCDF file fully into memory (the file is closed on return)."""
     with xr.open_dataset(path, engine="netcdf4") as dataset:
         return dataset.load()
+
+
+def read_scalars(path: str | Path) -> tuple[dict[str, float], dict[str, str]]:
+    """The scalar variables and the global attributes of a netCDF file, read cheaply.
+
+    Opens the file with netCDF4 directly (no xarray decoding, no arrays read):
+    what a re-run needs to decide whether a stored result is current and to
+    build the campaign summary from it.
+
+    Returns
+    -------
+    (dict, dict)
+        Scalar variable name -> value (fill values as NaN), attribute -> value.
+    """
+    with netCDF4.Dataset(path) as stored:
+        stored.set_auto_mask(False)
+        attrs = {name: stored.getncattr(name) for name in stored.ncattrs()}
+        scalars = {name: variable[...].item() for name, variable in stored.variables.items()
+                   if variable.ndim == 0 and variable.dtype.kind in "fiu"}
+    return scalars, attrs

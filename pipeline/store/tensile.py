@@ -48,6 +48,7 @@ SPECIMEN_VARIABLES = {
     "E0_first_stderr": ("N", "standard error of the first-cycle stiffness"),
     "E0_unloading": ("N", "mean unloading stiffness of cycles 2..n"),
     "birge_ratio": ("1", "scatter of the counted cycles over their standard errors"),
+    "dof": ("1", "degrees of freedom of the specimen's interval"),
 }
 
 
@@ -139,6 +140,17 @@ def tensile_dataset(
     dataset["gauge_disagreement"] = ((), run.gauge_disagreement, {
         "units": "1", "long_name": "gauge spread per unit mean elongation (bending)"})
     dataset.attrs.update(attrs)
-    dataset.attrs["n_cycles_counted"] = specimen.n_cycles
+    dataset["specimen_n_cycles"] = ((), specimen.n_cycles, {
+        "units": "1", "long_name": "loading branches counted in the specimen stiffness"})
     dataset.attrs["warnings"] = "; ".join(run.warnings)
     return dataset
+
+
+def specimen_from(dataset: Mapping) -> SpecimenStiffness:
+    """The specimen's stiffness as stored by :func:`tensile_dataset` (the inverse).
+
+    `dataset` is the run's dataset or any mapping of its scalar variables
+    (:func:`pipeline.store.netcdf.read_scalars`).
+    """
+    values = {name: float(dataset[f"specimen_{name}"]) for name in SPECIMEN_VARIABLES}
+    return SpecimenStiffness(n_cycles=int(dataset["specimen_n_cycles"]), **values)

@@ -69,3 +69,10 @@ def test_sha256_of_matches_hashlib(tmp_path):
     data = bytes(range(256)) * 5000
     path.write_bytes(data)
     assert sha256_of(path) == hashlib.sha256(data).hexdigest()
+
+
+def test_outputs_are_readable_by_others(tmp_path):
+    netcdf = write_atomic(sample(), tmp_path / "run.nc")
+    text = write_text_atomic("a\n", tmp_path / "report.html")
+    assert netcdf.stat().st_mode & 0o777 == 0o644
+    assert text.stat().st_mode & 0o777 == 0o644

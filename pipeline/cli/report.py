@@ -1,0 +1,59 @@
+"""``chainbench report CAMPAIGN``: rebuild a campaign's report from ``processed/`` alone."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from pipeline.campaign import default_output
+from pipeline.cli._output import console
+from pipeline.errors import ChainbenchError
+from pipeline.report.build import SUMMARY_NAME, build_report
+from pipeline.store.lock import campaign_lock
+
+
+def processed_folder(target: Path) -> Path:
+    """The processed campaign folder `target` names.
+
+    Parameters
+    ----------
+    target : Path
+        A processed folder (``processed/<campaign>``, holding ``summary.nc``),
+        a raw campaign folder (``raw/<campaign>``, mapped to
+        ``processed/<campaign>``) or a campaign id.
+
+    Raises
+    ------
+    ChainbenchError
+        When neither `target` nor its processed folder holds a summary.
+    """
+    if (target / SUMMARY_NAME).is_file():
+        return target
+    processed = default_output(target)
+    if (processed / SUMMARY_NAME).is_file():
+        return processed
+    raise ChainbenchError(
+        f"no processed results for {target}", file=processed / SUMMARY_NAME,
+        hint=f"process the campaign first (chainbench run raw/{target.name}), or name a "
+             "processed/<campaign> folder")
+
+
+def command(
+    campaign: Annotated[Path, typer.Argument(
+        help="A processed folder (processed/<campaign>), or a raw campaign folder "
+             "(raw/<campaign>) whose processed folder is rebuilt.", show_default=False)],
+    debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks.")] = False,
+) -> None:
+    """Rebuild the report of a processed campaign, from processed/ alone; print its path."""
+    try:
+        folder = processed_folder(campaign)
+        with campaign_lock(folder):  # not while a run writes the same outputs
+            report = build_report(folder)
+    except ChainbenchError as error:
+        if debug:
+            raise
+        console.print(f"[red]error[/red] {error}", highlight=False)
+        raise typer.Exit(1) from None
+    print(report)

@@ -1,0 +1,550 @@
+"""The campaign report: ``processed/<campaign>/report.html`` from the processed files alone.
+
+:func:`build_report` reads ``summary.nc`` and the run files of a processed
+campaign folder (never ``raw/``), builds the figures (matplotlib, rendered
+as deterministic inline SVG by :func:`pipeline.report.render.svg`) and fills
+the jinja2 template ``templates/report.html.j2``. The result is one
+self-contained HTML file: CSS inline, no script, no network.
+
+Sections: summary (what was tested, every check with its verdict), stiffness
+(Paper 001), impact (Paper 000), design checks of Papers 002-004 where the
+campaign's chains fit them, published values not reproduced, provenance.
+
+Safety: the template autoescapes everything; only the SVG of our own renderer
+is inserted verbatim (``|safe`` on ``svg`` fields), and matplotlib escapes
+the text it draws, so a string from an input (run id, specimen, chain key,
+title, note, error message) is always shown as text.
+
+Reproducible: the same processed folder and the same `created` give the same
+bytes; the creation time appears on one line of the report.
+"""
+
+from __future__ import annotations
+
+import inspect
+import json
+import math
+import re
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from datetime import UTC, datetime
+from pathlib import Path
+from typing import Any
+
+import jinja2
+import numpy as np
+import xarray as xr
+
+from pipeline import __version__
+from pipeline.errors import ChainbenchError
+from pipeline.fit import stiffness as stiffness_fit
+from pipeline.report import design_figures, impact_figures, stiffness_figures
+from pipeline.report.render import report_style, svg
+from pipeline.store.netcdf import read_dataset, write_text_atomic
+from pipeline.theory.wheel_impact import RYABOV_MASS_SHARE
+from pipeline.units import from_si
+
+#: The campaign summary in a processed folder.
+SUMMARY_NAME = "summary.nc"
+#: The report written beside it.
+REPORT_NAME = "report.html"
+#: The jinja2 template (``pipeline/report/templates``).
+TEMPLATE_NAME = "report.html.j2"
+
+#: Shown where a value is missing (NaN).
+MISSING = "–"
+
+
+@dataclass(frozen=True)
+class RunFile:
+    """A processed run file of the campaign and its global attributes."""
+
+    path: Path
+    attrs: dict[str, Any]
+
+    @property
+    def run_id(self) -> str:
+        return str(self.attrs.get("run_id", self.path.stem))
+
+    @property
+    def kind(self) -> str:
+        return str(self.attrs.get("kind", ""))
+
+    def load(self) -> xr.Dataset:
+        """The whole dataset, in memory."""
+        return read_dataset(self.path)
+
+
+def number(value: float, digits: int = 4) -> str:
+    """`value` to `digits` significant digits, thin-space thousands; :data:`MISSING` for NaN."""
+    value = float(value)
+    if not math.isfinite(value):
+        return MISSING
+    if value == 0:
+        return "0"
+    decimals = max(0, digits - 1 - math.floor(math.log10(abs(value))))
+    return f"{value:,.{decimals}f}".replace(",", "\u2009")
+
+
+def plain_number(value: float) -> str:
+    """`value` in the shortest form (``6``, ``20``, ``2.54``); :data:`MISSING` for NaN."""
+    value = float(value)
+    return f"{value:.6g}" if math.isfinite(value) else MISSING
+
+
+def percent(value: float, decimals: int = 2) -> str:
+    """A ratio as a percentage with `decimals` decimals (``0.0586`` -> ``"5.86 %"``)."""
+    value = float(value)
+    return f"{100 * value:.{decimals}f} %" if math.isfinite(value) else MISSING
+
+
+def interval(low: float, high: float, format_value=number) -> str:
+    """``low … high`` (or :data:`MISSING`)."""
+    if not (math.isfinite(float(low)) and math.isfinite(float(high))):
+        return MISSING
+    return f"{format_value(low)} … {format_value(high)}"
+
+
+def kilonewtons(value: float) -> str:
+    """A force [N] in kN, 5 significant digits."""
+    return number(float(value) / 1e3, 5)
+
+
+def timestamp(created: datetime) -> str:
+    """ISO 8601 UTC stamp of `created` (a naive time is taken as UTC)."""
+    if created.tzinfo is None:
+        created = created.replace(tzinfo=UTC)
+    return created.astimezone(UTC).strftime("%Y-%m-%dT%H:%M:%SZ")
+
+
+def natural_key(text: str) -> list[int | str]:
+    """Sort key putting ``E8-20`` before ``E10-20``: digit runs compare as numbers."""
+    return [int(part) if part.isdigit() else part for part in re.split(r"(\d+)", text)]
+
+
+def campaign_runs(output_dir: Path, summary: xr.Dataset) -> list[RunFile]:
+    """The run files the summary was made from (its ``run`` labels), in natural order of ids.
+
+    Files of runs since removed from the run sheet, or of earlier attempts of
+    runs that failed this time, are not results of this summary and are not shown.
+    """
+    runs = []
+    for run_id in summary["run"].values if "run" in summary.coords else []:
+        path = output_dir / f"{run_id}.nc"
+        with xr.open_dataset(path, engine="netcdf4") as dataset:
+            runs.append(RunFile(path, dict(dataset.attrs)))
+    return sorted(runs, key=lambda run: natural_key(run.run_id))
+
+
+def _band(summary: xr.Dataset) -> tuple[float, float]:
+    low, high = (float(value) for value in summary.attrs["band"].split())
+    return low, high
+
+
+def _has(summary: xr.Dataset, dim: str) -> bool:
+    return summary.sizes.get(dim, 0) > 0
+
+
+def _tested(summary: xr.Dataset) -> str:
+    """One phrase saying what the campaign tested."""
+    parts = []
+    if _has(summary, "chain"):
+        specimens = int(summary["n_specimens"].sum())
+        parts.append(f"tensile tests of {specimens} specimen(s) of {summary.sizes['chain']} "
+                     "chain(s) for their static stiffness E0")
+    if _has(summary, "operating_point"):
+        parts.append(f"engagement logs of a chain on chain wheels at "
+                     f"{summary.sizes['operating_point']} operating point(s) for the impact "
+                     "tensions N_u1 and N_u2")
+    return "; ".join(parts) or "no run could be processed"
+
+
+def _campaign(summary: xr.Dataset, created: datetime) -> dict[str, Any]:
+    attrs = summary.attrs
+    return {
+        "id": str(attrs.get("campaign", "")),
+        "title": str(attrs.get("title", "")),
+        "lab": str(attrs.get("lab", "")),
+        "machine": str(attrs.get("source", "")),
+        "note": str(attrs.get("campaign_note", "")),
+        "synthetic": bool(int(attrs.get("synthetic", 0))),
+        "tested": _tested(summary),
+        "created": timestamp(created),
+        "version": __version__,
+    }
+
+
+def _status(passed: bool | None) -> str:
+    return {True: "pass", False: "fail", None: "info"}[passed]
+
+
+def _band_checks(summary: xr.Dataset) -> Iterable[dict[str, str]]:
+    low, high = _band(summary)
+    for chain in summary["chain"].values:
+        row = summary.sel(chain=chain)
+        verdict = float(row["in_band"])
+        passed = None if not math.isfinite(verdict) else bool(verdict)
+        result = {None: "not checked", True: "in band", False: "out of band"}[passed]
+        spread = interval(row["discrepancy_ci_low"], row["discrepancy_ci_high"], percent)
+        detail = (f"d = (E0_exp − E0_theory) / E0_theory = {percent(row['discrepancy'])} "
+                  f"(95 % interval {spread})" if passed is not None
+                  else "no experimental or no theoretical E0")
+        yield {"check": f"E0 of chain {chain} within {100 * low:g} to {100 * high:g} % "
+                        "above theory", "result": result, "status": _status(passed),
+               "detail": detail}
+
+
+def _impact_checks(summary: xr.Dataset) -> Iterable[dict[str, str]]:
+    k, low, high = (float(summary[name]) for name in ("k_fit", "k_fit_ci_low", "k_fit_ci_high"))
+    fitted = math.isfinite(k)
+    yield {"check": "impact model (Paper 000, eq. (16)) fitted to the measured N_u1, N_u2",
+           "result": "fitted" if fitted else "not fitted", "status": _status(fitted),
+           "detail": (f"k = {number(k)} (95 % interval {interval(low, high)})" if fitted
+                      else "see the notes")}
+    if fitted:
+        inside = low <= RYABOV_MASS_SHARE <= high
+        yield {"check": f"Ryabov's k = {RYABOV_MASS_SHARE:g} inside the 95 % interval of the "
+                        "fitted k", "result": "yes" if inside else "no",
+               "status": _status(inside), "detail": f"interval {interval(low, high)}"}
+
+
+def _checks(summary: xr.Dataset, runs: Sequence[RunFile]) -> list[dict[str, str]]:
+    """Every check of the campaign as rows: check, result, status, detail."""
+    failures = _failures(summary)
+    total = len(runs) + len(failures)
+    rows = [{"check": "runs processed", "result": f"{len(runs)} of {total}",
+             "status": _status(not failures),
+             "detail": "" if not failures else f"{len(failures)} failed, listed below"}]
+    if _has(summary, "chain"):
+        rows.extend(_band_checks(summary))
+    if _has(summary, "operating_point"):
+        rows.extend(_impact_checks(summary))
+    rows.extend({"check": f"run {run_id}", "result": "failed", "status": "fail",
+                 "detail": error} for run_id, error in failures)
+    return rows
+
+
+def _failures(summary: xr.Dataset) -> list[tuple[str, str]]:
+    if not _has(summary, "failed_run"):
+        return []
+    return [(str(run), str(error)) for run, error in
+            zip(summary["failed_run"].values, summary["error"].values, strict=True)]
+
+
+def _kgf(value: float) -> str:
+    return f"{number(from_si(float(value), 'kgf') / 1e6, 3)}·10⁶ kgf" \
+        if math.isfinite(float(value)) else ""
+
+
+def _chain_rows(summary: xr.Dataset) -> list[dict[str, str]]:
+    rows = []
+    for chain in summary["chain"].values:
+        row = summary.sel(chain=chain)
+        published_exp, published_theory = (float(row[name]) for name in
+                                           ("E0_exp_published", "E0_theory_published"))
+        verdict = float(row["in_band"])
+        rows.append({
+            "chain": str(chain),
+            "specimens": str(int(row["n_specimens"])),
+            "E0_exp": kilonewtons(row["E0_exp"]),
+            "E0_exp_interval": interval(row["E0_exp_ci_low"] / 1e3, row["E0_exp_ci_high"] / 1e3,
+                                        lambda v: number(v, 5)),
+            "E0_theory": kilonewtons(row["E0_theory"]),
+            "E0_theory_exact": kilonewtons(row["E0_theory_exact"]),
+            "published_exp": kilonewtons(published_exp),
+            "published_exp_kgf": _kgf(published_exp),
+            "published_theory": kilonewtons(published_theory),
+            "published_theory_kgf": _kgf(published_theory),
+            "discrepancy": percent(row["discrepancy"]),
+            "discrepancy_interval": interval(row["discrepancy_ci_low"],
+                                             row["discrepancy_ci_high"], percent),
+            "discrepancy_vs_exp": percent(row["discrepancy_vs_exp"]),
+            "published_discrepancy": percent((published_exp - published_theory)
+                                             / published_theory),
+            "verdict": ("not checked" if not math.isfinite(verdict)
+                        else "in band" if verdict else "out of band"),
+            "status": _status(None if not math.isfinite(verdict) else bool(verdict)),
+        })
+    return rows
+
+
+def _specimen_row(run: xr.Dataset) -> dict[str, str]:
+    return {
+        "run": str(run.attrs.get("run_id", "")),
+        "specimen": str(run.attrs.get("specimen", "")),
+        "chain": str(run.attrs.get("chain", "")),
+        "E0": kilonewtons(run["specimen_E0"]),
+        "E0_interval": interval(run["specimen_E0_ci_low"] / 1e3, run["specimen_E0_ci_high"] / 1e3,
+                                lambda v: number(v, 5)),
+        "cycles": plain_number(run["specimen_n_cycles"]),
+        "E0_first": kilonewtons(run["specimen_E0_first"]),
+        "E0_unloading": kilonewtons(run["specimen_E0_unloading"]),
+        "birge": number(run["specimen_birge_ratio"], 3),
+        "bending": percent(run["gauge_disagreement"], 1),
+    }
+
+
+def _fit_rows(run: xr.Dataset) -> list[dict[str, str]]:
+    rows = []
+    for cycle in run["cycle"].values:
+        for branch in run["branch"].values:
+            fit = run.sel(cycle=cycle, branch=branch)
+            rows.append({
+                "cycle": str(int(cycle)), "branch": str(branch),
+                "E0": kilonewtons(fit["fit_E0"]),
+                "interval": interval(fit["fit_E0_ci_low"] / 1e3, fit["fit_E0_ci_high"] / 1e3,
+                                     lambda v: number(v, 5)),
+                "window": interval(fit["fit_window_low"] / 1e3, fit["fit_window_high"] / 1e3,
+                                   lambda v: number(v, 3)),
+                "points": plain_number(fit["fit_n_points"]),
+                "r2": f"{float(fit['fit_r2']):.6f}" if math.isfinite(float(fit["fit_r2"]))
+                else MISSING,
+                "rms": number(fit["fit_residual_rms"], 3),
+            })
+    return rows
+
+
+def _stiffness(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
+    """Figures and tables of the stiffness section."""
+    chains = [str(chain) for chain in summary["chain"].values]
+    tensile = [run.load() for run in runs if run.kind == "tensile"]
+    tensile.sort(key=lambda run: (chains.index(run.attrs["chain"])
+                                  if run.attrs.get("chain") in chains else len(chains),
+                                  natural_key(str(run.attrs.get("run_id")))))
+    low, high = _band(summary)
+    return {
+        "band": f"{100 * low:g} to {100 * high:g} %",
+        "overview_svg": svg(stiffness_figures.stiffness_by_specimen(summary, tensile)),
+        "chains": _chain_rows(summary),
+        "specimens": [_specimen_row(run) for run in tensile],
+        "runs": [{
+            **_specimen_row(run),
+            "warnings": "; ".join(filter(None, (str(run.attrs.get("warnings", "")),
+                                                str(run.attrs.get("ingest_warnings", ""))))),
+            "curve_svg": svg(stiffness_figures.force_strain(run)),
+            "residual_svg": svg(stiffness_figures.fit_residuals(run)),
+            "fits": _fit_rows(run),
+        } for run in tensile],
+    }
+
+
+def _linearity_note(summary: xr.Dataset) -> str:
+    """How straight the measured N_u are in omega, per wheel (eq. (16): N_u ∝ omega)."""
+    keys = np.stack([summary[name].values for name in
+                     ("teeth", "apex_angle", "E0", "branch_length")], axis=1)
+    omega = summary["omega"].values
+    r2s, intercepts = [], []
+    for key in np.unique(keys, axis=0):
+        group = np.all(keys == key, axis=1)
+        for impact in ("N_u1_meas", "N_u2_meas"):
+            measured = summary[impact].values[group]
+            keep = np.isfinite(measured)
+            x, y = omega[group][keep], measured[keep]
+            if np.unique(x).size < 3:
+                continue
+            slope, intercept = np.polyfit(x, y, 1)
+            total = float(np.sum((y - y.mean()) ** 2))
+            if total > 0:
+                r2s.append(1 - float(np.sum((y - slope * x - intercept) ** 2)) / total)
+            intercepts.append(abs(intercept) / float(np.max(np.abs(y))))
+    if not r2s:
+        return ("Linearity in ω not checked: no wheel was run at three or more speeds "
+                "(eq. (16) makes N_u proportional to ω).")
+    return (f"Eq. (16) makes N_u proportional to ω. Straight lines through each wheel's measured "
+            f"medians ({len(r2s)} lines: wheels × impacts) give R² ≥ {min(r2s):.4f}, and their "
+            f"intercepts are at most {percent(max(intercepts), 1)} of N_u at the highest speed "
+            "(proportional: R² = 1, intercept 0).")
+
+
+def _point_rows(summary: xr.Dataset) -> list[dict[str, str]]:
+    rows = []
+    for point in summary["operating_point"].values:
+        row = summary.sel(operating_point=point)
+        cells = {"run": str(point), "z": plain_number(row["teeth"]),
+                 "psi": plain_number(row["apex_angle"]), "omega": plain_number(row["omega"])}
+        for impact in ("N_u1", "N_u2"):
+            cells[f"{impact}_meas"] = number(row[f"{impact}_meas"])
+            cells[f"{impact}_stderr"] = number(row[f"{impact}_stderr"], 2)
+            cells[f"{impact}_count"] = plain_number(row[f"{impact}_count"])
+            cells[f"{impact}_theory"] = number(row[f"{impact}_theory"])
+            cells[f"{impact}_fit"] = number(row[f"{impact}_fit"])
+        rows.append(cells)
+    return rows
+
+
+def _impact(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
+    """Figures and tables of the impact section."""
+    by_id = {run.run_id: run for run in runs if run.kind == "engagement"}
+    zoomed = next((by_id[str(point)] for point in summary["operating_point"].values
+                   if str(point) in by_id), None)
+    figures = []
+    with report_style():
+        if zoomed is not None:
+            figures.append({"caption": f"Run {zoomed.run_id}: a stretch of the branch-tension "
+                                       "log with the detected impacts marked.",
+                            "svg": svg(impact_figures.impact_zoom(zoomed.load()))})
+        figures.append({"caption": "Measured impact tensions against wheel speed, with the "
+                                   f"model for k = {RYABOV_MASS_SHARE:g} and for the fitted k.",
+                        "svg": svg(impact_figures.impact_vs_omega(summary))})
+        figures.append({"caption": "Impact tensions against the tooth apex angle, per number "
+                                   "of teeth (as Paper 000, figures 3 and 4).",
+                        "svg": svg(impact_figures.impact_vs_apex(summary))})
+    k = {name: float(summary[name]) for name in
+         ("k_fit", "k_fit_stderr", "k_fit_ci_low", "k_fit_ci_high", "k_fit_chi2_reduced")}
+    comparison = sorted({str(run.attrs.get("comparison", "")) for run in by_id.values()} - {""})
+    return {
+        "figures": figures,
+        "points": _point_rows(summary),
+        "k_fitted": math.isfinite(k["k_fit"]),
+        "k": number(k["k_fit"]),
+        "k_stderr": number(k["k_fit_stderr"], 2),
+        "k_interval": interval(k["k_fit_ci_low"], k["k_fit_ci_high"]),
+        "k_chi2": number(k["k_fit_chi2_reduced"], 3),
+        "k_ryabov": f"{RYABOV_MASS_SHARE:g}",
+        "linearity": _linearity_note(summary),
+        "comparison": ", ".join(comparison),
+    }
+
+
+def _design(summary: xr.Dataset) -> list[dict[str, str]]:
+    with report_style():
+        return [{"title": title, "svg": svg(figure)}
+                for title, figure in design_figures.design_checks(summary)]
+
+
+def _not_reproduced() -> list[dict[str, str]]:
+    """Published numbers the models do not give: published as printed, model to 4 digits."""
+    rows = []
+    for row in design_figures.published_not_reproduced():
+        cells = {key: str(row.get(key, "")) for key in
+                 ("paper", "quantity", "inputs", "unit", "note")}
+        published = number(row["published"], 6)
+        cells["published"] = published.rstrip("0").rstrip(".") if "." in published \
+            else published
+        cells["model"] = number(row["model"], 4)
+        cells["difference"] = percent(row["model"] / row["published"] - 1, 1)
+        rows.append(cells)
+    return rows
+
+
+def _window_setting(runs: Sequence[RunFile]) -> str:
+    automatic = (f"automatic per branch: the least normalised residual over windows on a grid of "
+                 f"{100 * stiffness_fit.WINDOW_STEP:g} % of the branch's force range, spanning at "
+                 f"least {100 * stiffness_fit.MIN_SPAN:g} % of it (as ASTM E3076), each limit "
+                 f"moved inward while the slope changes by more than "
+                 f"{stiffness_fit.GUARD_Z:g} standard deviations (curvature guard)")
+    given = sorted(run.run_id for run in runs if run.kind == "tensile"
+                   and json.loads(str(run.attrs.get("run_entry") or "{}")).get("fit_window"))
+    if given:
+        return f"{automatic}; runs {', '.join(given)}: the window of the run sheet"
+    return automatic
+
+
+def _provenance(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
+    confidence = inspect.signature(stiffness_fit.combine_specimens).parameters["confidence"]
+    settings = []
+    if _has(summary, "chain"):
+        low, high = _band(summary)
+        settings += [
+            ("stiffness fit window", _window_setting(runs)),
+            ("specimen E0", "mean of the loading slopes of cycles 2..n; cycle 1 (seating) and "
+                            "the unloading branches reported beside it"),
+            ("discrepancy band", f"{100 * low:g} to {100 * high:g} % for "
+                                 "d = (E0_exp − E0_theory) / E0_theory"),
+            ("theoretical E0", "Paper 001 eq. (20) with the printed coefficients (exact "
+                               "Maxwell-Mohr coefficients beside)"),
+        ]
+    settings.append(("confidence level", f"{100 * confidence.default:g} % (Student's t)"))
+    if _has(summary, "operating_point"):
+        settings.append(("impact model fit", "k of Paper 000 eq. (16) by weighted least "
+                         "squares (lmfit) over every operating point, each weighted by the "
+                         "standard error of its run median; the error scaled by the Birge "
+                         "ratio when the points scatter more than their errors"))
+    return {
+        "processed_with": str(summary.attrs.get("chainbench_version", "")),
+        "run_sheet_sha256": str(summary.attrs.get("run_sheet_sha256", "")),
+        "files": [{"run": run.run_id, "kind": run.kind,
+                   "file": str(run.attrs.get("raw_file", "")),
+                   "sha256": str(run.attrs.get("raw_sha256", "")),
+                   "layout": str(run.attrs.get("layout", ""))} for run in runs],
+        "settings": settings,
+    }
+
+
+def report_context(summary: xr.Dataset, runs: Sequence[RunFile], created: datetime
+                   ) -> dict[str, Any]:
+    """Everything the template shows, as strings, lists and dicts (figures as SVG).
+
+    Parameters
+    ----------
+    summary : xarray.Dataset
+        The campaign's ``summary.nc``.
+    runs : sequence of RunFile
+        Its run files (:func:`campaign_runs`).
+    created : datetime
+        Creation time of the report.
+
+    Returns
+    -------
+    dict
+        ``campaign``, ``checks``, ``notes``, ``stiffness`` (or None),
+        ``impact`` (or None), ``design``, ``not_reproduced``, ``provenance``.
+    """
+    notes = [line for line in str(summary.attrs.get("notes", "")).split("\n") if line]
+    return {
+        "campaign": _campaign(summary, created),
+        "checks": _checks(summary, runs),
+        "notes": notes,
+        "stiffness": _stiffness(summary, runs) if _has(summary, "chain") else None,
+        "impact": _impact(summary, runs) if _has(summary, "operating_point") else None,
+        "design": _design(summary),
+        "not_reproduced": _not_reproduced(),
+        "provenance": _provenance(summary, runs),
+    }
+
+
+def environment() -> jinja2.Environment:
+    """The jinja2 environment of the report: package templates, autoescape on."""
+    return jinja2.Environment(
+        loader=jinja2.PackageLoader("pipeline.report", "templates"),
+        autoescape=True,
+        undefined=jinja2.StrictUndefined,
+        trim_blocks=True,
+        lstrip_blocks=True,
+        keep_trailing_newline=True,
+    )
+
+
+def build_report(output_dir: str | Path, created: datetime | None = None) -> Path:
+    """Build ``report.html`` of a processed campaign from its processed files alone.
+
+    Parameters
+    ----------
+    output_dir : str or Path
+        The processed campaign folder (``processed/<campaign>``) holding
+        ``summary.nc`` and the run files.
+    created : datetime, optional
+        Creation time written in the report (default: now, UTC); with the same
+        folder and the same `created` the report is the same, byte for byte.
+
+    Returns
+    -------
+    Path
+        The report written (atomically) into `output_dir`.
+
+    Raises
+    ------
+    ChainbenchError
+        When `output_dir` holds no ``summary.nc``.
+    """
+    output_dir = Path(output_dir)
+    summary_path = output_dir / SUMMARY_NAME
+    if not summary_path.is_file():
+        raise ChainbenchError(
+            "no processed campaign here (summary.nc is missing)", file=summary_path,
+            hint="process the campaign first: chainbench run raw/<campaign>")
+    summary = read_dataset(summary_path)
+    runs = campaign_runs(output_dir, summary)
+    context = report_context(summary, runs, created or datetime.now(UTC))
+    html = environment().get_template(TEMPLATE_NAME).render(**context)
+    return write_text_atomic(html, output_dir / REPORT_NAME)

@@ -1,0 +1,150 @@
+"""One run, top to bottom: ingest, condition, fit, and its dataset.
+
+Each function takes the validated run sheet and one of its runs and returns
+the run's :class:`xarray.Dataset` (see :mod:`pipeline.store.tensile` and
+:mod:`pipeline.store.engagement`). They read the raw file and nothing else is
+written here; :mod:`pipeline.campaign` decides what is run and stores it.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Callable
+from pathlib import Path
+
+import xarray as xr
+
+from pipeline.condition.engagement import SpeedMismatchWarning, detect_events
+from pipeline.condition.tensile import condition_tensile
+from pipeline.errors import RunSheetError
+from pipeline.fit.impact import extract_impacts
+from pipeline.fit.stiffness import fit_stiffness, specimen_stiffness
+from pipeline.ingest import read_table
+from pipeline.runsheet import RunDef, RunSheet
+from pipeline.store.engagement import engagement_dataset
+from pipeline.store.netcdf import provenance_attrs, read_dataset
+from pipeline.store.tensile import tensile_dataset
+from pipeline.units import to_si
+
+#: Called as ``progress(run_id, stage)`` while a run is processed.
+Progress = Callable[[str, str], None]
+
+
+def _quiet(run_id: str, stage: str) -> None:
+    """The default progress callback: says nothing."""
+
+
+def read_run(sheet: RunSheet, run: RunDef):
+    """Read a run's raw file into the canonical table, as its run-sheet entry says."""
+    columns = run.columns.model_dump(exclude_none=True) if run.columns else None
+    units = run.units.model_dump(exclude_none=True) if run.units else None
+    return read_table(sheet.run_file(run), kind=run.kind, columns=columns, units=units,
+                      format=run.format, sheet=run.sheet)
+
+
+def _attrs(sheet: RunSheet, run: RunDef, title: str, raw_sha256: str) -> dict[str, str]:
+    attrs = provenance_attrs(
+        title=title,
+        source=("chainbench virtual test bench (synthetic)" if sheet.campaign.synthetic
+                else sheet.campaign.machine or "testing machine"),
+        run_sheet_sha256=sheet.sha256,
+        raw_file=run.file,
+        raw_sha256=raw_sha256,
+        run_entry=sheet.entries[run.id],
+    )
+    attrs.update(campaign=sheet.campaign.id, run_id=run.id, kind=run.kind, chain=run.chain)
+    return attrs
+
+
+def process_tensile_run(
+    sheet: RunSheet, run: RunDef, raw_sha256: str, progress: Progress = _quiet
+) -> xr.Dataset:
+    """Ingest, condition and fit one tensile run; its dataset holds the specimen's E0."""
+    progress(run.id, "ingest")
+    table, metadata = read_run(sheet, run)
+    progress(run.id, "condition")
+    chain = sheet.chains[run.chain].si()
+    conditioned = condition_tensile(
+        table, to_si(run.gauge_length_mm, "mm"), preload=chain["preload"], n_cycles=run.cycles)
+    progress(run.id, "fit")
+    window = None
+    if run.fit_window is not None:
+        window = (to_si(run.fit_window.force_low_kN, "kN"),
+                  to_si(run.fit_window.force_high_kN, "kN"))
+    fits = fit_stiffness(conditioned, force_window=window)
+    attrs = _attrs(sheet, run, f"Tensile test {run.id} of campaign {sheet.campaign.id}",
+                   raw_sha256)
+    attrs.update(specimen=run.specimen or "", layout=metadata.layout,
+                 ingest_warnings="; ".join(metadata.warnings))
+    return tensile_dataset(conditioned, fits, specimen_stiffness(fits), attrs)
+
+
+def chain_stiffness_for(sheet: RunSheet, run: RunDef, output: Path) -> float:
+    """E0 [N] of an engagement run: ``E0_N`` of the run sheet, or ``stiffness_from``.
+
+    ``stiffness_from = "<campaign>/<chain>"`` takes ``E0_exp`` of that chain from
+    the processed ``summary.nc`` of another campaign (beside `output`).
+    """
+    if run.E0_N is not None:
+        return run.E0_N
+    if run.stiffness_from is None:
+        raise RunSheetError(
+            f"run {run.id} needs the chain stiffness", file=sheet.path, column="E0_N",
+            hint='give E0_N = ... [N] or stiffness_from = "<campaign>/<chain>"')
+    campaign, _, chain = run.stiffness_from.partition("/")
+    source = output.parent / campaign / "summary.nc"
+    if not source.is_file():
+        raise RunSheetError(
+            f"no processed stiffness campaign at {source}", file=sheet.path,
+            column="stiffness_from", hint=f"process campaign {campaign!r} first")
+    summary = read_dataset(source)
+    if chain not in summary.get("chain", []):
+        raise RunSheetError(
+            f"campaign {campaign!r} has no chain {chain!r}", file=sheet.path,
+            column="stiffness_from", hint=f"its chains: {list(summary.get('chain', []).values)}")
+    value = float(summary["E0_exp"].sel(chain=chain))
+    if not math.isfinite(value):
+        raise RunSheetError(f"chain {chain!r} of {campaign!r} has no measured E0",
+                            file=sheet.path, column="stiffness_from")
+    return value
+
+
+def operating_point(sheet: RunSheet, run: RunDef, E0: float) -> dict[str, float]:
+    """The model's inputs of an engagement run [SI]: Paper 000's operating point."""
+    chain, wheel = sheet.chains[run.chain].si(), sheet.wheels[run.wheel]
+    return {"teeth": wheel.teeth, "apex_angle": math.radians(wheel.apex_angle_deg),
+            "omega": run.omega, "t": chain["t"], "d": chain["d"],
+            "mass_per_length": chain["mass_per_length"], "E0": E0,
+            "branch_length": run.branch_length_m}
+
+
+def process_engagement_run(
+    sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float, progress: Progress = _quiet
+) -> xr.Dataset:
+    """Ingest one engagement log, detect its events and extract the impact tensions.
+
+    Parameters
+    ----------
+    E0 : float
+        Chain stiffness [N] (:func:`chain_stiffness_for`): it sets the expected
+        natural frequency of the branch, sqrt(E0 / (m L^2)).
+    """
+    progress(run.id, "ingest")
+    raw = sheet.run_file(run)
+    table, metadata = read_run(sheet, run)
+    point = operating_point(sheet, run, E0)
+    progress(run.id, "detect events")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", SpeedMismatchWarning)  # kept in events.messages
+        natural = math.sqrt(E0 / (point["mass_per_length"] * run.branch_length_m ** 2))
+        events = detect_events(table, z=point["teeth"], omega=run.omega,
+                               natural_frequency=natural, file=raw)
+    progress(run.id, "extract impacts")
+    clip = to_si(run.clip_level_kN, "kN") if run.clip_level_kN is not None else None
+    result = extract_impacts(table, events, clip_level=clip, file=raw)
+    attrs = _attrs(sheet, run, f"Engagement log {run.id} of campaign {sheet.campaign.id}",
+                   raw_sha256)
+    attrs.update(wheel=run.wheel, layout=metadata.layout,
+                 ingest_warnings="; ".join(metadata.warnings))
+    return engagement_dataset(table, events, result, attrs)

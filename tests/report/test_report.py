@@ -1,0 +1,183 @@
+"""The campaign report: sections, figures, escaping, provenance, determinism, CLI."""
+
+from __future__ import annotations
+
+import hashlib
+import html
+import re
+import shutil
+from datetime import UTC, datetime
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from pipeline.campaign import process_campaign
+from pipeline.cli import app
+from pipeline.report.build import build_report
+from pipeline.report.design_figures import design_checks, published_not_reproduced
+from pipeline.store.netcdf import read_dataset
+from pipeline.theory.link_stiffness import TABLE_1_PUBLISHED
+from pipeline.units import to_si
+
+ROOT = Path(__file__).parents[2]
+SCRIPT = "<script>alert(1)</script>"
+CREATED = datetime(2024, 5, 6, 7, 8, 9, tzinfo=UTC)
+SECTIONS = ("summary", "stiffness", "impact", "design", "not-reproduced", "provenance")
+
+#: Two of Table 1's chains, two specimens each, and a run whose file is empty.
+TENSILE_RUNS = ("T13-A", "T13-B", "T18-A", "T18-B")
+#: One wheel at three speeds and a second wheel: enough to fit k and check linearity.
+ENGAGEMENT_RUNS = ("E8-40-10", "E8-40-20", "E8-40-30", "E10-20-20")
+BROKEN_RUN = """
+[[runs]]
+id = "T18-empty"
+kind = "tensile"
+file = "empty.csv"
+chain = "c18x64"
+specimen = "18x64-E"
+gauge_length_mm = 900
+"""
+
+runner = CliRunner()
+
+
+def _subset(demo: str, target: Path, runs: tuple[str, ...]) -> Path:
+    """A copy of a demo campaign with only `runs` (header tables kept; files copied)."""
+    source = ROOT / "raw" / demo
+    if not source.is_dir():
+        pytest.skip(f"demo campaign {source} is absent")
+    header, *blocks = (source / "campaign.toml").read_text().split("\n[[runs]]\n")
+    kept = [block for block in blocks if re.search(r'^id = "([^"]+)"', block, re.M)[1] in runs]
+    target.mkdir(parents=True)
+    for block in kept:
+        name = re.search(r'^file = "([^"]+)"', block, re.M)[1]
+        shutil.copy(source / name, target / name)
+    (target / "campaign.toml").write_text("\n[[runs]]\n".join([header, *kept]))
+    return target
+
+
+@pytest.fixture(scope="module")
+def lab(tmp_path_factory) -> Path:
+    """``raw/`` with a small tensile and a small engagement campaign, processed."""
+    root = tmp_path_factory.mktemp("lab")
+    tensile = _subset("stiffness-demo", root / "raw" / "mini-stiffness", TENSILE_RUNS)
+    sheet = tensile / "campaign.toml"
+    text = sheet.read_text().replace('id = "stiffness-demo"', 'id = "mini-stiffness"')
+    text = text.replace('specimen = "13x50-A"', f'specimen = "{SCRIPT}"')
+    sheet.write_text(text + BROKEN_RUN)
+    (tensile / "empty.csv").write_text("")
+    engagement = _subset("engagement-demo", root / "raw" / "mini-engagement", ENGAGEMENT_RUNS)
+    sheet = engagement / "campaign.toml"
+    sheet.write_text(sheet.read_text().replace('id = "engagement-demo"', 'id = "mini-engagement"'))
+    for folder in (tensile, engagement):
+        result = process_campaign(folder, root / "processed" / folder.name)
+        assert result.report == root / "processed" / folder.name / "report.html"
+        assert result.report_error is None
+    return root
+
+
+def _report(lab: Path, campaign: str) -> str:
+    return (lab / "processed" / campaign / "report.html").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("campaign", ["mini-stiffness", "mini-engagement"])
+def test_sections_and_figures(lab, campaign):
+    text = _report(lab, campaign)
+    for section in SECTIONS:
+        assert f'<section id="{section}">' in text
+    summary = read_dataset(lab / "processed" / campaign / "summary.nc")
+    expected = len(design_checks(summary))
+    if campaign == "mini-stiffness":
+        expected += 1 + 2 * len(TENSILE_RUNS)  # overview; force-strain and residuals per run
+    else:
+        expected += 3  # log zoom, N_u against omega, N_u against apex angle
+    assert text.count("<svg") == expected
+    assert "<script" not in text.lower()
+    assert "SYNTHETIC DATA" in text  # the demos are synthetic
+
+
+def test_input_strings_are_escaped(lab):
+    text = _report(lab, "mini-stiffness")
+    assert html.escape(SCRIPT, quote=False) in text
+    assert SCRIPT not in text
+    # the failed run and its error are listed
+    assert "run T18-empty" in text
+    assert "empty.csv" in text
+
+
+def test_table_1_published_values_beside_the_paper_chains(lab):
+    text = _report(lab, "mini-stiffness")
+    for chain in ("13x50", "18x64"):
+        row = TABLE_1_PUBLISHED[chain]
+        for kgf in (row.E0_exp_kgf, row.E0_theor_kgf):
+            kilonewtons = f"{to_si(kgf, 'kgf') / 1e3:,.0f}".replace(",", "\u2009")
+            assert kilonewtons in text
+            assert f"{kgf / 1e6:.3g}·10⁶ kgf" in text
+    assert "out of band" in text  # 13x50 and 18x64 lie above the band in the demo
+
+
+def test_values_not_reproduced_are_listed(lab):
+    text = _report(lab, "mini-stiffness")
+    section = text[text.index('<section id="not-reproduced">'):
+                   text.index('<section id="provenance">')]
+    rows = published_not_reproduced()
+    assert rows
+    for row in rows:
+        assert html.escape(row["quantity"], quote=False) in section
+    assert "2.54" in section and "3.521" in section  # Paper 000's N_u2 / N_u1, both numbers
+
+
+@pytest.mark.parametrize("campaign", ["mini-stiffness", "mini-engagement"])
+def test_provenance_lists_raw_hashes(lab, campaign):
+    text = _report(lab, campaign)
+    raw = lab / "raw" / campaign
+    runs = TENSILE_RUNS if campaign == "mini-stiffness" else ENGAGEMENT_RUNS
+    for run in runs:
+        (data,) = [path for path in raw.iterdir() if path.stem == run]
+        assert hashlib.sha256(data.read_bytes()).hexdigest() in text
+    assert hashlib.sha256((raw / "campaign.toml").read_bytes()).hexdigest() in text
+
+
+def test_same_inputs_same_bytes(lab, tmp_path):
+    output = shutil.copytree(lab / "processed" / "mini-stiffness", tmp_path / "mini-stiffness")
+    built_now = (output / "report.html").read_bytes()  # by process_campaign, created now
+    first = build_report(output, created=CREATED).read_bytes()
+    second = build_report(output, created=CREATED).read_bytes()
+    assert first == second
+    changed = [pair for pair in zip(first.splitlines(), built_now.splitlines(), strict=True)
+               if pair[0] != pair[1]]
+    assert len(changed) == 1 and b"2024-05-06T07:08:09Z" in changed[0][0]
+
+
+def test_cli_report_from_processed_alone(lab, tmp_path):
+    output = shutil.copytree(lab / "processed" / "mini-engagement", tmp_path / "elsewhere")
+    (output / "report.html").unlink()
+    result = runner.invoke(app, ["report", str(output)])
+    assert result.exit_code == 0, result.output
+    assert result.stdout.strip() == str(output / "report.html")
+    assert "<svg" in (output / "report.html").read_text(encoding="utf-8")
+
+
+def test_cli_report_maps_raw_to_processed(lab, monkeypatch):
+    monkeypatch.chdir(lab)
+    result = runner.invoke(app, ["report", "raw/mini-engagement"])
+    assert result.exit_code == 0, result.output
+    assert Path(result.stdout.strip()) == lab / "processed" / "mini-engagement" / "report.html"
+    missing = runner.invoke(app, ["report", "raw/no-such-campaign"])
+    assert missing.exit_code == 1
+    assert "no processed results for raw/no-such-campaign" in " ".join(missing.output.split())
+
+
+def test_failed_report_keeps_the_results(lab, tmp_path, monkeypatch):
+    def broken(output_dir, created=None):
+        raise RuntimeError("no figures today")
+
+    monkeypatch.setattr("pipeline.campaign.build_report", broken)
+    raw = lab / "raw" / "mini-engagement"
+    result = process_campaign(raw, tmp_path / "out")
+    assert result.report is None and "no figures today" in result.report_error
+    assert not result.ok
+    assert (tmp_path / "out" / "summary.nc").is_file()
+    assert (tmp_path / "out" / "impact_summary.csv").is_file()
+    assert not (tmp_path / "out" / "report.html").exists()
