@@ -181,3 +181,62 @@ def test_failed_report_keeps_the_results(lab, tmp_path, monkeypatch):
     assert (tmp_path / "out" / "summary.nc").is_file()
     assert (tmp_path / "out" / "impact_summary.csv").is_file()
     assert not (tmp_path / "out" / "report.html").exists()
+
+
+# --- in a real browser: headless Chromium (Debian's), driven by Playwright ---------------------
+
+CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+#: Flags for a headless Chromium on a machine with no network (see the env docs).
+CHROMIUM_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking",
+                 "--disable-component-update", "--disable-sync", "--no-first-run"]
+SCREENSHOTS = ROOT / "processed" / "screenshots"
+
+
+@pytest.fixture(scope="module")
+def browser():
+    """A headless Chromium; the test is skipped (never installs anything) when it is absent."""
+    sync_api = pytest.importorskip("playwright.sync_api")
+    if CHROMIUM is None:
+        pytest.skip("chromium is not installed (.ci/run installs Debian's chromium)")
+    with sync_api.sync_playwright() as playwright:
+        launched = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        yield launched
+        launched.close()
+
+
+def _open(browser, report: Path):
+    """The report loaded in a page, with every dialog (e.g. an alert) recorded."""
+    page = browser.new_page(viewport={"width": 1280, "height": 900})
+    page.dialogs = []
+    page.on("dialog", lambda dialog: (page.dialogs.append(dialog.message), dialog.dismiss()))
+    page.goto(report.as_uri())
+    return page
+
+
+def _rendered_figures(page) -> list[tuple[float, float]]:
+    return page.eval_on_selector_all(
+        "svg", "svgs => svgs.map(s => [s.getBoundingClientRect().width,"
+               " s.getBoundingClientRect().height])")
+
+
+def test_every_figure_renders_in_chromium_and_first_screen_is_saved(browser, processed_demos):
+    for campaign in ("stiffness-demo", "engagement-demo"):
+        report = processed_demos / campaign / "report.html"
+        page = _open(browser, report)
+        sizes = _rendered_figures(page)
+        assert len(sizes) == report.read_text(encoding="utf-8").count("<svg")
+        assert all(width > 100 and height > 100 for width, height in sizes), sizes
+        assert page.dialogs == []
+        SCREENSHOTS.mkdir(parents=True, exist_ok=True)
+        shot = SCREENSHOTS / f"{campaign}-report-first-screen.png"
+        page.screenshot(path=str(shot))
+        assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+        page.close()
+
+
+def test_input_strings_stay_text_in_chromium(browser, lab):
+    page = _open(browser, lab / "processed" / "mini-stiffness" / "report.html")
+    assert page.evaluate("document.querySelectorAll('script').length") == 0
+    assert SCRIPT in page.inner_text("body")  # shown as text, not run
+    assert page.dialogs == []  # alert(1) never ran
+    page.close()
