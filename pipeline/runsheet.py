@@ -22,16 +22,34 @@ import tomllib
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+from pydantic import (
+    AfterValidator,
+    BaseModel,
+    ConfigDict,
+    Field,
+    ValidationError,
+    model_validator,
+)
 
 from pipeline.catalog import chain as catalog_chain
 from pipeline.errors import RunSheetError
 from pipeline.units import to_si
 
 RUN_SHEET_NAME = "campaign.toml"
+#: Ids become file and folder names: letters, digits, '.', '_', '-' (and not only dots).
 SAFE_ID = r"^[A-Za-z0-9._-]+$"
+#: ``stiffness_from``: ``<campaign>/<chain>``, both safe names (it names a processed folder).
+SAFE_REFERENCE = r"^[A-Za-z0-9._-]+/[A-Za-z0-9._-]+$"
+
+
+def _no_dot_names(value: str | None) -> str | None:
+    if value is not None and any(set(part) == {"."} for part in value.split("/")):
+        raise ValueError("'.' and '..' are not names: they would point to another folder")
+    return value
+
 
 PositiveFloat = Annotated[float, Field(gt=0, allow_inf_nan=False)]
+SafeId = Annotated[str, Field(pattern=SAFE_ID, max_length=100), AfterValidator(_no_dot_names)]
 
 
 class _Strict(BaseModel):
@@ -41,7 +59,7 @@ class _Strict(BaseModel):
 class CampaignInfo(_Strict):
     """The ``[campaign]`` table."""
 
-    id: str = Field(pattern=SAFE_ID, max_length=100)
+    id: SafeId
     title: str = ""
     lab: str = ""
     machine: str = ""
@@ -142,7 +160,7 @@ class FitWindow(_Strict):
 class RunDef(_Strict):
     """One ``[[runs]]`` entry."""
 
-    id: str = Field(pattern=SAFE_ID, max_length=100)
+    id: SafeId
     kind: Literal["tensile", "engagement"]
     file: str = Field(min_length=1)
     chain: str
@@ -162,7 +180,8 @@ class RunDef(_Strict):
     omega_per_s: PositiveFloat | None = None
     rpm: PositiveFloat | None = None
     E0_N: PositiveFloat | None = None
-    stiffness_from: str | None = None
+    stiffness_from: Annotated[str | None, Field(pattern=SAFE_REFERENCE),
+                              AfterValidator(_no_dot_names)] = None
     clip_level_kN: PositiveFloat | None = None
 
     @model_validator(mode="after")
