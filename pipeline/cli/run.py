@@ -69,13 +69,13 @@ def _fmt(value: float, scale: float = 1.0, digits: int = 4) -> str:
 def _chain_table(summary) -> Table:
     low, high = (100 * float(value) for value in summary.attrs["band"].split())
     table = Table(title=f"chain stiffness E0 (lab band {low:g} to {high:g} %)")
-    for column in ("chain", "specimens", "E0_exp [kN]", "95 % interval [kN]",
-                   "E0_theory [kN]", "discrepancy [%]", "in band"):
+    for column in ("chain", "n", "E0_exp [kN]", "95 % interval", "E0_theory [kN]",
+                   "d [%]", "in band"):
         table.add_column(column, justify="right")
     for chain in summary["chain"].values:
         row = summary.sel(chain=chain)
-        interval = f"{_fmt(float(row['E0_exp_ci_low']), 1e3, 5)} .. " \
-                   f"{_fmt(float(row['E0_exp_ci_high']), 1e3, 5)}"
+        interval = (f"{_fmt(float(row['E0_exp_ci_low']), 1e3, 5)}.."
+                    f"{_fmt(float(row['E0_exp_ci_high']), 1e3, 5)}")
         table.add_row(
             str(chain), str(int(row["n_specimens"])), _fmt(float(row["E0_exp"]), 1e3, 5),
             interval, _fmt(float(row["E0_theory"]), 1e3, 5),
