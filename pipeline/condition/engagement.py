@@ -68,7 +68,14 @@ PERIOD_TOLERANCE = 0.02
 ASSUMED_DAMPING = 0.03
 
 #: Samples per ringing period of the block-averaged signal used for the onsets.
-_SAMPLES_PER_RINGING = 10
+SAMPLES_PER_RINGING = 10
+
+#: Seating periods at the head of a log that the period (autocorrelation of the
+#: onsets) and the strikes' angular phase (fold over the tooth pitch) are found from.
+HEAD_PERIODS = 200
+
+#: Welch segments at the head of a log that the natural frequency is estimated from.
+SPECTRUM_SEGMENTS = 64
 
 
 class SpeedMismatchWarning(UserWarning):
@@ -164,17 +171,48 @@ def sampling(table: pd.DataFrame, file: str | Path | None = None) -> tuple[float
     if not (np.isfinite(step) and step > 0):
         raise SignalError("the time channel does not increase", file=file, column="time",
                           hint="check the time column and its unit")
+    check_uniform(time, step, file)
+    return float(time[0]), float(1.0 / step)
+
+
+def check_uniform(time: np.ndarray, step: float, file: str | Path | None = None,
+                  first: int = 0) -> None:
+    """Check that every step of `time` lies within half a step of `step`.
+
+    Parameters
+    ----------
+    time : numpy.ndarray
+        Sample times [s], at least 2.
+    step : float
+        Mean time step of the whole log [s].
+    file : str or Path, optional
+        The log's file, for error messages.
+    first : int, optional
+        Index of ``time[0]`` in the whole log (errors name samples of the log).
+
+    Raises
+    ------
+    SignalError
+        At the worst step, when one is off (or not finite).
+    """
     steps = np.diff(time)
     if not (steps.min() >= 0.5 * step and steps.max() <= 1.5 * step):  # also catches NaN
         deviation = np.abs(steps - step)
         worst = int(np.argmax(np.where(np.isfinite(deviation), deviation, np.inf)))
         raise SignalError(
             f"the log is not uniformly sampled: time goes from {time[worst]!r} to "
-            f"{time[worst + 1]!r} s (samples {worst + 1} to {worst + 2}) where the mean step "
-            f"is {step:.6g} s", file=file, column="time",
+            f"{time[worst + 1]!r} s (samples {first + worst + 1} to {first + worst + 2}) where "
+            f"the mean step is {step:.6g} s", file=file, column="time",
             hint="a gap or a repeated block in the recording; export the log again or cut it "
                  "into uniformly sampled pieces")
-    return float(time[0]), float(1.0 / step)
+
+
+def spectrum_segment(sample_rate: float, period: float) -> int:
+    """Samples per Welch segment of :func:`natural_frequency_estimate`: about one period.
+
+    A power of 2 of at least 64 samples, `period` [s] at `sample_rate` [Hz].
+    """
+    return int(2 ** math.ceil(math.log2(max(64.0, sample_rate * period))))
 
 
 def natural_frequency_estimate(force: np.ndarray, sample_rate: float, period: float,
@@ -204,10 +242,10 @@ def natural_frequency_estimate(force: np.ndarray, sample_rate: float, period: fl
         seating harmonics merge into the branch's resonance), parabolically
         interpolated [rad/s]; good to about 10 %.
     """
-    segment = int(2 ** math.ceil(math.log2(max(64.0, sample_rate * period))))
+    segment = spectrum_segment(sample_rate, period)
     # The first difference weights the spectrum by frequency^2: the slow tension
     # (polygon effect, load changes) no longer leaks over the branch's resonance.
-    head = np.diff(force[: min(force.size, 64 * segment + 1)])
+    head = np.diff(force[: min(force.size, SPECTRUM_SEGMENTS * segment + 1)])
     frequency, power = welch(head, fs=sample_rate, nperseg=min(segment, head.size))
     low, high = 1.5 / period, 0.4 * sample_rate
     if near is not None:
@@ -276,7 +314,7 @@ def _winsorized(strength: np.ndarray) -> np.ndarray:
     return np.minimum(strength, np.percentile(strength, 99))
 
 
-def _period_from_autocorrelation(strength: np.ndarray, dt: float, stated: float) -> float:
+def period_from_autocorrelation(strength: np.ndarray, dt: float, stated: float) -> float:
     """Seating period [s] from the autocorrelation of the onsets at 0.25-4 stated periods.
 
     The onsets are smoothed over 5 blocks first (so that a peak does not hinge on
@@ -285,7 +323,7 @@ def _period_from_autocorrelation(strength: np.ndarray, dt: float, stated: float)
     well as the period; half the period, impact 1 against impact 2, reaches at most
     2 r / (1 + r^2) < 25 % of it, r > 10 the ratio of their onset strengths).
     """
-    head = _winsorized(strength[: min(strength.size, int(200 * stated / dt))])
+    head = _winsorized(strength[: min(strength.size, int(HEAD_PERIODS * stated / dt))])
     x = np.convolve(head, np.ones(5) / 5, mode="same")
     x -= x.mean()
     size = 2 ** math.ceil(math.log2(2 * x.size))
@@ -304,20 +342,59 @@ def _period_from_autocorrelation(strength: np.ndarray, dt: float, stated: float)
     return float((lag + shift) * dt)
 
 
+def block_size(rate: float, omega_n: float) -> int:
+    """Samples averaged per block of the onset strength: about a tenth of a ringing period.
+
+    Parameters
+    ----------
+    rate : float
+        Sampling rate [Hz].
+    omega_n : float
+        Natural angular frequency of the branch [rad/s].
+
+    Returns
+    -------
+    int
+        At least 1.
+    """
+    return max(1, int(rate * 2 * np.pi / omega_n / SAMPLES_PER_RINGING))
+
+
+def onset_peaks(strength: np.ndarray, dt: float, guess: float) -> tuple[np.ndarray, np.ndarray]:
+    """Blocks of the strongest onset of every period, and their strengths.
+
+    Peaks of `strength` at least ``0.7 guess`` apart (`guess` the seating period
+    [s], `dt` the block duration [s]); :func:`strong_peaks` then drops the weak ones.
+    """
+    peaks, props = find_peaks(strength, distance=max(1, int(0.7 * guess / dt)), height=0.0)
+    return peaks, props["peak_heights"]
+
+
+def strong_peaks(heights: np.ndarray) -> np.ndarray:
+    """Mask of the peaks of at least a fifth of the median strength (the seatings)."""
+    return heights >= 0.2 * np.median(heights) if heights.size else np.ones(0, dtype=bool)
+
+
+def period_from_onsets(onsets: np.ndarray, guess: float) -> float:
+    """Mean seating period [s]: least-squares slope of the onsets [s] over their cycles.
+
+    Cycle numbers count the periods of `guess` [s] between onsets, so missed
+    seatings are skipped; `guess` itself with fewer than 2 onsets.
+    """
+    if onsets.size < 2:
+        return guess
+    cycle = np.concatenate([[0.0], np.cumsum(np.maximum(1, np.round(np.diff(onsets) / guess)))])
+    centred = cycle - cycle.mean()
+    return float(np.dot(centred, onsets - onsets.mean()) / np.dot(centred, centred))
+
+
 def _seatings_from_force(strength: np.ndarray, block_time: np.ndarray, dt: float,
                          stated: float) -> tuple[np.ndarray, float]:
     """Impact-2 onsets [s] (the strongest onset of every period) and the mean period [s]."""
-    guess = _period_from_autocorrelation(strength, dt, stated)
-    peaks, props = find_peaks(strength, distance=max(1, int(0.7 * guess / dt)), height=0.0)
-    heights = props["peak_heights"]
-    peaks = peaks[heights >= 0.2 * np.median(heights)] if peaks.size else peaks
-    onsets = block_time[peaks]
-    if onsets.size < 2:
-        return onsets, guess
-    # Least-squares slope of the onsets over their cycle numbers (missed seatings skipped).
-    cycle = np.concatenate([[0.0], np.cumsum(np.maximum(1, np.round(np.diff(onsets) / guess)))])
-    centred = cycle - cycle.mean()
-    return onsets, float(np.dot(centred, onsets - onsets.mean()) / np.dot(centred, centred))
+    guess = period_from_autocorrelation(strength, dt, stated)
+    peaks, heights = onset_peaks(strength, dt, guess)
+    onsets = block_time[peaks[strong_peaks(heights)]]
+    return onsets, period_from_onsets(onsets, guess)
 
 
 def _strongest_near(strength: np.ndarray, block_time: np.ndarray, expected: np.ndarray,
@@ -331,51 +408,101 @@ def _strongest_near(strength: np.ndarray, block_time: np.ndarray, expected: np.n
     return block_time[centre - half + np.argmax(windows[centre - half], axis=1)]
 
 
-def _seatings_from_angle(strength: np.ndarray, angle: np.ndarray, angle_time: np.ndarray,
-                         block_time: np.ndarray, z: int, impact_angle: float | None,
-                         file: str | Path | None) -> tuple[np.ndarray, np.ndarray, float]:
-    """Impact-1 and impact-2 onsets [s] and the mean speed [1/s] from the angle channel.
+def unwrapped_angle(angle: np.ndarray, angle_time: np.ndarray,
+                    file: str | Path | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Times [s] and unwrapped angle [rad] of the finite samples of an angle channel.
 
-    `angle` is sampled at `angle_time`, often enough to unwrap. Each seating's
-    impact 2 is the strongest onset within a quarter of tau of where the angle
-    puts it (the angle gives the speed, the onsets the seating's jitter).
+    Raises
+    ------
+    SignalError
+        When fewer than 3 samples are finite.
     """
     finite = np.isfinite(angle)
     if finite.sum() < 3:
         raise SignalError("the angle channel holds no data", file=file, column="angle",
                           hint="remove the angle mapping from the run sheet to detect the "
                                "seatings from the force alone")
-    theta = np.unwrap(angle[finite])
-    t = angle_time[finite]
+    return angle_time[finite], np.unwrap(angle[finite])
+
+
+def angle_slope(t: np.ndarray, theta: np.ndarray) -> float:
+    """Least-squares slope of the unwrapped angle `theta` [rad] over `t` [s]: the speed [1/s]."""
     centred = t - t.mean()
-    slope = float(np.dot(centred, theta - theta.mean()) / np.dot(centred, centred))
-    pitch = 2 * np.pi / z
-    if not abs(slope) * (t[-1] - t[0]) > pitch:
+    return float(np.dot(centred, theta - theta.mean()) / np.dot(centred, centred))
+
+
+def angle_track(t: np.ndarray, theta: np.ndarray, slope: float, z: int,
+                file: str | Path | None = None) -> np.ndarray:
+    """The unwrapped angle turned forward (sign of `slope`) and made non-decreasing [rad].
+
+    Raises
+    ------
+    SignalError
+        When the angle advances by less than one tooth pitch ``2 pi / z`` over `t`.
+    """
+    if not abs(slope) * (t[-1] - t[0]) > 2 * np.pi / z:
         raise SignalError("the angle channel advances by less than one tooth pitch",
                           file=file, column="angle",
                           hint="check the angle channel's unit (rad expected) and mapping")
-    theta = np.maximum.accumulate(np.sign(slope) * theta)
-    period = pitch / abs(slope)
-    if impact_angle is None:
-        # Fold the onsets of the first 200 periods over the tooth pitch angle.
-        dt = block_time[1] - block_time[0]
-        head = block_time[: int(200 * period / dt)]
-        bins = max(8, int(round(period / dt)))
-        phase = np.mod(np.interp(head, t, theta), pitch)
-        index = np.minimum((phase / pitch * bins).astype(np.int64), bins - 1)
-        weights = _winsorized(strength[: head.size])
-        profile = (np.bincount(index, weights=weights, minlength=bins)
-                   / np.maximum(1, np.bincount(index, minlength=bins)))
-        phase1 = (np.argmax(profile) + 0.5) * pitch / bins - pitch / 2
-    else:
-        phase1 = np.sign(slope) * impact_angle
-    first = math.ceil((theta[0] - phase1) / pitch)
-    seat = phase1 + pitch * np.arange(first, math.floor((theta[-1] - phase1) / pitch) + 1)
-    seat = seat[seat + pitch / 2 <= theta[-1]]
-    expected1 = np.interp(seat, theta, t)
-    expected2 = np.interp(seat + pitch / 2, theta, t)
+    return np.maximum.accumulate(np.sign(slope) * theta)
+
+
+def impact_phase(strength: np.ndarray, t: np.ndarray, track: np.ndarray,
+                 block_time: np.ndarray, period: float, z: int) -> float:
+    """Angle of impact 1 modulo the tooth pitch [rad], on the forward track.
+
+    The onset strengths of the first :data:`HEAD_PERIODS` periods (`period` [s]) folded over the
+    tooth pitch angle ``2 pi / z``; `track` is :func:`angle_track` at `t`.
+    """
+    pitch = 2 * np.pi / z
+    dt = block_time[1] - block_time[0]
+    head = block_time[: int(HEAD_PERIODS * period / dt)]
+    bins = max(8, int(round(period / dt)))
+    phase = np.mod(np.interp(head, t, track), pitch)
+    index = np.minimum((phase / pitch * bins).astype(np.int64), bins - 1)
+    weights = _winsorized(strength[: head.size])
+    profile = (np.bincount(index, weights=weights, minlength=bins)
+               / np.maximum(1, np.bincount(index, minlength=bins)))
+    return float((np.argmax(profile) + 0.5) * pitch / bins - pitch / 2)
+
+
+def seatings_on_track(strength: np.ndarray, t: np.ndarray, track: np.ndarray,
+                      block_time: np.ndarray, z: int, phase1: float, period: float
+                      ) -> tuple[np.ndarray, np.ndarray]:
+    """Impact-1 and impact-2 onsets [s] of every seating the angle track covers.
+
+    Seatings lie at ``phase1 + m 2 pi / z`` on `track` (:func:`angle_track` at
+    `t`); each impact 2 is the strongest onset within ``period / 8`` of where the
+    angle puts it (the angle gives the speed, the onsets the seating's jitter),
+    impact 1 lies where the angle puts it relative to impact 2.
+    """
+    pitch = 2 * np.pi / z
+    first = math.ceil((track[0] - phase1) / pitch)
+    seat = phase1 + pitch * np.arange(first, math.floor((track[-1] - phase1) / pitch) + 1)
+    seat = seat[seat + pitch / 2 <= track[-1]]
+    expected1 = np.interp(seat, track, t)
+    expected2 = np.interp(seat + pitch / 2, track, t)
     impact2 = _strongest_near(strength, block_time, expected2, period / 8)
-    return impact2 - (expected2 - expected1), impact2, abs(slope)
+    return impact2 - (expected2 - expected1), impact2
+
+
+def _seatings_from_angle(strength: np.ndarray, angle: np.ndarray, angle_time: np.ndarray,
+                         block_time: np.ndarray, z: int, impact_angle: float | None,
+                         file: str | Path | None) -> tuple[np.ndarray, np.ndarray, float]:
+    """Impact-1 and impact-2 onsets [s] and the mean speed [1/s] from the angle channel.
+
+    `angle` is sampled at `angle_time`, often enough to unwrap; the phase of the
+    strikes is folded from the onsets (:func:`impact_phase`) unless `impact_angle`
+    is given.
+    """
+    t, theta = unwrapped_angle(angle, angle_time, file)
+    slope = angle_slope(t, theta)
+    track = angle_track(t, theta, slope, z, file)
+    period = 2 * np.pi / z / abs(slope)
+    phase1 = (impact_phase(strength, t, track, block_time, period, z) if impact_angle is None
+              else np.sign(slope) * impact_angle)
+    impact1, impact2 = seatings_on_track(strength, t, track, block_time, z, phase1, period)
+    return impact1, impact2, abs(slope)
 
 
 def detect_events(
@@ -438,29 +565,14 @@ def detect_events(
     from eqs. (1)-(2).
     """
     start, rate = sampling(table, file)
-    if "force" not in table:
-        raise SignalError("the engagement log has no force channel", file=file, column="force",
-                          hint="map the branch-tension column in the run sheet "
-                               "(columns = {force = ...})")
-    force = table["force"].to_numpy(dtype=float)
+    force = force_channel(table, file)
     stated = float(seating_period(z, omega))
     duration = force.size / rate
-    short_hint = (f"record at least {MIN_PERIODS} seating periods ({MIN_PERIODS * stated:.3g} s "
-                  f"at omega = {omega:.4g} 1/s, z = {z}), better a hundred; or check the speed "
-                  "and the teeth in the run sheet")
-    if duration < MIN_PERIODS * stated:
-        raise SignalError(
-            f"the log lasts {duration:.4g} s, fewer than {MIN_PERIODS} seating periods of "
-            f"{stated:.4g} s", file=file, hint=short_hint)
-    missing = ~np.isfinite(force)
-    if missing.all():
-        raise SignalError("the force channel holds no numbers", file=file, column="force",
-                          hint="check the column mapping and the file")
-    if missing.any():
-        force = np.where(missing, np.median(force[~missing]), force)
+    check_duration(duration, stated, z, omega, file)
+    force = fill_missing(force, file=file)
 
     omega_n = natural_frequency_estimate(force, rate, stated, natural_frequency, file)
-    block = max(1, int(rate * 2 * np.pi / omega_n / _SAMPLES_PER_RINGING))
+    block = block_size(rate, omega_n)
     dt = block / rate
     strength = onset_strength(force, block, rate, omega_n)
     block_time = start + dt * np.arange(strength.size)
@@ -470,7 +582,7 @@ def detect_events(
     has_angle = use_angle and "angle" in table and bool(np.isfinite(table["angle"]).any())
     if has_angle:
         # The angle once per ringing period: enough to unwrap and interpolate.
-        stride = block * _SAMPLES_PER_RINGING
+        stride = block * SAMPLES_PER_RINGING
         angle = table["angle"].to_numpy(dtype=float)[::stride]
         impact1, impact2, measured_omega = _seatings_from_angle(
             strength, angle, start + np.arange(angle.size) * stride / rate, block_time, z,
@@ -482,23 +594,127 @@ def detect_events(
         impact2 = impact2 + lead
         impact1 = impact2 - period / 2
         measured_omega = 2 * np.pi / (z * period)
+    return collect_events(
+        impact1, impact2, period, measured_omega, z=z, omega=omega, duration=duration,
+        sample_rate=rate, start_time=start, natural_frequency=omega_n,
+        source="angle" if has_angle else "force", onset_resolution=dt,
+        period_tolerance=period_tolerance, file=file)
 
+
+def force_channel(table: pd.DataFrame, file: str | Path | None = None) -> np.ndarray:
+    """The branch tension of a canonical table [N], as float64.
+
+    Raises
+    ------
+    SignalError
+        When the table has no ``force`` column.
+    """
+    if "force" not in table:
+        raise SignalError("the engagement log has no force channel", file=file, column="force",
+                          hint="map the branch-tension column in the run sheet "
+                               "(columns = {force = ...})")
+    return table["force"].to_numpy(dtype=float)
+
+
+def _short_hint(stated: float, z: int, omega: float) -> str:
+    return (f"record at least {MIN_PERIODS} seating periods ({MIN_PERIODS * stated:.3g} s "
+            f"at omega = {omega:.4g} 1/s, z = {z}), better a hundred; or check the speed "
+            "and the teeth in the run sheet")
+
+
+def check_duration(duration: float, stated: float, z: int, omega: float,
+                   file: str | Path | None = None) -> None:
+    """Raise a :class:`SignalError` when a log of `duration` [s] holds too few periods.
+
+    Parameters
+    ----------
+    duration : float
+        Samples over the sampling rate [s].
+    stated : float
+        Seating period ``2 pi / (z omega)`` [s].
+    z : int
+        Number of teeth [-].
+    omega : float
+        Stated wheel speed [1/s].
+    file : str or Path, optional
+        The log's file, for error messages.
+    """
+    if duration < MIN_PERIODS * stated:
+        raise SignalError(
+            f"the log lasts {duration:.4g} s, fewer than {MIN_PERIODS} seating periods of "
+            f"{stated:.4g} s", file=file, hint=_short_hint(stated, z, omega))
+
+
+def fill_missing(force: np.ndarray, value: float | None = None,
+                 file: str | Path | None = None) -> np.ndarray:
+    """`force` [N] with its missing samples replaced by `value` (default: the others' median).
+
+    Raises
+    ------
+    SignalError
+        When every sample is missing and no `value` is given.
+    """
+    missing = ~np.isfinite(force)
+    if not missing.any():
+        return force
+    if value is None:
+        if missing.all():
+            raise SignalError("the force channel holds no numbers", file=file, column="force",
+                              hint="check the column mapping and the file")
+        value = np.median(force[~missing])
+    return np.where(missing, value, force)
+
+
+def collect_events(impact1: np.ndarray, impact2: np.ndarray, period: float,
+                   measured_omega: float, *, z: int, omega: float, duration: float,
+                   sample_rate: float, start_time: float, natural_frequency: float, source: str,
+                   onset_resolution: float, period_tolerance: float = PERIOD_TOLERANCE,
+                   file: str | Path | None = None) -> EngagementEvents:
+    """The :class:`EngagementEvents` of a log, its measured period checked against the stated.
+
+    Parameters
+    ----------
+    impact1, impact2 : numpy.ndarray
+        Onsets of impact 1 and 2 of every seating [s].
+    period : float
+        Measured seating period [s].
+    measured_omega : float
+        Measured wheel speed ``2 pi / (z period)`` [1/s].
+    z, omega, duration, sample_rate, start_time, natural_frequency, source, onset_resolution
+        As in :class:`EngagementEvents` (`omega` the stated speed [1/s], `duration`
+        the log's [s]).
+    period_tolerance : float, optional
+        See :func:`detect_events`.
+    file : str or Path, optional
+        The log's file, named in errors and warnings.
+
+    Raises
+    ------
+    SignalError
+        When the log holds fewer than :data:`MIN_PERIODS` measured periods or no seating.
+
+    Warns
+    -----
+    SpeedMismatchWarning
+        See :func:`detect_events`.
+    """
+    stated = float(seating_period(z, omega))
     messages = []
     mismatch = period / stated - 1
     if abs(mismatch) > period_tolerance:
         where = f"{file}: " if file is not None else ""
         message = (
-            f"{where}the seating period measured from the {'angle' if has_angle else 'force'} "
+            f"{where}the seating period measured from the {source} "
             f"channel, {period:.5g} s (omega = {measured_omega:.4g} 1/s), differs from the run "
             f"sheet's 2 pi / (z omega) = {stated:.5g} s (z = {z}, omega = {omega:.4g} 1/s) by "
             f"{mismatch:+.1%}; the measured period is used (hint: check omega_per_s / rpm and "
             "the wheel's teeth in campaign.toml)")
         messages.append(message)
-        warnings.warn(message, SpeedMismatchWarning, stacklevel=2)
+        warnings.warn(message, SpeedMismatchWarning, stacklevel=3)
     if duration < MIN_PERIODS * period:
         raise SignalError(
             f"the log lasts {duration:.4g} s, fewer than {MIN_PERIODS} measured seating periods "
-            f"of {period:.4g} s", file=file, hint=short_hint)
+            f"of {period:.4g} s", file=file, hint=_short_hint(stated, z, omega))
     if impact1.size == 0:
         raise SignalError("no engagement event found in the log", file=file, column="force",
                           hint="check that the wheel turned and the force channel is the "
@@ -506,6 +722,5 @@ def detect_events(
     return EngagementEvents(
         impact1_time=impact1, impact2_time=impact2, seating_period=float(period),
         stated_period=stated, omega=float(measured_omega), stated_omega=float(omega), z=int(z),
-        sample_rate=rate, start_time=start, natural_frequency=omega_n,
-        source="angle" if has_angle else "force", onset_resolution=dt,
-        messages=tuple(messages))
+        sample_rate=sample_rate, start_time=start_time, natural_frequency=natural_frequency,
+        source=source, onset_resolution=onset_resolution, messages=tuple(messages))

@@ -256,6 +256,7 @@ class _Geometry:
     period: float  # seating period [s]
     pre: int  # window samples before the first sample after impact 1
     width: int  # window samples
+    origin: int = 0  # sample of the log at index 0 of the array the windows are cut from
 
     @classmethod
     def of(cls, events: EngagementEvents) -> _Geometry:
@@ -266,8 +267,12 @@ class _Geometry:
         return cls(events.start_time, rate, events.seating_period, pre, width)
 
     def first_sample(self, time: np.ndarray) -> np.ndarray:
-        """Index of the first sample at or after `time`."""
-        return np.ceil((time - self.start) * self.rate - 1e-9).astype(np.int64)
+        """Index (in the array from :attr:`origin` on) of the first sample at or after `time`."""
+        return np.ceil((time - self.start) * self.rate - 1e-9).astype(np.int64) - self.origin
+
+    def time_of(self, index: np.ndarray) -> np.ndarray:
+        """Time [s] of the samples at `index` of the array from :attr:`origin` on."""
+        return self.start + (index + self.origin) / self.rate
 
     def basis(self, pole: complex) -> np.ndarray:
         """Columns of the window model before the masks (width x 10).
@@ -410,7 +415,7 @@ def _settle(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, margin: float
     range1 = (max(1, geo.pre - reach), geo.pre + reach + 1)
     range2 = (max(range1[0] + 1, int(j2.min()) - reach), min(geo.width, int(j2.max()) + reach + 1))
     windows = _Windows(y, start, range1, range2, geo, ringing.pole)
-    ref = geo.start + (start + geo.pre) / geo.rate
+    ref = geo.time_of(start + geo.pre)
     fits = _Fits(onset1.copy(), onset2.copy(), np.zeros(size, dtype=bool),
                  np.empty((size, 10, 10)), np.empty((size, 10)), windows.yty, ref)
     j1 = np.full(size, geo.pre)
@@ -549,6 +554,14 @@ def _ringing_errors(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: 
     """
     if not ringing.fitted:
         return dict.fromkeys(("N_u1", "N_u2", "peak1", "peak2"), 0.0)
+    if (ringing.omega_n_stderr >= ringing.omega_n or ringing.zeta_stderr >= ringing.zeta
+            or ringing.zeta + ringing.zeta_stderr >= 1):
+        raise FitError(
+            f"the log does not determine the branch's ringing (omega_n = {ringing.omega_n:.4g} "
+            f"+- {ringing.omega_n_stderr:.2g} rad/s, zeta = {ringing.zeta:.3g} "
+            f"+- {ringing.zeta_stderr:.2g})",
+            hint="check that the force channel is the branch tension and that the log holds "
+                 "the strikes of the seating links")
 
     def medians(trial: Ringing) -> np.ndarray:
         fits = _settle(y, onset1, onset2, 0.0, geo, trial, passes=2)
@@ -645,17 +658,68 @@ def extract_impacts(
     force = table["force"].to_numpy(dtype=float)
     geo = _Geometry.of(events)
     missing = ~np.isfinite(force)
-    sample = force[:: max(1, force.size // 100_000)]
-    sample = sample[np.isfinite(sample)]
-    offset = float(np.median(sample)) if sample.size else 0.0
-    y = np.where(missing, 0.0, force - offset) if missing.any() else force - offset
+    offset = _offset_of(force[:: _offset_stride(force.size)])
+    y = _relative(force, offset, missing)
 
     prior1, prior2 = events.impact1_time, events.impact2_time
     margin = 0.5 * events.onset_resolution  # masks after the onsets in the first pass
-    # Room for the onsets to move in the fits (`reach`, the largest accepted shift with
-    # the natural frequency possibly 30 % below its first estimate) plus the mask margin.
+    slack = _slack(events, geo, file)
+    start = geo.first_sample(prior1) - geo.pre - slack
+    span = geo.width + 2 * slack
+    low, high = _levels(clipping_levels(force), clip_level)
+    clipped = None
+    if low is not None or high is not None:
+        flags = np.zeros(force.size, dtype=bool)
+        if high is not None:
+            flags |= force >= high
+        if low is not None:
+            flags |= force <= low
+        clipped = _hits(flags, start, span)
+    status = _window_status(start, span, force.size, _hits(missing, start, span), clipped)
+    usable = _usable(status, file)
+
+    pick = _ringing_pick(usable)
+    ringing, relative_errors = _run_ringing(y, prior1[pick], prior2[pick], geo,
+                                            events.natural_frequency, margin, ringing)
+    fits = _fit_events(y, prior1[usable], prior2[usable], margin, geo, ringing, offset)
+    frame = _event_table(prior1, prior2, status, usable, fits, geo, ringing)
+    statistics, excluded = _run_statistics(frame, relative_errors, file)
+    return ImpactResult(frame, ringing, statistics, excluded, (low, high),
+                        messages=events.messages)
+
+
+#: Samples of a log that its median offset is taken from (every n-th, :func:`_offset_stride`).
+_OFFSET_SAMPLES = 100_000
+
+
+def _offset_stride(size: int) -> int:
+    """Stride of the samples of a `size`-sample log that its offset is taken from."""
+    return max(1, size // _OFFSET_SAMPLES)
+
+
+def _offset_of(sample: np.ndarray) -> float:
+    """Median of the finite values of `sample` [N] (0 without any): subtracted before the fits.
+
+    Only conditions the fits (the slow tension has a constant column): every
+    result but the rounding is the same whatever the offset.
+    """
+    sample = sample[np.isfinite(sample)]
+    return float(np.median(sample)) if sample.size else 0.0
+
+
+def _relative(force: np.ndarray, offset: float, missing: np.ndarray) -> np.ndarray:
+    """``force - offset`` [N], 0 at the `missing` samples."""
+    return np.where(missing, 0.0, force - offset) if missing.any() else force - offset
+
+
+def _slack(events: EngagementEvents, geo: _Geometry, file: str | Path | None) -> int:
+    """Samples the windows may move by in the fits, on each side (see :func:`extract_impacts`).
+
+    Room for the onsets to move (the largest accepted shift, :data:`MAX_ONSET_SHIFT`,
+    with the natural frequency possibly 30 % below its first estimate) plus the
+    mask margin; a :class:`FitError` when the strikes come too fast for that.
+    """
     reach = MAX_ONSET_SHIFT * 2 * np.pi / (0.7 * events.natural_frequency)
-    slack = int(math.ceil((reach + events.onset_resolution) * geo.rate)) + 1
     if WINDOW_PRE * events.tau < reach + 2 / geo.rate:
         raise FitError(
             f"the strikes come too fast for their ringing to be told apart: tau = "
@@ -663,48 +727,128 @@ def extract_impacts(
             f"{2 * np.pi / events.natural_frequency:.3g} s", file=file,
             hint="the extraction needs tau = pi / (z omega) above about one ringing period of "
                  "the branch; check the speed and teeth in the run sheet")
-    first = geo.first_sample(prior1)
-    status = np.full(prior1.size, "ok", dtype=object)
-    status[(first - geo.pre - slack < 0) | (first - geo.pre + geo.width + slack > force.size)] = (
-        "truncated")
-    start = first - geo.pre - slack
-    span = geo.width + 2 * slack
-    fittable = status == "ok"
-    status[fittable & _hits(missing, start, span)] = "gap"
-    low, high = clipping_levels(force)
+    return int(math.ceil((reach + events.onset_resolution) * geo.rate)) + 1
+
+
+def _levels(detected: tuple[float | None, float | None], clip_level: float | None
+            ) -> tuple[float | None, float | None]:
+    """Clipping levels used [N]: the detected ones, the upper one lowered to `clip_level`."""
+    low, high = detected
     if clip_level is not None:
         high = clip_level if high is None else min(high, clip_level)
-    if low is not None or high is not None:
-        clipped = np.zeros(force.size, dtype=bool)
-        if high is not None:
-            clipped |= force >= high
-        if low is not None:
-            clipped |= force <= low
-        status[(status == "ok") & _hits(clipped, start, span)] = "clipped"
+    return low, high
+
+
+def _window_status(start: np.ndarray, span: int, size: int, gap: np.ndarray,
+                   clipped: np.ndarray | None) -> np.ndarray:
+    """Status of each event before its fit: ``ok``, ``truncated``, ``gap`` or ``clipped``.
+
+    `start` is the first sample of each event's reach (window plus slack) of
+    `span` samples in a log of `size`; `gap` and `clipped` say whether the reach
+    holds a missing or a clipped sample (None: no clipping level).
+    """
+    status = np.full(start.size, "ok", dtype=object)
+    status[(start < 0) | (start + span > size)] = "truncated"
+    status[(status == "ok") & gap] = "gap"
+    if clipped is not None:
+        status[(status == "ok") & clipped] = "clipped"
+    return status
+
+
+def _usable(status: np.ndarray, file: str | Path | None) -> np.ndarray:
+    """Indices of the events still ``ok``; a :class:`FitError` when there are none."""
     usable = np.flatnonzero(status == "ok")
     if usable.size == 0:
         counts = {reason: int(np.sum(status == reason)) for reason in EXCLUSIONS}
         raise FitError(f"no engagement event can be fitted ({counts})", file=file,
                        hint="record a longer log or lower the gain so the force does not clip")
+    return usable
 
-    pick = usable[np.unique(np.linspace(0, usable.size - 1, min(RINGING_EVENTS, usable.size))
+
+def _ringing_pick(usable: np.ndarray) -> np.ndarray:
+    """Up to :data:`RINGING_EVENTS` of the `usable` events, evenly spread over the log."""
+    return usable[np.unique(np.linspace(0, usable.size - 1, min(RINGING_EVENTS, usable.size))
                             .round().astype(int))]
-    if ringing is None:
-        ringing, sub1, sub2 = _fit_ringing(y, prior1[pick], prior2[pick], geo,
-                                          events.natural_frequency, margin)
-    else:
-        sub1, sub2 = prior1[pick], prior2[pick]
-    relative_errors = _ringing_errors(y, sub1, sub2, geo, ringing)
 
-    fits = _settle(y, prior1[usable], prior2[usable], margin, geo, ringing)
-    t1, t2 = fits.onset1, fits.onset2
+
+def _run_ringing(y: np.ndarray, prior1: np.ndarray, prior2: np.ndarray, geo: _Geometry,
+                 natural_frequency: float, margin: float, ringing: Ringing | None
+                 ) -> tuple[Ringing, dict[str, float]]:
+    """The run's ringing (fitted on the events given unless given) and its relative errors.
+
+    The events given are :func:`_ringing_pick`'s; the relative errors are
+    :func:`_ringing_errors` of the medians over them.
+    """
+    if ringing is None:
+        ringing, prior1, prior2 = _fit_ringing(y, prior1, prior2, geo, natural_frequency, margin)
+    return ringing, _ringing_errors(y, prior1, prior2, geo, ringing)
+
+
+@dataclass(frozen=True)
+class EventFits:
+    """Final fits of a set of events (see :func:`_fit_events`), one row per event.
+
+    Attributes
+    ----------
+    onset1, onset2 : numpy.ndarray
+        Refined onsets of impact 1 and 2 [s].
+    moved : numpy.ndarray
+        Whether an onset left its reach (then kept at its prior).
+    coef : numpy.ndarray
+        (n, 8) coefficients: slow tension 0-3 [N], earlier strikes 4-5 [N],
+        ``A1`` 6 and ``A2`` 7 [N].
+    variance : numpy.ndarray
+        (n, 2) variances of ``A1``, ``A2`` [N^2].
+    rms : numpy.ndarray
+        Residual RMS [N].
+    baseline : numpy.ndarray
+        Slow tension at impact 1 [N].
+    """
+
+    onset1: np.ndarray
+    onset2: np.ndarray
+    moved: np.ndarray
+    coef: np.ndarray
+    variance: np.ndarray
+    rms: np.ndarray
+    baseline: np.ndarray
+
+    @classmethod
+    def none(cls) -> EventFits:
+        """Fits of no event."""
+        empty = np.zeros(0)
+        return cls(empty, empty, np.zeros(0, dtype=bool), np.zeros((0, 8)), np.zeros((0, 2)),
+                   empty, empty)
+
+    @classmethod
+    def concatenate(cls, parts: list[EventFits]) -> EventFits:
+        """The fits of `parts`, one after the other."""
+        return cls(*(np.concatenate([getattr(part, name) for part in parts])
+                     for name in cls.__dataclass_fields__))
+
+
+def _fit_events(y: np.ndarray, prior1: np.ndarray, prior2: np.ndarray, margin: float,
+                geo: _Geometry, ringing: Ringing, offset: float) -> EventFits:
+    """Onsets, amplitudes and baselines of events (priors [s]) in `y` (force - `offset` [N])."""
+    fits = _settle(y, prior1, prior2, margin, geo, ringing)
     coef, variance, rss = _amplitudes(fits, ringing, geo.width)
-    r1 = t1 - fits.ref
+    r1 = fits.onset1 - fits.ref
     phase = 2 * np.pi * r1 / geo.period
     baseline = (offset + coef[:, 0] + coef[:, 1] * r1 * geo.rate / geo.width
                 + coef[:, 2] * np.cos(phase) + coef[:, 3] * np.sin(phase))
-    rms = np.sqrt(rss / geo.width)
+    return EventFits(fits.onset1, fits.onset2, fits.moved, coef, variance,
+                     np.sqrt(rss / geo.width), baseline)
 
+
+def _event_table(prior1: np.ndarray, prior2: np.ndarray, status: np.ndarray,
+                 usable: np.ndarray, fits: EventFits, geo: _Geometry,
+                 ringing: Ringing) -> pd.DataFrame:
+    """The events' rows of :attr:`ImpactResult.events`, their fits judged against the run's.
+
+    `status` (before the fits) is updated with ``fit_failed`` and ``overlap``;
+    `fits` are those of the events `usable`.
+    """
+    coef, variance, rms = fits.coef, fits.variance, fits.rms
     finite = np.all(np.isfinite(coef), axis=1) & np.all(np.isfinite(variance), axis=1)
     failed = fits.moved | ~finite | ~(coef[:, 6] > 0) | ~(coef[:, 7] > 0)
     if np.any(~failed):
@@ -713,9 +857,9 @@ def extract_impacts(
         failed |= rms > max(RESIDUAL_OUTLIER * typical[0], 1e-3 * typical[1])
 
     time1, time2 = prior1.copy(), prior2.copy()
-    time1[usable], time2[usable] = t1, t2
+    time1[usable], time2[usable] = fits.onset1, fits.onset2
     # Neighbours' strikes inside a window: irregular spacing or a missed seating.
-    window_start = geo.start + (geo.first_sample(time1) - geo.pre) / geo.rate
+    window_start = geo.time_of(geo.first_sample(time1) - geo.pre)
     window_end = window_start + geo.width / geo.rate
     overlap = np.zeros(prior1.size, dtype=bool)
     overlap[1:] |= time2[:-1] > window_start[1:]
@@ -728,15 +872,25 @@ def extract_impacts(
         full[usable] = values
         return full
 
-    frame = pd.DataFrame({
+    return pd.DataFrame({
         "event_time": time1, "impact2_time": time2, "tau": time2 - time1,
-        "baseline": column(baseline), "N_u1": column(coef[:, 6]), "N_u2": column(coef[:, 7]),
+        "baseline": column(fits.baseline), "N_u1": column(coef[:, 6]),
+        "N_u2": column(coef[:, 7]),
         "N_u1_stderr": column(np.sqrt(variance[:, 0])),
         "N_u2_stderr": column(np.sqrt(variance[:, 1])),
         "peak1": column(coef[:, 6] * ringing.peak_factor),
         "peak2": column(coef[:, 7] * ringing.peak_factor),
         "residual_rms": column(rms), "status": status.astype(str),
     })
+
+
+def _run_statistics(frame: pd.DataFrame, relative_errors: dict[str, float],
+                    file: str | Path | None) -> tuple[dict[str, ImpactStatistics], dict[str, int]]:
+    """Statistics of the ``ok`` events of `frame` and the exclusion counts.
+
+    `relative_errors` are the relative standard errors of the medians due to the
+    ringing (:func:`_ringing_errors`); a :class:`FitError` when no event is ``ok``.
+    """
     ok = frame["status"] == "ok"
     if not ok.any():
         raise FitError("every engagement event failed its fit", file=file,
@@ -746,6 +900,6 @@ def extract_impacts(
         values = frame.loc[ok, name].to_numpy()
         systematic = relative_errors.get(name, 0.0) * abs(float(np.median(values)))
         statistics[name] = ImpactStatistics.of(values, systematic)
+    status = frame["status"].to_numpy()
     excluded = {reason: int(np.sum(status == reason)) for reason in EXCLUSIONS}
-    return ImpactResult(frame, ringing, statistics, excluded, (low, high),
-                        messages=events.messages)
+    return statistics, excluded
