@@ -345,7 +345,7 @@ def process_campaign(
         done, failed = _execute(sheet, todo, output, progress, debug, client)
         failures += failed
         current.update({run_id: read_scalars(path) for run_id, path in done.items()})
-        files = {run_id: output / f"{run_id}.nc" for run_id in current}
+        files = {run.id: output / f"{run.id}.nc" for run in sheet.runs if run.id in current}
         specimens, points, run_warnings = _collect(sheet, plans, current)
         key = _digest({"runs": {run_id: plans[run_id].key for run_id in sorted(files)},
                        "failures": [failure.message for failure in failures],

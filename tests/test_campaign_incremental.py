@@ -134,8 +134,13 @@ def test_dask_workers_give_the_serial_result(campaign, tmp_path):
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                       dashboard_address=None) as cluster, Client(cluster) as client:
         parallel = process_campaign(campaign, tmp_path / "dask", client=client)
+        cli = runner.invoke(app, ["run", str(campaign), "--output", str(tmp_path / "cli"),
+                                  "--scheduler", cluster.scheduler_address])
+    assert cli.exit_code == 0, cli.output
     assert sorted(parallel.redone) == sorted(serial.redone)
     xr.testing.assert_identical(numbers(parallel.summary), numbers(serial.summary))
+    xr.testing.assert_identical(numbers(read_dataset(tmp_path / "cli" / "c18" / "summary.nc")),
+                                numbers(serial.summary))
     for run_id in serial.run_files:
         xr.testing.assert_identical(numbers(read_dataset(parallel.run_files[run_id])),
                                     numbers(read_dataset(serial.run_files[run_id])))
