@@ -266,7 +266,7 @@ def condition_tensile(
     )
     loading = samples["branch"].to_numpy() == "loading"
     disagreement = np.nan
-    if len(gauges) > 1 and np.ptp(elongation[loading]) > 0:
+    if len(gauges) > 1 and loading.any() and np.ptp(elongation[loading]) > 0:
         spread = samples["gauge_spread"].to_numpy()
         disagreement = float(abs(np.polyfit(elongation[loading], spread[loading], 1)[0]))
     return TensileRun(

@@ -478,7 +478,8 @@ def specimen_stiffness(fits: pd.DataFrame, *, confidence: float = 0.95) -> Speci
     Raises
     ------
     FitError
-        When the run has no loading branch after the first cycle.
+        When the run has no loading branch after the first cycle, or their mean
+        slope is not positive (noise only, or a gauge reading against the load).
     """
     cycles = fits.index.get_level_values("cycle")
     branch = fits.index.get_level_values("branch")
@@ -493,6 +494,12 @@ def specimen_stiffness(fits: pd.DataFrame, *, confidence: float = 0.95) -> Speci
     errors = counted["E0_stderr_stat"].to_numpy()
     dofs = np.maximum(counted["n_eff"].to_numpy() - 2, 1.0)
     mean = float(slopes.mean())
+    if not mean > 0:
+        raise FitError(
+            f"the loading branches of cycles 2..n give a stiffness of {mean:.4g} N, not above 0",
+            hint="the elongation does not grow with the force: check the sign and wiring of "
+            "the gauges, and the noise of the record",
+        )
     with np.errstate(divide="ignore", invalid="ignore"):  # noise-free data: errors of 0
         chi2 = np.sum(((slopes - mean) / errors) ** 2)
         birge = float(np.sqrt(chi2 / (m - 1))) if m > 1 else np.nan

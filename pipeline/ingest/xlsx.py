@@ -48,14 +48,29 @@ def _text(value: object) -> str:
     return str(value).replace("\t", " ").replace("\r", " ").replace("\n", " ")
 
 
+def _sniffed(text: str) -> str:
+    """A cell's text as the table sniffer sees it: a decimal comma becomes a point.
+
+    Each cell of a sheet is typed on its own, so a number stored as text with a
+    decimal comma (``"1,5"``) is a number next to real numbers (``1.5``); seen
+    as text it would make its row look like a names row.
+    """
+    return text.replace(",", ".") if is_number(text, ",") else text
+
+
+def _unreadable(path: Path, error: Exception) -> LayoutError:
+    """The error for a workbook openpyxl cannot read."""
+    return LayoutError(
+        f"not a readable .xlsx workbook ({type(error).__name__}: {error})",
+        file=path, hint="open it in a spreadsheet program and save it again as .xlsx",
+    )
+
+
 def _open_sheet(path: Path, sheet: str | int | None) -> tuple[pd.DataFrame, str]:
     try:
         workbook = pd.ExcelFile(path, engine="openpyxl")
     except Exception as error:  # openpyxl / zipfile raise many kinds on a broken file
-        raise LayoutError(
-            f"not a readable .xlsx workbook ({type(error).__name__}: {error})",
-            file=path, hint="open it in a spreadsheet program and save it again as .xlsx",
-        ) from error
+        raise _unreadable(path, error) from error
     with workbook:
         names = workbook.sheet_names
         wanted = 0 if sheet is None else sheet
@@ -67,7 +82,10 @@ def _open_sheet(path: Path, sheet: str | int | None) -> tuple[pd.DataFrame, str]
                 file=path, hint="the workbook has the sheets: " + ", ".join(map(repr, names)),
             )
         name = names[wanted] if isinstance(wanted, int) else wanted
-        frame = pd.read_excel(workbook, sheet_name=name, header=None)
+        try:
+            frame = pd.read_excel(workbook, sheet_name=name, header=None)
+        except Exception as error:  # the sheet's XML is parsed only now, and may be broken
+            raise _unreadable(path, error) from error
     frame = frame.dropna(axis=1, how="all")
     if frame.empty:
         raise EmptyFileError(
@@ -118,10 +136,15 @@ def read(
     RawTable
     """
     frame, sheet_name = _open_sheet(path, sheet)
-    lines = ["\t".join(_text(value) for value in row)
+    cells = [[_text(value) for value in row]
              for row in frame.head(HEAD_ROWS).itertuples(index=False)]
-    _, decimal, width = detect_dialect(lines, path, delimiters=("\t",))
-    spec = find_table(lines, path, "\t", decimal, width)
+    lines = ["\t".join(_sniffed(text) for text in row) for row in cells]
+    _, point, width = detect_dialect(lines, path, delimiters=("\t",))
+    spec = find_table(lines, path, "\t", point, width)
+    decimal = "," if any(_sniffed(text) != text for row in cells[spec.data_index:]
+                         for text in row) else "."
+    preamble = [line for line in ("\t".join(row) for row in cells[: spec.header_index])
+                if line.strip()]
     names, units = header_columns(spec)
     found = find_candidates(names, units, columns, file=path, header_line=spec.header_index + 1)
     body = frame.iloc[spec.data_index:, : len(names)].dropna(axis=0, how="all")
@@ -143,7 +166,7 @@ def read(
         file=str(path),
         layout=LAYOUT,
         decimal=decimal,
-        preamble=parse_preamble(spec.preamble, "\t"),
+        preamble=parse_preamble(preamble, "\t"),
         sheet=sheet_name,
         header_line=spec.header_index + 1,
         first_data_line=int(sheet_rows[0]),

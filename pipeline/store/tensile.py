@@ -132,7 +132,9 @@ def tensile_dataset(
         ``fit_<name>``, per-cycle results, the specimen's scalars as
         ``specimen_<name>``.
     """
-    dataset = xr.merge([_samples(run), _fits(fits), _cycles(run)], combine_attrs="override")
+    # A cycle whose branches were too short to fit has no fits: outer join, NaN there.
+    dataset = xr.merge([_samples(run), _fits(fits), _cycles(run)], join="outer",
+                       combine_attrs="override")
     for name, (units, long_name) in SPECIMEN_VARIABLES.items():
         dataset[f"specimen_{name}"] = ((), getattr(specimen, name),
                                        {"units": units, "long_name": long_name})
