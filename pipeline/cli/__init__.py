@@ -11,7 +11,6 @@ from pipeline.cli.theory import theory_app
 
 app = typer.Typer(
     help="chainbench: test-bench data analysis for chain-drive laboratories.",
-    no_args_is_help=True,
     pretty_exceptions_enable=False,
 )
 app.add_typer(theory_app, name="theory")
