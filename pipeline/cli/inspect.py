@@ -16,18 +16,22 @@ from __future__ import annotations
 import json
 from enum import StrEnum
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import numpy as np
-import pandas as pd
 import typer
 from rich.table import Table
 
 from pipeline.cli._output import _plain, console
-from pipeline.condition.segmentation import count_cycles
 from pipeline.errors import ChainbenchError
-from pipeline.ingest import read_table
-from pipeline.ingest.table import TableMetadata
+
+if TYPE_CHECKING:
+    import pandas as pd
+
+    from pipeline.ingest.table import TableMetadata
+
+# The readers and the segmentation are imported inside the functions that use them,
+# so that every other command starts without loading them.
 
 #: Counter units that count half cycles (two segments per load cycle).
 SEGMENT_UNITS = ("segment", "segments")
@@ -53,6 +57,8 @@ def machine_cycles(table: pd.DataFrame, metadata: TableMetadata) -> int | None:
 
 def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
     """What ``inspect`` prints, as a JSON-ready mapping."""
+    from pipeline.condition.segmentation import count_cycles
+
     cycles = count_cycles(table["force"].to_numpy()) if "force" in table else None
     counted = machine_cycles(table, metadata)
     warnings = list(metadata.warnings)
@@ -110,6 +116,8 @@ def command(
 ) -> None:
     """Show what the readers detect in FILE (layout, columns, units, cycles), processing nothing."""
     try:
+        from pipeline.ingest import read_table
+
         table, metadata = read_table(file, kind=kind.value, strict=False)
         report = summary(table, metadata)
     except ChainbenchError as error:

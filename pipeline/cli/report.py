@@ -7,11 +7,12 @@ from typing import Annotated
 
 import typer
 
-from pipeline.campaign import default_output
 from pipeline.cli._output import console
 from pipeline.errors import ChainbenchError
-from pipeline.report.build import SUMMARY_NAME, build_report
 from pipeline.store.lock import campaign_lock
+
+# The report builder and the campaign module are imported inside the functions that
+# use them, so that every other command starts without loading them.
 
 
 def processed_folder(target: Path) -> Path:
@@ -29,6 +30,9 @@ def processed_folder(target: Path) -> Path:
     ChainbenchError
         When neither `target` nor its processed folder holds a summary.
     """
+    from pipeline.campaign import default_output
+    from pipeline.report.build import SUMMARY_NAME
+
     if (target / SUMMARY_NAME).is_file():
         return target
     processed = default_output(target)
@@ -47,6 +51,8 @@ def command(
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks.")] = False,
 ) -> None:
     """Rebuild the report of a processed campaign, from processed/ alone; print its path."""
+    from pipeline.report.build import build_report
+
     try:
         folder = processed_folder(campaign)
         with campaign_lock(folder):  # not while a run writes the same outputs

@@ -5,18 +5,22 @@ from __future__ import annotations
 import json
 from contextlib import contextmanager
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import numpy as np
 import typer
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
-from pipeline.campaign import CampaignResult, process_campaign, summary_table
 from pipeline.cli._output import console
 from pipeline.errors import ChainbenchError
-from pipeline.runs import read_run
 from pipeline.runsheet import RUN_SHEET_NAME, load_run_sheet
+
+if TYPE_CHECKING:
+    from pipeline.campaign import CampaignResult
+
+# The stages (pipeline.campaign, pipeline.runs) are imported inside the commands that
+# run them, so that every other command starts without loading them.
 
 RAW = Path("raw")
 PROCESSED = Path("processed")
@@ -125,6 +129,8 @@ def _print_result(result: CampaignResult) -> None:
 
 
 def _result_json(result: CampaignResult) -> dict:
+    from pipeline.campaign import summary_table
+
     summary = result.summary
     tables = {
         dim: json.loads(summary_table(summary, dim).reset_index().to_json(orient="records"))
@@ -180,6 +186,8 @@ def run_command(
 
     Runs whose inputs did not change since the last run are not redone.
     """
+    from pipeline.campaign import process_campaign
+
     all_ok, documents = True, []
     with _dask_client(workers, scheduler) as client:
         for folder in campaign_folders(campaigns):
@@ -212,6 +220,8 @@ def validate_command(
     campaigns: CampaignArgs = None,
 ) -> None:
     """Check run sheets and read every run file, without processing."""
+    from pipeline.runs import read_run
+
     all_ok = True
     for folder in campaign_folders(campaigns):
         try:

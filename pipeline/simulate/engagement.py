@@ -42,7 +42,6 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
-from scipy.signal import lfilter
 
 from pipeline.theory.wheel_impact import (
     RYABOV_MASS_SHARE,
@@ -213,6 +212,8 @@ def strike_response(amplitudes, onsets, time: np.ndarray, omega_n: float, zeta: 
     ``s_j = exp(lambda dt) s_{j-1} + u_j`` with ``u_j`` the strikes falling in
     ``(t_{j-1}, t_j]`` propagated to ``t_j``: exact, O(n).
     """
+    from scipy.signal import lfilter  # here: scipy.signal takes ~1 s to import
+
     amplitudes = np.asarray(amplitudes, dtype=float)
     onsets = np.asarray(onsets, dtype=float)
     dt = (time[-1] - time[0]) / (time.size - 1) if time.size > 1 else 1.0
