@@ -1,0 +1,63 @@
+"""One run's stages: an engagement run may take its chain stiffness from a stiffness campaign."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from pipeline.campaign import process_campaign
+from pipeline.cli import app
+from pipeline.store.netcdf import read_dataset
+
+runner = CliRunner()
+
+
+def simulate(kind: str, out: Path, *options: str) -> None:
+    result = runner.invoke(app, ["simulate", kind, "--out", str(out), *options])
+    assert result.exit_code == 0, result.output
+
+
+@pytest.fixture(scope="module")
+def lab(tmp_path_factory) -> Path:
+    root = tmp_path_factory.mktemp("lab")
+    simulate("tensile", root / "raw" / "stiff", "--specimens", "2", "--campaign", "stiff")
+    simulate("engagement", root / "raw" / "wheel", "--teeth", "8", "--omega", "20",
+             "--duration", "1", "--sample-rate", "10000", "--campaign", "wheel")
+    return root
+
+
+def wheel_using(lab: Path, target: Path, reference: str) -> Path:
+    """A copy of the engagement campaign whose runs take E0 from `reference`."""
+    target.mkdir(parents=True)
+    for path in (lab / "raw" / "wheel").iterdir():
+        (target / path.name).write_bytes(path.read_bytes())
+    sheet = target / "campaign.toml"
+    sheet.write_text(re.sub(r"^E0_N = .*$", f'stiffness_from = "{reference}"',
+                            sheet.read_text(), flags=re.M))
+    return target
+
+
+def test_engagement_run_uses_the_measured_stiffness(lab, tmp_path):
+    process_campaign(lab / "raw" / "stiff", lab / "processed" / "stiff")
+    wheel = wheel_using(lab, tmp_path / "wheel", "stiff/c18x64")
+    result = process_campaign(wheel, lab / "processed" / "wheel")
+    assert result.failures == []
+    measured = read_dataset(lab / "processed" / "stiff" / "summary.nc")
+    E0_exp = float(measured["E0_exp"].sel(chain="c18x64"))
+    assert result.summary["E0"].values.tolist() == [E0_exp]
+
+
+@pytest.mark.parametrize(("reference", "words"), [
+    ("nowhere/c18x64", "no processed stiffness campaign"),
+    ("stiff/c99", "has no chain 'c99'"),
+])
+def test_missing_stiffness_source_fails_the_run_with_its_key(lab, tmp_path, reference, words):
+    process_campaign(lab / "raw" / "stiff", lab / "processed" / "stiff")
+    wheel = wheel_using(lab, tmp_path / "wheel", reference)
+    result = process_campaign(wheel, lab / "processed" / f"wheel-{reference.split('/')[0]}")
+    (failure,) = result.failures
+    assert words in failure.message
+    assert failure.error.column == "stiffness_from"
