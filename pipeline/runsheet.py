@@ -88,6 +88,11 @@ class ChainDef(_Strict):
     E_steel_kgf_per_cm2: PositiveFloat = 2.2e6
     preload_kgf: PositiveFloat | None = None
     upper_load_kgf: PositiveFloat | None = None
+    # acceptance limits of the standard the lab tests to (checked only when declared)
+    proof_force_kN: PositiveFloat | None = None  #: proof (manufacturing test) force
+    min_breaking_force_kN: PositiveFloat | None = None  #: smallest breaking force allowed
+    max_elongation_at_proof_pct: PositiveFloat | None = None  #: largest elongation at proof force
+    min_elongation_at_fracture_pct: PositiveFloat | None = None  #: smallest elongation at fracture
 
     @model_validator(mode="after")
     def _known_catalog(self) -> ChainDef:
@@ -171,9 +176,17 @@ class RunDef(_Strict):
     note: str = ""
     # tensile runs
     specimen: str | None = None
+    #: length the gauges measure over; not needed when every channel used is a strain
     gauge_length_mm: PositiveFloat | None = None
+    #: load cycles of the test; 1 is a single pull (E0 from the first loading)
     cycles: int | None = Field(default=None, ge=1)
     fit_window: FitWindow | None = None
+    #: True: the gauge channels measure the same thing, average them; False: never average
+    average_gauges: bool | None = None
+    #: proof force of a proof-load test (default: the chain's ``proof_force_kN``)
+    proof_force_kN: PositiveFloat | None = None
+    #: strain offset of the yield-like force (offset method, like Rp0.2) [%]
+    yield_offset_pct: PositiveFloat = 0.2
     # engagement runs
     wheel: str | None = None
     branch_length_m: PositiveFloat | None = None
@@ -186,8 +199,6 @@ class RunDef(_Strict):
 
     @model_validator(mode="after")
     def _kind_fields(self) -> RunDef:
-        if self.kind == "tensile" and self.gauge_length_mm is None:
-            raise ValueError("a tensile run needs gauge_length_mm (> 0)")
         if self.kind == "engagement":
             missing = [key for key in ("wheel", "branch_length_m") if getattr(self, key) is None]
             if missing:

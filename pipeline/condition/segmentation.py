@@ -19,6 +19,10 @@ Branch labels (:data:`BRANCHES`)
 ``hold``
     dwell at a peak, and the valley after a cycle's unloading (up to the next
     loading branch, or the end of the record), labelled with that cycle.
+``beyond_peak`` / ``after_fracture``
+    given by :func:`pipeline.condition.tensile.condition_tensile`: the fall of
+    force after the peak of a single pull that is no unloading (necking), and
+    everything after a fracture (not analysed).
 """
 
 from __future__ import annotations
@@ -31,7 +35,7 @@ from scipy.ndimage import uniform_filter1d
 from pipeline.errors import SignalError
 
 #: Branch labels of the samples, in the order a cycle passes through them.
-BRANCHES = ("preload", "loading", "hold", "unloading")
+BRANCHES = ("preload", "loading", "hold", "unloading", "beyond_peak", "after_fracture")
 
 #: Schmitt-trigger levels as fractions of the force range (lower, upper).
 TRIGGER_LEVELS = (0.3, 0.7)

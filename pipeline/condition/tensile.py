@@ -3,11 +3,16 @@
 :func:`condition_tensile` takes the canonical table of :mod:`pipeline.ingest.table`
 (``time``, ``force``, ``gauge_1``...) and returns a :class:`TensileRun`:
 
-- checks the record (monotonic time, NaN stretches, saturated gauges) and
-  raises a :class:`~pipeline.errors.SignalError` with a hint when it is unfit;
-- averages the gauges (the mean cancels the bending of the segment) and keeps
-  their spread as a quality figure;
-- divides the mean elongation by the gauge length (relative elongation);
+- checks the record (NaN stretches, saturated gauges) and raises a
+  :class:`~pipeline.errors.SignalError` with a hint when it is unfit; time is
+  not needed (the readers warn of repeated or reset time stamps);
+- finds a fracture and leaves everything after it out
+  (:mod:`pipeline.condition.breaks`), and cuts each channel where it stopped
+  following the specimen (an extensometer taken off);
+- turns each channel into strain (a length over the gauge length, a strain as
+  read), and chooses the channels that give the specimen's strain: averaged
+  only when they measure the same thing (:mod:`pipeline.condition.channels`),
+  the spread of the averaged ones kept as a quality figure;
 - segments the force into cycles and branches
   (:func:`pipeline.condition.segmentation.segment_cycles`);
 - computes per cycle the hysteresis energy (loop area) [J] and the permanent
@@ -16,12 +21,15 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
 
-from pipeline.condition.segmentation import BRANCHES, Segmentation, segment_cycles
+from pipeline.condition.breaks import find_fracture, find_removal
+from pipeline.condition.channels import choose_channels, compared_slopes
+from pipeline.condition.segmentation import BRANCHES, Segmentation, load_sign, segment_cycles
 from pipeline.errors import SignalError
 
 #: Longest run of missing samples that is dropped rather than reported [samples].
@@ -40,29 +48,43 @@ class TensileRun:
     ----------
     samples : pandas.DataFrame
         One row per kept sample (index: row of the canonical table): ``time``
-        [s] (if present), ``force`` [N], ``gauge_1``... [m], ``elongation`` [m]
-        (mean of the gauges), ``gauge_spread`` [m] (largest minus smallest
-        gauge), ``strain`` [1] (elongation over gauge length), ``cycle`` (int,
-        0 before the first loading) and ``branch`` (categorical, one of
-        :data:`~pipeline.condition.segmentation.BRANCHES`).
+        [s] (if present, not necessarily increasing), ``force`` [N], the
+        channels as read (``gauge_1``... [m], ``strain_1``... [1]), ``strain``
+        [1] (mean strain of the channels used, NaN where one of them is not
+        usable), ``elongation`` [m] (strain times the gauge length, NaN without
+        one), ``gauge_spread`` [m] (largest minus smallest channel used),
+        ``cycle`` (int, 0 before the first loading) and ``branch`` (categorical,
+        one of :data:`~pipeline.condition.segmentation.BRANCHES`).
     cycles : pandas.DataFrame
         One row per cycle (index ``cycle``, 1-based): ``peak_force`` and
         ``valley_force`` [N] (medians at the peak and at the lower force before
         the cycle, magnitudes in the direction of the load), ``hysteresis_energy``
-        [J], ``permanent_set`` [m] (in the direction of the load) and
-        ``complete`` (bool: the unloading returned to the lower force; else the
-        permanent set is NaN).
+        [J], ``permanent_strain`` [1] and ``permanent_set`` [m] (in the
+        direction of the load) and ``complete`` (bool: the unloading returned to
+        the lower force; else the permanent set is NaN).
     gauge_length : float
-        Gauge length [m].
+        Gauge length [m]; NaN when the run sheet gives none (strain channels only).
     gauge_disagreement : float
-        Gauge spread per unit mean elongation [1] (slope of ``gauge_spread``
-        over ``elongation`` on the loading branches): 0.1 means the gauges differ
-        by 10 % of the mean elongation (bending); NaN with a single gauge.
+        Spread of the channels averaged per unit mean strain [1] (slope of the
+        spread over the mean on the loading branches): 0.1 means they differ by
+        10 % of the mean (bending); NaN with a single channel.
     segmentation : Segmentation
-        The cycle and branch segmentation (indices refer to ``samples`` rows
-        by position).
+        The cycle and branch segmentation of the samples up to the fracture
+        (indices refer to ``samples`` rows by position).
+    channels : pandas.DataFrame
+        One row per displacement channel (index: canonical name): ``column``
+        (the file's name), ``kind`` (extensometer, gauge, crosshead), ``slope``
+        [N] (its stiffness on the first loading, see
+        :mod:`pipeline.condition.channels`), ``used`` (bool), ``removed_at``
+        (position of the first unusable sample, -1 when usable throughout) and
+        ``removal`` (why: ``"runs backwards"``, ``"jumps"``, ``"freezes"`` or "").
+    fracture : int or None
+        Position of the last sample before fracture; None when it did not break.
+    single_pull : bool
+        One loading (asked with ``cycles = 1``, or found): E0 comes from it.
     warnings : list of str
-        What was repaired on the way (dropped samples, unused gauges).
+        What was repaired or decided on the way (dropped samples, channels left
+        out or cut, fracture).
     """
 
     samples: pd.DataFrame
@@ -70,6 +92,9 @@ class TensileRun:
     gauge_length: float
     gauge_disagreement: float
     segmentation: Segmentation
+    channels: pd.DataFrame
+    fracture: int | None = None
+    single_pull: bool = False
     warnings: list[str] = field(default_factory=list)
 
     @property
@@ -114,19 +139,6 @@ def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
     return list(zip(np.flatnonzero(edges == 1), np.flatnonzero(edges == -1), strict=True))
 
 
-def _check_time(time: np.ndarray) -> None:
-    steps = np.diff(time)
-    bad = np.flatnonzero(~(steps > 0) & np.isfinite(steps))
-    if bad.size:
-        sample = int(bad[0]) + 1
-        raise SignalError(
-            f"time is not strictly increasing at sample {sample} "
-            f"({time[sample - 1]:.6g} s then {time[sample]:.6g} s)",
-            column="time",
-            hint="the log may hold several tests or a restarted acquisition: split it",
-        )
-
-
 def _drop_missing(table: pd.DataFrame, columns: list[str], warnings: list[str]) -> pd.DataFrame:
     """Drop isolated missing samples; raise on a stretch longer than MAX_NAN_RUN."""
     for column in columns:
@@ -145,12 +157,14 @@ def _drop_missing(table: pd.DataFrame, columns: list[str], warnings: list[str]) 
 
 def _check_clipping(force: np.ndarray, gauge: np.ndarray, name: str, rows: pd.Index) -> None:
     """Raise when `gauge` rests at its extreme while the force keeps changing."""
+    if gauge.size < 2:
+        return
     force_span = np.ptp(force)
     for extreme in (gauge.max(), gauge.min()):
         for start, stop in _runs(gauge == extreme):
             if np.ptp(force[start:stop]) > CLIPPING_FORCE_FRACTION * force_span:
                 raise SignalError(
-                    f"the gauge stays at {extreme:.6g} m from sample {rows[start]} to "
+                    f"the gauge stays at {extreme:.6g} from sample {rows[start]} to "
                     f"{rows[stop - 1]} while the force keeps changing: it is stuck or saturated "
                     "(out of range)",
                     column=name,
@@ -158,25 +172,83 @@ def _check_clipping(force: np.ndarray, gauge: np.ndarray, name: str, rows: pd.In
                 )
 
 
-def _permanent_sets(elongation: np.ndarray, segmentation: Segmentation) -> np.ndarray:
-    """Median elongation at the valley after each cycle minus the one before it [m].
+def _permanent_strains(strain: np.ndarray, segmentation: Segmentation) -> np.ndarray:
+    """Median strain at the valley after each cycle minus the one before it [1].
 
     In the direction of the load: positive when the specimen keeps part of its
     deformation, for tension- and compression-positive records alike.
     """
     rest = [
-        np.nan if valley is None else float(np.median(elongation[valley[0] : valley[1] + 1]))
+        np.nan if valley is None else float(np.nanmedian(strain[valley[0] : valley[1] + 1]))
         for valley in segmentation.valleys
     ]
     return segmentation.sign * np.diff(np.array(rest))
 
 
+def _channel_strains(
+    samples: pd.DataFrame, channels: list[str], gauge_length: float | None,
+    columns: Mapping[str, str], warnings: list[str],
+) -> dict[str, np.ndarray]:
+    """Strain [1] of each channel: a strain as read, an elongation over the gauge length."""
+    strains = {}
+    for name in channels:
+        values = samples[name].to_numpy()
+        if name.startswith("strain_"):
+            strains[name] = values.copy()
+        elif gauge_length is not None:
+            strains[name] = values / gauge_length
+        elif len(channels) > 1:
+            warnings.append(f"channel {columns[name]!r} not used: it reads a length and the run "
+                            "sheet gives no gauge_length_mm")
+    if not strains:
+        raise SignalError(
+            "the gauge channels read lengths, and the run sheet gives no gauge length",
+            hint="set gauge_length_mm for the run (the length the gauges measure over)",
+        )
+    return strains
+
+
+def _cut_removed(force: np.ndarray, strains: dict[str, np.ndarray], loading: slice,
+                 sign: int, columns: Mapping[str, str], warnings: list[str]) -> dict:
+    """Cut each channel where it stopped following the specimen on the first loading."""
+    removals = {}
+    for name, strain in strains.items():
+        removal = find_removal(sign * force[loading], sign * strain[loading])
+        if removal is None:
+            continue
+        removals[name] = removal
+        position = loading.start + removal.position
+        strain[position:] = np.nan
+        warnings.append(
+            f"channel {columns[name]!r} {removal.reason} at {abs(force[position]) / 1e3:.4g} kN "
+            "while the force keeps rising (taken off or slipped): its data from there on "
+            "are not used")
+    return removals
+
+
+def _label_after(segmentation: Segmentation, size: int, single_pull: bool,
+                 fracture: int | None) -> tuple[np.ndarray, np.ndarray]:
+    """Cycle and branch of every sample: the segmentation's, then ``after_fracture``;
+    in a single pull the fall from the peak that is no unloading is ``beyond_peak``."""
+    end = segmentation.cycle.size
+    cycle = np.concatenate([segmentation.cycle, np.full(size - end, segmentation.n_cycles)])
+    branch = np.concatenate([segmentation.branch.astype(object),
+                             np.full(size - end, "after_fracture", dtype=object)])
+    if single_pull and not segmentation.complete[-1]:
+        last = segmentation.turns[-1]
+        branch[last[2] : end][branch[last[2] : end] == "unloading"] = "beyond_peak"
+    return cycle, branch
+
+
 def condition_tensile(
     table: pd.DataFrame,
-    gauge_length: float,
+    gauge_length: float | None,
     *,
     preload: float | None = None,
     n_cycles: int | None = None,
+    kinds: Mapping[str, str] | None = None,
+    columns: Mapping[str, str] | None = None,
+    average: bool | None = None,
 ) -> TensileRun:
     """Condition the canonical table of a tensile run.
 
@@ -185,95 +257,152 @@ def condition_tensile(
     Parameters
     ----------
     table : pandas.DataFrame
-        Canonical table (SI): ``force`` [N], ``gauge_1``... [m], optionally
-        ``time`` [s]; other columns are ignored.
-    gauge_length : float
-        Length of the measured segment [m].
+        Canonical table (SI): ``force`` [N], ``gauge_1``... [m] and/or
+        ``strain_1``... [1], optionally ``time`` [s] (not needed: it may repeat,
+        reset or be missing); other columns are ignored.
+    gauge_length : float or None
+        Length the gauges measure over [m]; None when every channel is a strain.
     preload : float, optional
         Magnitude of the preload [N]; the force must rise above it.
     n_cycles : int, optional
-        Number of cycles the test should have; fewer is an error.
+        Number of cycles the test should have; fewer is an error, 1 is a single
+        pull.
+    kinds : mapping, optional
+        Channel -> kind (``"extensometer"``, ``"gauge"``, ``"crosshead"``), as
+        the reader found it; default ``"gauge"``.
+    columns : mapping, optional
+        Channel -> the file's column name, for messages; default the channel.
+    average : bool, optional
+        The run sheet's ``average_gauges`` (see :mod:`pipeline.condition.channels`).
 
     Returns
     -------
     TensileRun
-        Samples with elongation, strain, cycle and branch; per-cycle hysteresis
-        energy and permanent set; the gauge disagreement; warnings.
+        Samples with strain, elongation, cycle and branch; per-cycle hysteresis
+        energy and permanent set; the channels and which are used; the fracture;
+        warnings.
 
     Raises
     ------
     SignalError
-        Missing force or gauge column, non-monotonic time, a stretch of missing
-        values, a saturated gauge, force never above the preload, fewer cycles
-        than asked.
+        Missing force or gauge column, a stretch of missing values, a saturated
+        gauge, force never above the preload, fewer cycles than asked, lengths
+        without a gauge length, no channel that grows with the force.
     ValueError
-        When `gauge_length` is not a positive number.
+        When `gauge_length` is given and not a positive number.
     """
-    if not gauge_length > 0:
+    if gauge_length is not None and not gauge_length > 0:
         raise ValueError(f"gauge_length must be > 0 [m], got {gauge_length!r}")
     warnings: list[str] = []
-    gauges = [name for name in table.columns if str(name).startswith("gauge_")]
-    if "force" not in table.columns or not gauges:
+    channels = [name for name in table.columns if str(name).startswith(("gauge_", "strain_"))]
+    if "force" not in table.columns or not channels:
         raise SignalError(
             "a tensile run needs a force column and at least one gauge column",
             hint="map the columns in the run sheet: columns = {force = ..., gauges = [...]}",
         )
-    unused = [name for name in gauges if table[name].isna().all()]
+    columns = {name: (columns or {}).get(name, name) for name in channels}
+    kinds = {name: (kinds or {}).get(name) or "gauge" for name in channels}
+    unused = [name for name in channels if table[name].isna().all()]
     if unused:
         warnings.append(f"left out empty gauge column(s): {', '.join(unused)}")
-        gauges = [name for name in gauges if name not in unused]
-    if not gauges:
+        channels = [name for name in channels if name not in unused]
+    if not channels:
         raise SignalError("every gauge column is empty", hint="check the gauge column mapping")
-    columns = (["time"] if "time" in table.columns else []) + ["force", *gauges]
-    samples = table[columns].astype(float)
-    if "time" in samples.columns:
-        _check_time(samples["time"].to_numpy())
-    samples = _drop_missing(samples, columns, warnings)
+    kept = (["time"] if "time" in table.columns else []) + ["force", *channels]
+    samples = _drop_missing(table[kept].astype(float), ["force", *channels], warnings)
     force = samples["force"].to_numpy()
-    readings = samples[gauges].to_numpy()
-    for number, name in enumerate(gauges):
-        _check_clipping(force, readings[:, number], name, samples.index)
+    sign = load_sign(force)
+    fracture = find_fracture(sign * force)
+    end = force.size if fracture is None else fracture + 1
+    if fracture is not None:
+        warnings.append(f"fracture at {abs(force[fracture]) / 1e3:.4g} kN (sample "
+                        f"{samples.index[fracture]}): the {force.size - end} samples after it "
+                        "are not analysed")
+    segmentation = segment_cycles(force[:end], preload=preload, n_cycles=n_cycles)
+    single_pull = n_cycles == 1 or (n_cycles is None and segmentation.n_cycles == 1)
+    if n_cycles == 1 and segmentation.n_cycles > 1:
+        warnings.append(f"the run sheet says cycles = 1, the log has {segmentation.n_cycles} "
+                        "loadings: E0 from the first loading only")
 
-    segmentation = segment_cycles(force, preload=preload, n_cycles=n_cycles)
-    elongation = readings.mean(axis=1)
+    for name in channels:
+        _check_clipping(force[:end], samples[name].to_numpy()[:end], columns[name],
+                        samples.index)
+    strains = _channel_strains(samples, channels, gauge_length, columns, warnings)
+    first = slice(0, int(segmentation.turns[0, 1]) + 1)  # up to the first peak
+    removals = _cut_removed(force, strains, first, sign, columns, warnings)
+    for strain in strains.values():
+        strain[end:] = np.nan
+    loading = np.zeros(force.size, dtype=bool)
+    loading[first] = segmentation.branch[first] == "loading"
+    oriented = {name: sign * strain for name, strain in strains.items()}
+    choice = choose_channels(compared_slopes(sign * force, oriented, loading),
+                             {name: kinds[name] for name in strains}, columns, average)
+    warnings += choice.warnings
+    if not choice.used:
+        raise SignalError(
+            "no gauge channel grows with the force on the first loading",
+            hint="check the gauge columns, their sign and wiring, and the run sheet's columns",
+        )
+
+    used = np.column_stack([strains[name] for name in choice.used])
+    strain = used.mean(axis=1)
+    length = np.nan if gauge_length is None else float(gauge_length)
+    cycle, branch = _label_after(segmentation, force.size, single_pull, fracture)
     samples = samples.assign(
-        elongation=elongation,
-        gauge_spread=readings.max(axis=1) - readings.min(axis=1),
-        strain=elongation / gauge_length,
-        cycle=segmentation.cycle,
-        branch=pd.Categorical(segmentation.branch, categories=BRANCHES),
+        strain=strain,
+        elongation=strain * length,
+        gauge_spread=(used.max(axis=1) - used.min(axis=1)) * length,
+        cycle=cycle,
+        branch=pd.Categorical(branch, categories=BRANCHES),
     )
 
     energies, peaks, valleys = [], [], []
-    oriented = segmentation.sign * force
+    oriented_force = sign * force
+    elongation = samples["elongation"].to_numpy()
     for number, (load_start, load_end, unload_start, unload_end) in enumerate(segmentation.turns):
         path = slice(load_start, unload_end + 1)
         energies.append(loop_energy(force[path], elongation[path]))
-        peaks.append(float(np.median(oriented[load_end : unload_start + 1])))
+        peaks.append(float(np.median(oriented_force[load_end : unload_start + 1])))
         rest = segmentation.valleys[number]
-        valleys.append(
-            float(np.median(oriented[rest[0] : rest[1] + 1] if rest else oriented[load_start]))
-        )
+        valleys.append(float(np.median(
+            oriented_force[rest[0] : rest[1] + 1] if rest else oriented_force[load_start])))
+    permanent = _permanent_strains(strain, segmentation)
     cycles = pd.DataFrame(
         {
             "peak_force": peaks,
             "valley_force": valleys,
             "hysteresis_energy": energies,
-            "permanent_set": _permanent_sets(elongation, segmentation),
+            "permanent_strain": permanent,
+            "permanent_set": permanent * length,
             "complete": segmentation.complete,
         },
         index=pd.Index(np.arange(1, segmentation.n_cycles + 1), name="cycle"),
     )
-    loading = samples["branch"].to_numpy() == "loading"
     disagreement = np.nan
-    if len(gauges) > 1 and loading.any() and np.ptp(elongation[loading]) > 0:
-        spread = samples["gauge_spread"].to_numpy()
-        disagreement = float(abs(np.polyfit(elongation[loading], spread[loading], 1)[0]))
+    on_loading = (samples["branch"].to_numpy() == "loading") & np.isfinite(strain)
+    if len(choice.used) > 1 and on_loading.any() and np.ptp(strain[on_loading]) > 0:
+        spread = used.max(axis=1) - used.min(axis=1)
+        disagreement = float(abs(np.polyfit(strain[on_loading], spread[on_loading], 1)[0]))
+    channel_table = pd.DataFrame(
+        {
+            "column": [columns[name] for name in channels],
+            "kind": [kinds[name] for name in channels],
+            "slope": [choice.slopes.get(name, np.nan) for name in channels],
+            "used": [name in choice.used for name in channels],
+            "removed_at": [removals[name].position if name in removals else -1
+                           for name in channels],
+            "removal": [removals[name].reason if name in removals else "" for name in channels],
+        },
+        index=pd.Index(channels, name="channel"),
+    )
     return TensileRun(
         samples=samples,
         cycles=cycles,
-        gauge_length=float(gauge_length),
+        gauge_length=length,
         gauge_disagreement=disagreement,
         segmentation=segmentation,
+        channels=channel_table,
+        fracture=fracture,
+        single_pull=single_pull,
         warnings=warnings,
     )

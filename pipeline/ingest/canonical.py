@@ -9,8 +9,12 @@ layout are handled once:
   error unless the run sheet says which to take;
 * a missing, unknown or wrong-dimension unit is an error naming the column and
   the run-sheet key to set (``units = {force = "kN"}``);
+* a gauge column whose unit is a ratio (``%``, ``mm/mm``, ``µm/m``) is a strain
+  channel, ``strain_1``...; each gauge or strain column is given the kind its
+  name says (:func:`~pipeline.ingest.names.gauge_kind`: crosshead, extensometer
+  or plain gauge), so that later stages never mix channels of different kinds;
 * NaN stretches are kept as NaN and reported with their count and longest run;
-* time stepping backwards and time gaps are *reported* (warnings and
+* time stepping backwards, repeated time stamps and time gaps are *reported* (warnings and
   :attr:`TableMetadata.time_monotonic` / ``time_gaps``), never repaired: the
   conditioning stage decides what to do with them.
 
@@ -26,10 +30,17 @@ import numpy as np
 import pandas as pd
 
 from pipeline.errors import ChainbenchError, ColumnError, UnitError
+from pipeline.ingest.names import gauge_kind
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.roles import SHEET_KEY, display_name, role_of_key
 from pipeline.ingest.table import GAP_FACTOR, ROLES, ColumnInfo, TableMetadata
-from pipeline.ingest.unitparse import ROLE_SI_UNIT, si_factor, spellings, unit_role
+from pipeline.ingest.unitparse import (
+    ROLE_SI_UNIT,
+    is_strain_unit,
+    si_factor,
+    spellings,
+    unit_role,
+)
 
 #: Values some machines write for a channel that records nothing.
 SENTINELS = {
@@ -106,7 +117,8 @@ def build(
     empty = _clean(raw, meta.warnings)
     assigned = _settle_roles(raw, empty, problems)
     rejected: dict[str, UnitError] = {}
-    factors, found_units = _settle_units(raw, assigned, sheet_units, problems, rejected)
+    factors, found_units, strains = _settle_units(raw, assigned, sheet_units, problems,
+                                                  rejected)
     for role in REQUIRED[kind]:
         if assigned.get(role):
             continue
@@ -118,11 +130,10 @@ def build(
                                           for i in range(len(raw.names))),
         ))
     data: dict[str, np.ndarray] = {}
-    canonical: dict[int, str] = {}
+    canonical = _canonical_names(assigned, strains)
     for role in ROLES:
-        for number, index in enumerate(assigned.get(role, []), start=1):
-            name = f"gauge_{number}" if role == "gauge" else role
-            canonical[index] = name
+        for index in assigned.get(role, []):
+            name = canonical[index]
             if index in factors:
                 array = raw.arrays[index]
                 if factors[index] != 1.0:
@@ -138,14 +149,33 @@ def build(
             role=canonical.get(index),
             unit=found_units.get(index, raw.units[index]),
             si_unit=_si_unit(canonical[index]) if canonical.get(index) in data else None,
+            kind=gauge_kind(raw.names[index]) if canonical.get(index, "").startswith(
+                ("gauge_", "strain_")) else None,
         )
         for index in range(len(raw.names))
     ]
     return table, meta
 
 
+def _canonical_names(assigned: dict[str, list[int]], strains: set[int]) -> dict[int, str]:
+    """Column index -> canonical name: gauges ``gauge_1``..., strains ``strain_1``..., in file
+    order within each."""
+    names: dict[int, str] = {}
+    counts = {"gauge": 0, "strain": 0}
+    for role in ROLES:
+        for index in assigned.get(role, []):
+            if role != "gauge":
+                names[index] = role
+                continue
+            prefix = "strain" if index in strains else "gauge"
+            counts[prefix] += 1
+            names[index] = f"{prefix}_{counts[prefix]}"
+    return names
+
+
 def _si_unit(name: str) -> str:
-    return ROLE_SI_UNIT["gauge" if name.startswith("gauge_") else name]
+    return ROLE_SI_UNIT[name.partition("_")[0] if name.startswith(("gauge_", "strain_"))
+                        else name]
 
 
 def _clean(raw: RawTable, warnings: list[str]) -> set[int]:
@@ -207,16 +237,18 @@ def _settle_units(
     sheet_units: dict[str, list[str]],
     problems: _Problems,
     rejected: dict[str, UnitError],
-) -> tuple[dict[int, float], dict[int, str | None]]:
-    """SI factors of the columns that can be converted, and each column's unit text.
+) -> tuple[dict[int, float], dict[int, str | None], set[int]]:
+    """SI factors of the columns that can be converted, each column's unit text, and the
+    gauge columns that hold a strain (a ratio unit).
 
-    A column matched by name whose unit is of another dimension (``Dehnung
-    [%]``) is not used, with a warning; its error is kept in `rejected` in
+    A column matched by name whose unit is of another dimension (``Kraft
+    [mm]``) is not used, with a warning; its error is kept in `rejected` in
     case its role ends up missing.
     """
     file = raw.metadata.file
     factors: dict[int, float] = {}
     found: dict[int, str | None] = {}
+    strains: set[int] = set()
     for role in list(assigned):
         for position, index in enumerate(list(assigned[role])):
             name = display_name(raw.names, index)
@@ -242,6 +274,11 @@ def _settle_units(
                     f'{{{SHEET_KEY[role]} = "..."}}',
                 ))
                 continue
+            if role == "gauge" and is_strain_unit(text):
+                strains.add(index)
+                factors[index] = si_factor(text, "strain", file=file, row=raw.units_line,
+                                           column=name, source=source)
+                continue
             explicit = role in raw.candidates.explicit or source == "the run sheet"
             if spellings(text) and unit_role(text) != role and not explicit:
                 raw.metadata.warnings.append(
@@ -263,7 +300,7 @@ def _settle_units(
                 problems.report(error)
         if not assigned[role]:
             del assigned[role]
-    return factors, found
+    return factors, found, strains
 
 
 def _report_missing(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> None:
@@ -292,6 +329,13 @@ def _check_time(table: pd.DataFrame, raw: RawTable, meta: TableMetadata) -> None
         first = int(np.argmax(backwards)) + 1
         meta.warnings.append(
             f"time: steps back {count} times, first at {raw.where(first)}"
+        )
+    repeated = steps == 0
+    if repeated.any():
+        first = int(np.argmax(repeated)) + 1
+        meta.warnings.append(
+            f"time: {int(np.count_nonzero(repeated))} repeated time stamp(s), first at "
+            f"{raw.where(first)}"
         )
     sample = steps[:: max(1, steps.size // 100_000)]
     sample = sample[sample > 0]

@@ -21,7 +21,8 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "force": ("force", "load", "tension"),
         "gauge": (
             "extension", "displacement", "gauge", "elongation", "extensometer", "ext",
-            "deflection", "position", "stroke", "crosshead", "lvdt", "dial",
+            "deflection", "position", "stroke", "crosshead", "lvdt", "dial", "strain",
+            "actuator", "piston", "clip gauge",
         ),
         "angle": ("angle", "encoder", "rotation"),
         "cycle_count": ("cycle", "cycles", "cycle count", "count"),
@@ -29,24 +30,46 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
     "de": {
         "time": ("zeit", "prüfzeit", "testzeit", "versuchszeit"),
         "force": ("kraft", "standardkraft", "prüfkraft", "last"),
-        "gauge": ("weg", "standardweg", "traversenweg", "dehnung", "verlängerung", "feindehnung"),
+        "gauge": ("weg", "standardweg", "traversenweg", "dehnung", "verlängerung", "feindehnung",
+                  "wegaufnehmer", "standardwegaufnehmer", "traverse", "kolbenweg",
+                  "maschinenweg", "extensometer", "ansetzdehnungsaufnehmer", "maytec"),
         "angle": ("winkel", "drehwinkel"),
         "cycle_count": ("zyklus", "zyklen", "zykluszahl", "lastwechsel"),
     },
     "pl": {
         "time": ("czas",),
         "force": ("siła", "obciążenie", "naciąg"),
-        "gauge": ("wydłużenie", "przemieszczenie", "czujnik", "ugięcie"),
+        "gauge": ("wydłużenie", "przemieszczenie", "czujnik", "ugięcie", "odkształcenie",
+                  "ekstensometr", "trawersa", "tłok"),
         "angle": ("kąt", "obrót"),
         "cycle_count": ("cykl", "cykle", "liczba cykli"),
     },
     "es": {
         "time": ("tiempo",),
         "force": ("fuerza", "carga"),
-        "gauge": ("desplazamiento", "extensión", "alargamiento"),
+        "gauge": ("desplazamiento", "extensión", "alargamiento", "deformación",
+                  "extensómetro", "travesaño", "actuador", "pistón", "carrera"),
         "angle": ("ángulo",),
         "cycle_count": ("ciclo", "ciclos", "recuento"),
     },
+}
+
+#: Names that say what a displacement channel measures: the travel of the machine's
+#: crosshead or actuator (it includes the machine's own compliance), or the specimen
+#: itself (an extensometer, a strain). Other gauge names ("Extension", "Weg 1",
+#: "Wydłużenie") say neither and are of kind ``"gauge"``.
+GAUGE_KINDS: dict[str, tuple[str, ...]] = {
+    "crosshead": (
+        "crosshead", "cross head", "stroke", "position", "actuator", "piston",
+        "traverse", "traversenweg", "standardweg", "standardwegaufnehmer", "kolbenweg",
+        "maschinenweg", "trawersa", "trawersy", "tłok", "travesaño", "actuador", "pistón",
+        "carrera",
+    ),
+    "extensometer": (
+        "extensometer", "ext", "clip gauge", "strain", "dehnung", "feindehnung",
+        "ansetzdehnungsaufnehmer", "maytec", "ekstensometr", "odkształcenie", "extensómetro",
+        "deformación", "dial", "czujnik",
+    ),
 }
 
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^()]*)\))\s*$")
@@ -102,6 +125,36 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
     return text, None
 
 
+def _best_match(name: str, keywords: tuple[tuple[tuple[str, ...], str], ...]) -> str | None:
+    """The label of the keyword ending last in `name` (then the longest), or None."""
+    words = tokens(name)
+    best: tuple[int, int, str] | None = None
+    for keyword, label in keywords:
+        size = len(keyword)
+        for start in range(len(words) - size + 1):
+            if words[start : start + size] == keyword:
+                rank = (start + size, size, label)
+                if best is None or rank[:2] > best[:2]:
+                    best = rank
+    return best[2] if best else None
+
+
+_KIND_KEYWORDS = tuple(
+    (tokens(word), kind) for kind, words in GAUGE_KINDS.items() for word in words
+)
+
+
+def gauge_kind(name: str) -> str:
+    """What a displacement channel measures, from its name: see :data:`GAUGE_KINDS`.
+
+    Examples
+    --------
+    >>> gauge_kind("Traversenweg"), gauge_kind("Dehnung 1"), gauge_kind("Extension")
+    ('crosshead', 'extensometer', 'gauge')
+    """
+    return _best_match(name, _KIND_KEYWORDS) or "gauge"
+
+
 def match_role(name: str) -> str | None:
     """The role a column name suggests, or None.
 
@@ -113,13 +166,4 @@ def match_role(name: str) -> str | None:
     >>> match_role("Total Cycle Count"), match_role("Machine_Load"), match_role("Siła")
     ('cycle_count', 'force', 'force')
     """
-    words = tokens(name)
-    best: tuple[int, int, str] | None = None
-    for keyword, role in _KEYWORDS:
-        size = len(keyword)
-        for start in range(len(words) - size + 1):
-            if words[start : start + size] == keyword:
-                rank = (start + size, size, role)
-                if best is None or rank[:2] > best[:2]:
-                    best = rank
-    return best[2] if best else None
+    return _best_match(name, _KEYWORDS)

@@ -14,6 +14,8 @@ A reader turns one raw file into ``(table, metadata)``:
                             engagement log
     ``gauge_1``...  m       elongation read by each displacement gauge /
                             extensometer / crosshead channel, in file order
+    ``strain_1``... 1       strain read by each channel that gives a ratio
+                            (%, mm/mm, µm/m), in file order
     ``angle``       rad     wheel angle or encoder channel (engagement logs)
     ``cycle_count`` 1       the machine's own cycle or segment counter
     ==============  ======  ==================================================
@@ -29,7 +31,8 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field
 
-#: Roles a column can take; gauges are numbered ``gauge_1``, ``gauge_2``, ...
+#: Roles a column can take; gauges are numbered ``gauge_1``, ``gauge_2``, ... (``strain_1``,
+#: ... for gauges whose unit is a ratio).
 ROLES = ("time", "force", "gauge", "angle", "cycle_count")
 
 #: A time step longer than this many median steps is reported as a gap.
@@ -44,6 +47,9 @@ class ColumnInfo:
     role: str | None  #: canonical column name (``"force"``, ``"gauge_2"``) or None if unused
     unit: str | None  #: unit as found in the file or run sheet (``"kN"``), None if none
     si_unit: str | None  #: SI unit of the canonical column (``"N"``), None if unused
+    #: for gauge and strain columns, what the name says it measures: ``"extensometer"``
+    #: (on the specimen), ``"crosshead"`` (machine travel) or ``"gauge"`` (not said)
+    kind: str | None = None
 
 
 @dataclass

@@ -10,8 +10,10 @@ from __future__ import annotations
 from pipeline.errors import UnitError
 from pipeline.units import to_si, ureg
 
-#: The SI unit of each canonical column.
-ROLE_SI_UNIT = {"time": "s", "force": "N", "gauge": "m", "angle": "rad", "cycle_count": "1"}
+#: The SI unit of each canonical column; ``strain`` is a gauge column whose unit is a
+#: ratio (%, mm/mm, µm/m): the machine has already divided by its gauge length.
+ROLE_SI_UNIT = {"time": "s", "force": "N", "gauge": "m", "strain": "1", "angle": "rad",
+                "cycle_count": "1"}
 
 _ROLE_DIMENSION = {
     "time": ureg.second.dimensionality,
@@ -66,6 +68,18 @@ def unit_role(text: str | None) -> str | None:
     return None
 
 
+def is_strain_unit(text: str | None) -> bool:
+    """True if `text` is a ratio unit a strain channel carries (``"%"``, ``"mm/mm"``, ``"µm/m"``).
+
+    Examples
+    --------
+    >>> is_strain_unit("(%)"), is_strain_unit("µm/m"), is_strain_unit("mm")
+    (True, True, False)
+    """
+    found = spellings(text or "")
+    return bool(found) and ureg.parse_units(found[0]).dimensionless
+
+
 def looks_like_unit(text: str) -> bool:
     """True if `text` reads as a unit cell of a units row (``"(mm)"``, ``"Sec"``, ``""``)."""
     stripped = text.strip()
@@ -86,7 +100,7 @@ def si_factor(
     text : str
         The unit as found (``"kN"``, ``"(sec)"``).
     role : str
-        ``"time"``, ``"force"``, ``"gauge"`` or ``"angle"``.
+        ``"time"``, ``"force"``, ``"gauge"``, ``"strain"`` (a ratio) or ``"angle"``.
     file, row, column : str, int or None, str
         Where the unit was found, for the error message.
     source : str
@@ -110,7 +124,7 @@ def si_factor(
             hint=f"write a unit pint understands ({ACCEPTED_UNITS})",
         )
     for spelling in found:
-        if _role_of(spelling) == role:
+        if _role_of(spelling) == role or (role == "strain" and is_strain_unit(spelling)):
             return float(to_si(1.0, spelling))
     raise UnitError(
         f"unit {text!r} in {source} is not a unit of {role} ({ROLE_SI_UNIT[role]})",

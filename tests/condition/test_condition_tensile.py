@@ -118,9 +118,7 @@ def test_empty_gauge_column_is_left_out():
 
 def bad(kind: str) -> pd.DataFrame:
     table = constructed_run("triangle")
-    if kind == "time":
-        table.loc[200, "time"] = table.loc[100, "time"]
-    elif kind == "nan":
+    if kind == "nan":
         table.loc[400:409, "force"] = np.nan
     elif kind == "clipping":
         table["gauge_2"] = np.minimum(table["gauge_2"], 0.5 * table["gauge_2"].max())
@@ -134,7 +132,6 @@ def bad(kind: str) -> pd.DataFrame:
 @pytest.mark.parametrize(
     ("kind", "settings", "column", "words"),
     [
-        ("time", {}, "time", "not strictly increasing at sample 200"),
         ("nan", {}, "force", "10 missing values in a row (samples 400 to 409)"),
         ("clipping", {}, "gauge_2", "saturated"),
         ("columns", {}, None, "needs a force column and at least one gauge"),
@@ -149,6 +146,22 @@ def test_bad_records_raise_signal_errors_with_a_hint(kind, settings, column, wor
     assert words in str(error.value)
     assert error.value.column == column
     assert error.value.hint
+
+
+@pytest.mark.parametrize("time", ["repeated", "reset", "none"])
+def test_time_is_not_needed_for_stiffness(time):
+    table = constructed_run("triangle")
+    if time == "repeated":
+        table.loc[1, "time"] = table.loc[0, "time"]
+    elif time == "reset":
+        table.loc[200:, "time"] -= table.loc[200, "time"]
+    else:
+        table = table.drop(columns="time")
+    run = condition_tensile(table, gauge_length=0.5, preload=LOW, n_cycles=3)
+    reference = condition_tensile(constructed_run("triangle"), gauge_length=0.5, preload=LOW,
+                                  n_cycles=3)
+    np.testing.assert_array_equal(run.samples["strain"], reference.samples["strain"])
+    np.testing.assert_array_equal(run.segmentation.turns, reference.segmentation.turns)
 
 
 def test_gauge_length_must_be_positive():

@@ -68,10 +68,27 @@ def test_lenient_mode_keeps_going(write):
 
 
 def test_wrong_dimension_of_a_named_column_is_skipped_with_warning(write):
-    text = "time [s],force [kN],gauge1 [mm],Dehnung [%]\n" + rows((0, 1, 2, 3))
+    text = "time [s],force [kN],gauge1 [mm],Weg [kN]\n" + rows((0, 1, 2, 3))
     table, meta = read_table(write("d.csv", text))
     assert list(table.columns) == ["time", "force", "gauge_1"]
-    assert "unit '%' is not a unit of gauge" in meta.warnings[0]
+    assert "unit 'kN' is not a unit of gauge" in meta.warnings[0]
+
+
+@pytest.mark.parametrize(("unit", "factor"), [("%", 0.01), ("mm/mm", 1.0), ("µm/m", 1e-6)])
+def test_a_gauge_in_a_ratio_unit_is_a_strain_channel(write, unit, factor):
+    text = f"time [s],force [kN],Traverse [mm],Dehnung [{unit}]\n" + rows((0, 1, 2, 3))
+    table, meta = read_table(write("d.csv", text))
+    assert list(table.columns) == ["time", "force", "gauge_1", "strain_1"]
+    assert table["strain_1"].iloc[0] == pytest.approx(3 * factor)
+    kinds = {column.role: (column.kind, column.si_unit) for column in meta.columns}
+    assert kinds["gauge_1"] == ("crosshead", "m") and kinds["strain_1"] == ("extensometer", "1")
+
+
+def test_repeated_time_stamps_are_a_warning_with_the_line(write):
+    table, meta = read_table(write("t.csv", "time [s],force [kN],gauge [mm]\n"
+                                   + rows((0, 1, 2), (0, 2, 3), (1, 3, 4))))
+    assert len(table) == 3 and meta.time_monotonic
+    assert meta.warnings == ["time: 1 repeated time stamp(s), first at line 3"]
 
 
 def test_unit_decides_role_of_an_unknown_name(write):
