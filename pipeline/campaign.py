@@ -2,7 +2,8 @@
 
 ``raw/<campaign>/campaign.toml`` + machine exports
 -> per run (:mod:`pipeline.runs`): ingest -> condition -> fit -> one netCDF file
--> compare (:mod:`pipeline.compare`) -> ``summary.nc``, CSV tables
+-> compare (:mod:`pipeline.compare`) -> ``summary.nc``, CSV tables (``summary.csv``
+   per chain, ``specimens.csv`` per tensile specimen, ``impact_summary.csv``)
 -> report (:mod:`pipeline.report`) -> ``processed/<campaign>/report.html``.
 
 * One bad run does not stop a campaign: its error is recorded, the other runs
@@ -29,7 +30,8 @@ import pandas as pd
 import xarray as xr
 
 from pipeline import __version__
-from pipeline.compare import ChainInput, impact_summary, stiffness_summary
+from pipeline.acceptance import limits_si
+from pipeline.compare import ChainInput, impact_summary, specimen_summary, stiffness_summary
 from pipeline.errors import ChainbenchError, FitError, IngestError
 from pipeline.fit.impact_model import ImpactModelFit, fit_impact_model
 from pipeline.fit.stiffness import SpecimenStiffness
@@ -52,7 +54,7 @@ from pipeline.store.netcdf import (
     write_atomic,
     write_text_atomic,
 )
-from pipeline.store.tensile import specimen_from
+from pipeline.store.tensile import specimen_from, strength_from
 
 if TYPE_CHECKING:
     from distributed import Client
@@ -221,9 +223,19 @@ def summary_table(summary: xr.Dataset, dim: str) -> pd.DataFrame:
     return summary[columns].to_dataframe()
 
 
+def _specimen_row(run: RunDef, scalars: dict[str, float], stiffness: SpecimenStiffness
+                  ) -> dict:
+    """A tensile run's row of the specimen table (:func:`pipeline.compare.specimen_summary`)."""
+    return {"chain": run.chain, "specimen": run.specimen or run.id, "E0": stiffness.E0,
+            "E0_ci_low": stiffness.E0_ci_low, "E0_ci_high": stiffness.E0_ci_high,
+            "single_pull": scalars["single_pull"], **strength_from(scalars)}
+
+
 def _collect(sheet: RunSheet, plans: dict[str, _Plan], stored: dict[str, tuple]):
-    """Each stored run's result: specimen stiffness per chain, operating points, warnings."""
+    """Each stored run's result: specimen stiffness per chain, specimen rows, operating
+    points, warnings."""
     specimens: dict[str, list[SpecimenStiffness]] = {}
+    rows: dict[str, dict] = {}
     points: dict[str, dict[str, float]] = {}
     notes: dict[str, list[str]] = {}
     for run in sheet.runs:
@@ -231,13 +243,15 @@ def _collect(sheet: RunSheet, plans: dict[str, _Plan], stored: dict[str, tuple])
             continue
         scalars, attrs = stored[run.id]
         if run.kind == "tensile":
-            specimens.setdefault(run.chain, []).append(specimen_from(scalars))
+            stiffness = specimen_from(scalars)
+            specimens.setdefault(run.chain, []).append(stiffness)
+            rows[run.id] = _specimen_row(run, scalars, stiffness)
         else:
             points[run.id] = {**operating_point(sheet, run, plans[run.id].E0),
                               **measured_point(scalars)}
         found = [attrs.get(name, "") for name in ("ingest_warnings", "warnings", "messages")]
         notes[run.id] = [text for joined in found for text in joined.split("; ") if text]
-    return specimens, points, {run_id: found for run_id, found in notes.items() if found}
+    return specimens, rows, points, {run_id: found for run_id, found in notes.items() if found}
 
 
 def _runs_dataset(sheet: RunSheet, stored: list[str]) -> xr.Dataset:
@@ -249,13 +263,15 @@ def _runs_dataset(sheet: RunSheet, stored: list[str]) -> xr.Dataset:
     )
 
 
-def _summary(sheet: RunSheet, stored: list[str], specimens, points,
+def _summary(sheet: RunSheet, stored: list[str], specimens, rows, points,
              failures: list[RunFailure]) -> xr.Dataset:
     parts, notes = [_runs_dataset(sheet, stored), _failures_dataset(failures)], []
     chain_keys = sorted({run.chain for run in sheet.runs if run.kind == "tensile"})
     if chain_keys:
         band = tuple(value / 100 for value in sheet.campaign.discrepancy_band_pct)
         parts.append(stiffness_summary(_chain_inputs(sheet, chain_keys), specimens, band))
+        limits = {key: limits_si(sheet.chains[key].model_dump()) for key in chain_keys}
+        parts.append(specimen_summary(rows, limits))
     if points:
         table = pd.DataFrame.from_dict(points, orient="index")
         fit, notes = _impact_fit(table)
@@ -272,7 +288,8 @@ def _summary(sheet: RunSheet, stored: list[str], specimens, points,
 
 def _write_summary(summary: xr.Dataset, output: Path) -> None:
     write_atomic(summary, output / "summary.nc")
-    for dim, name in (("chain", "summary.csv"), ("operating_point", "impact_summary.csv")):
+    for dim, name in (("chain", "summary.csv"), ("specimen", "specimens.csv"),
+                      ("operating_point", "impact_summary.csv")):
         if summary.sizes.get(dim, 0):
             csv = summary_table(summary, dim).to_csv(float_format="%.6g")
             write_text_atomic(csv, output / name)
@@ -346,7 +363,7 @@ def process_campaign(
         failures += failed
         current.update({run_id: read_scalars(path) for run_id, path in done.items()})
         files = {run.id: output / f"{run.id}.nc" for run in sheet.runs if run.id in current}
-        specimens, points, run_warnings = _collect(sheet, plans, current)
+        specimens, rows, points, run_warnings = _collect(sheet, plans, current)
         key = _digest({"runs": {run_id: plans[run_id].key for run_id in sorted(files)},
                        "failures": [failure.message for failure in failures],
                        "sheet": sheet.sha256, "version": __version__})
@@ -359,7 +376,7 @@ def process_campaign(
             result.summary = read_dataset(output / "summary.nc")
             result.report = output / "report.html"
             return result
-        result.summary = _summary(sheet, list(files), specimens, points, failures)
+        result.summary = _summary(sheet, list(files), specimens, rows, points, failures)
         result.summary.attrs[INPUT_KEY] = key
         _write_summary(result.summary, output)
         try:  # the results are written: a failing report loses nothing but itself

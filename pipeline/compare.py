@@ -10,6 +10,10 @@ published values stand beside.
 The check reports what the data say: the verdict is the point estimate's, and
 the interval shows how sure it is.
 
+Per tensile specimen: its E0, the figures a lab reports (maximum force,
+elongations, yield-like force, proof) and the verdicts of the acceptance
+limits its chain declares (:mod:`pipeline.acceptance`).
+
 For engagement runs, per operating point: the measured impact tensions
 against Paper 000's eq. (16) with Ryabov's k = 2 and with the fitted k.
 """
@@ -24,8 +28,16 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
+from pipeline.acceptance import (
+    CHECKS,
+    NOT_MEASURED,
+    VERDICTS,
+    chain_verdict,
+    specimen_verdicts,
+)
 from pipeline.fit.impact_model import ImpactModelFit, model_tensions
 from pipeline.fit.stiffness import SpecimenStiffness, combine_specimens
+from pipeline.store.tensile import STRENGTH_VARIABLES
 from pipeline.theory import link_stiffness as ls
 from pipeline.theory.wheel_impact import RYABOV_MASS_SHARE
 from pipeline.units import to_si
@@ -217,3 +229,62 @@ def impact_summary(points: pd.DataFrame, fit: ImpactModelFit | None) -> xr.Datas
         summary[name] = ((), float(value), {"units": "1", "long_name": name.replace("_", " ")})
     summary["k_fit"].attrs["long_name"] = "share k of link masses in the impact, fitted"
     return summary
+
+
+_SPECIMEN_VARIABLES = {
+    "E0": ("N", "specimen stiffness E0"),
+    "E0_ci_low": ("N", "lower limit of the 95 % interval of E0"),
+    "E0_ci_high": ("N", "upper limit of the 95 % interval of E0"),
+    "single_pull": ("1", "1 for a single pull (E0 from its one loading), 0 for a cyclic test"),
+    **{name: (units, long_name) for name, (units, long_name) in STRENGTH_VARIABLES.items()},
+}
+
+
+def _verdict_attrs(long_name: str) -> dict:
+    return {"long_name": long_name, "flag_values": np.arange(-2, 2, dtype="int8"),
+            "flag_meanings": " ".join(VERDICTS)}
+
+
+def specimen_summary(rows: Mapping[str, Mapping], limits: Mapping[str, Mapping[str, float]]
+                     ) -> xr.Dataset:
+    """The per-specimen table of a tensile campaign, with its acceptance verdicts.
+
+    Parameters
+    ----------
+    rows : mapping
+        Run id -> ``chain``, ``specimen`` and the figures of :data:`_SPECIMEN_VARIABLES` [SI].
+    limits : mapping
+        Chain key -> its declared limits [SI] (:func:`pipeline.acceptance.limits_si`).
+
+    Returns
+    -------
+    xarray.Dataset
+        On dimension ``specimen`` (labels = run ids): ``specimen_chain``,
+        ``specimen_name``, the figures, and ``accept_<check>`` per check of
+        :data:`pipeline.acceptance.CHECKS`; on dimension ``chain``, the chains'
+        ``accept_<check>`` (:func:`pipeline.acceptance.chain_verdict`).
+    """
+    ids = list(rows)
+    data = {
+        "specimen_chain": ("specimen", [str(rows[i]["chain"]) for i in ids],
+                           {"long_name": "chain of the specimen (run-sheet key)"}),
+        "specimen_name": ("specimen", [str(rows[i]["specimen"]) for i in ids],
+                          {"long_name": "specimen as named in the run sheet"}),
+    }
+    for name, (units, long_name) in _SPECIMEN_VARIABLES.items():
+        data[f"specimen_{name}"] = ("specimen", np.array([rows[i][name] for i in ids],
+                                                         dtype=float),
+                                    {"units": units, "long_name": long_name})
+    verdicts = {i: specimen_verdicts(rows[i], limits.get(rows[i]["chain"], {})) for i in ids}
+    chains = sorted(limits)
+    for check in CHECKS:
+        data[f"specimen_accept_{check}"] = (
+            "specimen", np.array([verdicts[i][check] for i in ids], dtype="int8"),
+            _verdict_attrs(f"acceptance check {check.replace('_', ' ')} of the specimen"))
+        data[f"accept_{check}"] = (
+            "chain", np.array([chain_verdict([verdicts[i][check] for i in ids
+                                              if rows[i]["chain"] == chain] or
+                                             ([NOT_MEASURED] if check in limits[chain] else []))
+                               for chain in chains], dtype="int8"),
+            _verdict_attrs(f"acceptance check {check.replace('_', ' ')} of the chain"))
+    return xr.Dataset(data, coords={"specimen": ids, "chain": chains})

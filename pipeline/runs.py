@@ -16,11 +16,12 @@ from pathlib import Path
 import xarray as xr
 
 from pipeline.condition.engagement import SpeedMismatchWarning, detect_events
-from pipeline.condition.tensile import condition_tensile
-from pipeline.errors import RunSheetError
+from pipeline.condition.tensile import TensileRun, condition_tensile
+from pipeline.errors import RunSheetError, SignalError
 from pipeline.fit.chunked import extract_impacts_chunked
 from pipeline.fit.impact import extract_impacts
 from pipeline.fit.stiffness import fit_stiffness, specimen_stiffness
+from pipeline.fit.strength import specimen_strength
 from pipeline.ingest import read_table
 from pipeline.runsheet import RunDef, RunSheet
 from pipeline.store.engagement import engagement_dataset
@@ -70,20 +71,44 @@ def process_tensile_run(
     progress(run.id, "ingest")
     table, metadata = read_run(sheet, run)
     progress(run.id, "condition")
-    chain = sheet.chains[run.chain].si()
-    conditioned = condition_tensile(
-        table, to_si(run.gauge_length_mm, "mm"), preload=chain["preload"], n_cycles=run.cycles)
+    conditioned = condition_tensile_run(sheet, run, table, metadata)
     progress(run.id, "fit")
     window = None
     if run.fit_window is not None:
         window = (to_si(run.fit_window.force_low_kN, "kN"),
                   to_si(run.fit_window.force_high_kN, "kN"))
     fits = fit_stiffness(conditioned, force_window=window)
+    specimen = specimen_stiffness(fits, single_pull=conditioned.single_pull)
+    strength = specimen_strength(conditioned, fits, yield_offset=run.yield_offset_pct / 100,
+                                 proof_force=proof_force(sheet, run))
     attrs = _attrs(sheet, run, f"Tensile test {run.id} of campaign {sheet.campaign.id}",
                    raw_sha256)
     attrs.update(specimen=run.specimen or "", layout=metadata.layout,
                  ingest_warnings="; ".join(metadata.warnings))
-    return tensile_dataset(conditioned, fits, specimen_stiffness(fits), attrs)
+    return tensile_dataset(conditioned, fits, specimen, strength, attrs)
+
+
+def proof_force(sheet: RunSheet, run: RunDef) -> float | None:
+    """Proof force [N] of a run: its own ``proof_force_kN``, else its chain's, else None."""
+    value = run.proof_force_kN or sheet.chains[run.chain].proof_force_kN
+    return to_si(value, "kN") if value is not None else None
+
+
+def condition_tensile_run(sheet: RunSheet, run: RunDef, table, metadata) -> TensileRun:
+    """Condition a tensile run's table as its run-sheet entry says (channels, cycles)."""
+    channels = {column.role: column for column in metadata.columns
+                if column.kind is not None}
+    gauge_length = to_si(run.gauge_length_mm, "mm") if run.gauge_length_mm else None
+    try:
+        return condition_tensile(
+            table, gauge_length, preload=sheet.chains[run.chain].si()["preload"],
+            n_cycles=run.cycles, kinds={name: info.kind for name, info in channels.items()},
+            columns={name: info.name for name, info in channels.items()},
+            average=run.average_gauges)
+    except SignalError as error:
+        if "gauge length" in error.message:
+            error.file, error.column = str(sheet.path), f"{run.id}.gauge_length_mm"
+        raise
 
 
 def chain_stiffness_for(sheet: RunSheet, run: RunDef, output: Path) -> float:

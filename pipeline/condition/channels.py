@@ -152,7 +152,7 @@ def choose_channels(
                else "its stiffness disagrees beyond "
                f"{100 * SAME_SLOPE_TOLERANCE:g} %")
         warnings.append(
-            f"E0 from {' + '.join(label[n] for n in used)}; {label[name]} not used "
+            f"E0 from {' + '.join(label[n] for n in used)}, {label[name]} not used "
             f"({why}): its stiffness is {slopes[name] / reference:.3g} x that of the channel "
             "used")
     if kind == "crosshead":

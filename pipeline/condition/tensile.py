@@ -178,10 +178,11 @@ def _permanent_strains(strain: np.ndarray, segmentation: Segmentation) -> np.nda
     In the direction of the load: positive when the specimen keeps part of its
     deformation, for tension- and compression-positive records alike.
     """
-    rest = [
-        np.nan if valley is None else float(np.nanmedian(strain[valley[0] : valley[1] + 1]))
-        for valley in segmentation.valleys
-    ]
+    rest = [np.nan] * len(segmentation.valleys)
+    for number, valley in enumerate(segmentation.valleys):
+        at_rest = strain[valley[0] : valley[1] + 1] if valley is not None else strain[:0]
+        if np.isfinite(at_rest).any():
+            rest[number] = float(np.nanmedian(at_rest))
     return segmentation.sign * np.diff(np.array(rest))
 
 

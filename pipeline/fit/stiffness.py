@@ -46,7 +46,9 @@ The interval uses Student's t with the Welch-Satterthwaite degrees of freedom
 (``n_eff - 2`` for the statistical part, the window part taken as exact).
 
 A specimen's ``E0`` is the mean of the loading slopes of cycles ``2..n`` (the
-first, seating cycle and the unloading branches are reported beside it). Its
+first, seating cycle and the unloading branches are reported beside it); of a
+single pull (one loading, ``cycles = 1``), the slope of its loading below the
+onset of yield (:func:`yield_onset`), with that fit's interval. Its
 statistical part is ``sqrt(sum se_k^2) / m``, scaled up by the Birge ratio
 ``sqrt(chi^2 / (m - 1))`` when the cycles scatter more than their errors allow
 (the Particle Data Group's scale factor); its window part, common to all
@@ -98,6 +100,17 @@ GUARD_Z = 2.0
 #: Branches fitted by default.
 FITTED_BRANCHES = ("loading", "unloading")
 
+#: Width of the force bands on which the tangent slope of a loading is measured, as a
+#: fraction of its force range (:func:`yield_onset`).
+TANGENT_BAND = 0.1
+
+#: Step between the tangent bands, as a fraction of the force range.
+TANGENT_STEP = 0.025
+
+#: The curve has left its linear region where the tangent slope has fallen by more than
+#: this fraction below its linear-region (largest) value, beyond its noise.
+YIELD_SLOPE_DROP = 0.05
+
 
 @dataclass(frozen=True)
 class LinearFit:
@@ -115,6 +128,7 @@ class LinearFit:
     window_high: float  #: upper force limit of the window [N]
     n_points: int  #: samples in the window
     n_eff: float  #: effective number of independent samples
+    dof: float  #: degrees of freedom of the interval (Welch-Satterthwaite)
     r2: float  #: coefficient of determination
     residual_rms: float  #: root-mean-square residual [N]
 
@@ -285,6 +299,53 @@ def window_sensitivity(force: np.ndarray, strain: np.ndarray, window: tuple[floa
     return float(np.max(np.abs(change))) if change.size else 0.0
 
 
+def yield_onset(force: np.ndarray, strain: np.ndarray) -> float:
+    """Force [N] below which a loading branch is still on its linear region.
+
+    The tangent slope is measured by least squares on force bands of
+    :data:`TANGENT_BAND` of the branch's range, every :data:`TANGENT_STEP`.
+    Over a toe it rises, on the linear region it is at its largest, and past
+    the onset of yield it falls. The onset is the lower edge of the first band
+    above the steepest one whose slope is more than :data:`YIELD_SLOPE_DROP`
+    below the steepest, and by more than three standard errors of the two.
+
+    Parameters
+    ----------
+    force : numpy.ndarray
+        Force on the branch [N], in the direction of the load.
+    strain : numpy.ndarray
+        Strain on the branch [1], same orientation.
+
+    Returns
+    -------
+    float
+        The onset force [N]; ``inf`` when the branch stays linear to its top.
+
+    Examples
+    --------
+    Linear to 60 N, then a slope a third as steep:
+
+    >>> force = np.linspace(0, 100, 1001)
+    >>> strain = np.where(force < 60, force, 60 + 3 * (force - 60)) * 1e-5
+    >>> round(yield_onset(force, strain), 1)
+    52.5
+    """
+    low, span = float(force.min()), float(np.ptp(force))
+    if not span > 0:
+        return np.inf
+    lower = low + np.arange(0.0, 1.0 - TANGENT_BAND + 1e-9, TANGENT_STEP) * span
+    slope, variance, _ = _Windows(force, strain).fit(lower, lower + TANGENT_BAND * span)
+    if not np.any(np.isfinite(slope)):
+        return np.inf
+    steepest = int(np.nanargmax(slope))
+    with np.errstate(invalid="ignore"):
+        fallen = ((slope < (1.0 - YIELD_SLOPE_DROP) * slope[steepest])
+                  & (slope[steepest] - slope > 3.0 * np.sqrt(variance + variance[steepest])))
+    fallen[: steepest + 1] = False
+    found = np.flatnonzero(fallen)
+    return float(lower[found[0]]) if found.size else np.inf
+
+
 def fit_line(
     force: np.ndarray,
     strain: np.ndarray,
@@ -350,6 +411,7 @@ def fit_line(
         window_high=float(window[1]),
         n_points=int(y.size),
         n_eff=float(n_eff),
+        dof=float(dof),
         r2=float(1.0 - np.sum(residuals**2) / total),
         residual_rms=float(np.sqrt(np.mean(residuals**2))),
     )
@@ -375,7 +437,8 @@ def fit_stiffness(
     fraction_window : (float, float), optional
         Fixed window as fractions of each branch's force range (0 at its lowest
         force, 1 at its highest). Without either window, each branch's window
-        is chosen by :func:`scan_windows`.
+        is chosen by :func:`scan_windows`, on a loading branch below the onset
+        of yield (:func:`yield_onset`).
     min_span : float
         Smallest automatic window as a fraction of the branch's range.
     branches : sequence of str
@@ -403,9 +466,10 @@ def fit_stiffness(
     cycle = samples["cycle"].to_numpy()
     branch = samples["branch"].to_numpy()
     rows, keys = [], []
+    usable = np.isfinite(strain)  # a channel taken off, or the samples after a fracture
     for number in range(1, run.segmentation.n_cycles + 1):
         for name in branches:
-            chosen = (cycle == number) & (branch == name)
+            chosen = (cycle == number) & (branch == name) & usable
             if chosen.sum() < MIN_POINTS:
                 continue
             f, e = force[chosen], strain[chosen]
@@ -416,7 +480,8 @@ def fit_stiffness(
                     low, span = f.min(), np.ptp(f)
                     window = (low + fraction_window[0] * span, low + fraction_window[1] * span)
                 else:
-                    window = scan_windows(f, e, min_span=min_span)
+                    linear = f <= yield_onset(f, e) if name == "loading" else slice(None)
+                    window = scan_windows(f[linear], e[linear], min_span=min_span)
                 rows.append(asdict(fit_line(f, e, window, confidence=confidence)))
             except FitError as error:
                 raise FitError(
@@ -459,15 +524,41 @@ def _value(fits: pd.DataFrame, key: tuple[int, str], column: str) -> float:
     return float(fits.loc[key, column]) if key in fits.index else float("nan")
 
 
-def specimen_stiffness(fits: pd.DataFrame, *, confidence: float = 0.95) -> SpecimenStiffness:
+def _single_pull(fits: pd.DataFrame) -> SpecimenStiffness:
+    """A single pull's stiffness: the fit of its one loading, with the fit's interval."""
+    if (1, "loading") not in fits.index:
+        raise FitError(
+            "a single pull gives E0 from its loading, and the run has no loading to fit",
+            hint="check that the log holds the loading, and the gauge channels",
+        )
+    fit = fits.loc[(1, "loading")]
+    if not fit["E0"] > 0:
+        raise FitError(
+            f"the loading gives a stiffness of {fit['E0']:.4g} N, not above 0",
+            hint="the elongation does not grow with the force: check the gauge columns")
+    return SpecimenStiffness(
+        E0=float(fit["E0"]), E0_stderr=float(fit["E0_stderr"]),
+        E0_ci_low=float(fit["E0_ci_low"]), E0_ci_high=float(fit["E0_ci_high"]),
+        dof=float(fit["dof"]), birge_ratio=np.nan, n_cycles=1, E0_first=float(fit["E0"]),
+        E0_first_stderr=float(fit["E0_stderr"]),
+        E0_unloading=_value(fits, (1, "unloading"), "E0"),
+    )
+
+
+def specimen_stiffness(
+    fits: pd.DataFrame, *, single_pull: bool = False, confidence: float = 0.95
+) -> SpecimenStiffness:
     """Experimental E0 of a specimen from the fits of its run.
 
     Parameters
     ----------
     fits : pandas.DataFrame
         Result of :func:`fit_stiffness`.
+    single_pull : bool
+        The run is a single pull (one loading): its E0 is the fit of that
+        loading, below the onset of yield, with the fit's own interval.
     confidence : float
-        Level of the interval.
+        Level of the interval (of cycles ``2..n``; a single pull keeps its fit's).
 
     Returns
     -------
@@ -481,6 +572,8 @@ def specimen_stiffness(fits: pd.DataFrame, *, confidence: float = 0.95) -> Speci
         When the run has no loading branch after the first cycle, or their mean
         slope is not positive (noise only, or a gauge reading against the load).
     """
+    if single_pull:
+        return _single_pull(fits)
     cycles = fits.index.get_level_values("cycle")
     branch = fits.index.get_level_values("branch")
     counted = fits[(cycles >= 2) & (branch == "loading")]
@@ -488,7 +581,8 @@ def specimen_stiffness(fits: pd.DataFrame, *, confidence: float = 0.95) -> Speci
     if m == 0:
         raise FitError(
             "E0 counts the loading branches of cycles 2..n, and the run has none",
-            hint="a stiffness test needs at least two load cycles (Paper 001: three)",
+            hint="a cyclic test needs at least two load cycles (Paper 001: three); for a "
+            "single pull set cycles = 1 in the run sheet",
         )
     slopes = counted["E0"].to_numpy()
     errors = counted["E0_stderr_stat"].to_numpy()
