@@ -11,8 +11,10 @@ from __future__ import annotations
 import math
 import warnings
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
+import pandas as pd
 import xarray as xr
 
 from pipeline.condition.engagement import SpeedMismatchWarning, detect_events
@@ -20,9 +22,9 @@ from pipeline.condition.tensile import TensileRun, condition_tensile
 from pipeline.errors import RunSheetError, SignalError
 from pipeline.fit.chunked import extract_impacts_chunked
 from pipeline.fit.impact import extract_impacts
-from pipeline.fit.stiffness import fit_stiffness, specimen_stiffness
-from pipeline.fit.strength import specimen_strength
-from pipeline.ingest import read_table
+from pipeline.fit.stiffness import SpecimenStiffness, fit_stiffness, specimen_stiffness
+from pipeline.fit.strength import Strength, specimen_strength
+from pipeline.ingest import TableMetadata, read_table
 from pipeline.runsheet import RunDef, RunSheet
 from pipeline.store.engagement import engagement_dataset
 from pipeline.store.netcdf import provenance_attrs, read_dataset
@@ -64,10 +66,29 @@ def _attrs(sheet: RunSheet, run: RunDef, title: str, raw_sha256: str) -> dict[st
     return attrs
 
 
-def process_tensile_run(
-    sheet: RunSheet, run: RunDef, raw_sha256: str, progress: Progress = _quiet
-) -> xr.Dataset:
-    """Ingest, condition and fit one tensile run; its dataset holds the specimen's E0."""
+@dataclass(frozen=True)
+class TensileAnalysis:
+    """Everything one tensile run gives, before it is stored."""
+
+    metadata: TableMetadata
+    conditioned: TensileRun
+    fits: pd.DataFrame
+    specimen: SpecimenStiffness
+    strength: Strength
+
+    @property
+    def warnings(self) -> list[str]:
+        """What the reader and the stages decided or repaired, in that order."""
+        return [*self.metadata.warnings, *self.conditioned.warnings]
+
+
+def analyse_tensile_run(sheet: RunSheet, run: RunDef,
+                        progress: Progress = _quiet) -> TensileAnalysis:
+    """Ingest, condition and fit one tensile run (nothing is written).
+
+    Raises the typed error of the first stage that refuses the run, so that
+    ``chainbench validate`` finds what ``chainbench run`` would refuse.
+    """
     progress(run.id, "ingest")
     table, metadata = read_run(sheet, run)
     progress(run.id, "condition")
@@ -81,11 +102,20 @@ def process_tensile_run(
     specimen = specimen_stiffness(fits, single_pull=conditioned.single_pull)
     strength = specimen_strength(conditioned, fits, yield_offset=run.yield_offset_pct / 100,
                                  proof_force=proof_force(sheet, run))
+    return TensileAnalysis(metadata, conditioned, fits, specimen, strength)
+
+
+def process_tensile_run(
+    sheet: RunSheet, run: RunDef, raw_sha256: str, progress: Progress = _quiet
+) -> xr.Dataset:
+    """Ingest, condition and fit one tensile run; its dataset holds the specimen's E0."""
+    analysis = analyse_tensile_run(sheet, run, progress)
     attrs = _attrs(sheet, run, f"Tensile test {run.id} of campaign {sheet.campaign.id}",
                    raw_sha256)
-    attrs.update(specimen=run.specimen or "", layout=metadata.layout,
-                 ingest_warnings="; ".join(metadata.warnings))
-    return tensile_dataset(conditioned, fits, specimen, strength, attrs)
+    attrs.update(specimen=run.specimen or "", layout=analysis.metadata.layout,
+                 ingest_warnings="; ".join(analysis.metadata.warnings))
+    return tensile_dataset(analysis.conditioned, analysis.fits, analysis.specimen,
+                           analysis.strength, attrs)
 
 
 def proof_force(sheet: RunSheet, run: RunDef) -> float | None:
@@ -94,7 +124,8 @@ def proof_force(sheet: RunSheet, run: RunDef) -> float | None:
     return to_si(value, "kN") if value is not None else None
 
 
-def condition_tensile_run(sheet: RunSheet, run: RunDef, table, metadata) -> TensileRun:
+def condition_tensile_run(sheet: RunSheet, run: RunDef, table: pd.DataFrame,
+                          metadata: TableMetadata) -> TensileRun:
     """Condition a tensile run's table as its run-sheet entry says (channels, cycles)."""
     channels = {column.role: column for column in metadata.columns
                 if column.kind is not None}

@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import numpy as np
 import typer
+from rich.markup import escape
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
@@ -75,7 +76,7 @@ def _chain_table(summary) -> Table:
     table = Table(title=f"chain stiffness E0 (lab band {low:g} to {high:g} %)")
     for column in ("chain", "n", "E0_exp [kN]", "95 % interval", "E0_theory [kN]",
                    "d [%]", "in band"):
-        table.add_column(column, justify="right")
+        table.add_column(escape(column), justify="right")
     for chain in summary["chain"].values:
         row = summary.sel(chain=chain)
         interval = (f"{_fmt(float(row['E0_exp_ci_low']), 1e3, 5)}.."
@@ -93,7 +94,7 @@ def _impact_table(summary) -> Table:
     table = Table(title="impact tensions: measured (median) vs Paper 000 eq. (16), k = 2")
     for column in ("run", "z", "psi [deg]", "omega [1/s]", "N_u1 meas [N]", "N_u1 theory [N]",
                    "N_u2 meas [N]", "N_u2 theory [N]"):
-        table.add_column(column, justify="right")
+        table.add_column(escape(column), justify="right")
     for point in summary["operating_point"].values:
         row = summary.sel(operating_point=point)
         table.add_row(str(point), *(_fmt(float(row[name])) for name in (
@@ -102,10 +103,67 @@ def _impact_table(summary) -> Table:
     return table
 
 
+_VERDICT_TEXT = {1: "pass", 0: "FAIL", -1: "not measured"}
+
+
+#: Short names of the acceptance checks in the specimen table.
+_CHECK_SHORT = {"proof_force": "proof", "breaking_force": "F_break",
+                "elongation_at_proof": "A_proof", "elongation_at_fracture": "A_frac"}
+
+
+def _verdicts(row, prefix: str, short: bool = False) -> str:
+    """The declared checks of a specimen or chain row, as ``name: verdict`` text."""
+    from pipeline.acceptance import CHECKS
+
+    found = [f"{_CHECK_SHORT[check] if short else check.replace('_', ' ')}"
+             f"{' ' if short else ': '}{_VERDICT_TEXT[int(row[prefix + check])]}"
+             for check in CHECKS if int(row[prefix + check]) in _VERDICT_TEXT]
+    return (", " if short else "; ").join(found) or "-"
+
+
+def _specimen_table(summary) -> Table:
+    table = Table(title="tensile specimens (forces in kN, elongations in % of the gauge "
+                  "length)")
+    for column in ("run", "E0 [kN]", "F_max [kN]", "A at F_max [%]", "A at fracture [%]",
+                   "F_yield [kN]", "A at proof [%]", "set [%]", "checks"):
+        table.add_column(escape(column), justify="right")
+    for run_id in summary["specimen"].values:
+        row = summary.sel(specimen=run_id)
+        table.add_row(
+            escape(str(run_id)) + (" (pull)" if int(row["specimen_single_pull"]) else ""),
+            _fmt(float(row["specimen_E0"]), 1e3, 5),
+            *(_fmt(float(row[f"specimen_{name}"]), 1e3, 4)
+              for name in ("max_force",)),
+            *(_fmt(100 * float(row[f"specimen_{name}"]), 1, 3)
+              for name in ("strain_at_max_force", "strain_at_fracture")),
+            _fmt(float(row["specimen_yield_force"]), 1e3, 4),
+            *(_fmt(100 * float(row[f"specimen_{name}"]), 1, 3)
+              for name in ("strain_at_proof", "permanent_strain_after_proof")),
+            escape(_verdicts(row, "specimen_accept_", short=True)),
+        )
+    return table
+
+
+def _shows_specimens(summary) -> bool:
+    """Single pulls or declared acceptance limits make the specimen table worth printing."""
+    if not summary.sizes.get("specimen", 0):
+        return False
+    declared = any(int(value) != -2 for name in summary.data_vars
+                   if name.startswith("accept_") for value in summary[name].values)
+    return declared or bool(summary["specimen_single_pull"].any())
+
+
 def _print_result(result: CampaignResult) -> None:
     summary = result.summary
     if summary.sizes.get("chain", 0):
         console.print(_chain_table(summary))
+    if _shows_specimens(summary):
+        console.print(_specimen_table(summary))
+        for chain in summary["chain"].values:
+            verdicts = _verdicts(summary.sel(chain=chain), "accept_")
+            if verdicts != "-":
+                console.print(f"chain {escape(str(chain))} acceptance: {escape(verdicts)}",
+                              highlight=False)
     if summary.sizes.get("operating_point", 0):
         console.print(_impact_table(summary))
         if np.isfinite(float(summary["k_fit"])):
@@ -114,12 +172,14 @@ def _print_result(result: CampaignResult) -> None:
                 f"(95 % interval {float(summary['k_fit_ci_low']):.4g} .. "
                 f"{float(summary['k_fit_ci_high']):.4g}; Ryabov: k = 2)", highlight=False)
     for note in filter(None, summary.attrs.get("notes", "").split("\n")):
-        console.print(f"[yellow]note[/yellow] {note}", highlight=False)
+        console.print(f"[yellow]note[/yellow] {escape(note)}", highlight=False)
     for run_id, found in result.warnings.items():
         for warning in found:
-            console.print(f"[yellow]warning[/yellow] {run_id}: {warning}", highlight=False)
+            console.print(f"[yellow]warning[/yellow] {escape(run_id)}: {escape(warning)}",
+                          highlight=False)
     for failure in result.failures:
-        console.print(f"[red]failed[/red] {failure.run_id}: {failure.message}", highlight=False)
+        console.print(f"[red]failed[/red] {escape(failure.run_id)}: {escape(failure.message)}",
+                      highlight=False)
     console.print(f"{len(result.redone)} run(s) processed, {len(result.reused)} unchanged; "
                   f"results in {result.output}", highlight=False)
     if result.report is not None:
@@ -219,8 +279,13 @@ def run_command(
 def validate_command(
     campaigns: CampaignArgs = None,
 ) -> None:
-    """Check run sheets and read every run file, without processing."""
-    from pipeline.runs import read_run
+    """Check run sheets and their files as `run` would, writing nothing.
+
+    Every file is read; a tensile run is also conditioned and fitted, so that what
+    `run` would refuse (cycles found against asked, channels, gauge length) is found
+    here, and what it would decide (channels used, fracture) is shown as warnings.
+    """
+    from pipeline.runs import analyse_tensile_run, read_run
 
     all_ok = True
     for folder in campaign_folders(campaigns):
@@ -233,11 +298,18 @@ def validate_command(
         problems = [str(error) for error in sheet.invalid_runs]
         for run in sheet.runs:
             try:
-                read_run(sheet, run)
+                if run.kind == "tensile":
+                    found = analyse_tensile_run(sheet, run).warnings
+                else:
+                    found = read_run(sheet, run)[1].warnings
             except ChainbenchError as error:
                 problems.append(f"run {run.id}: {error}")
+                continue
+            for warning in found:
+                console.print(f"[yellow]warning[/yellow] {run.id}: {escape(warning)}",
+                              highlight=False)
         for problem in problems:
-            console.print(f"[red]error[/red] {problem}", highlight=False)
+            console.print(f"[red]error[/red] {escape(problem)}", highlight=False)
         all_ok &= not problems
         summary = f"{folder}: {len(sheet.runs)} runs, {len(problems)} problems"
         console.print(summary, highlight=False)

@@ -4,14 +4,20 @@ Both are found from the signals alone, in the direction of the load (``sign *
 force`` rises on loading, see :func:`~pipeline.condition.segmentation.load_sign`).
 
 Fracture (:func:`find_fracture`)
-    A sudden drop of the force from near its maximum: after the maximum, the
-    force falls by at least :data:`FRACTURE_DROP` of the maximum within
-    :data:`FRACTURE_SAMPLES` samples, far faster than it ever rose (at least
-    :data:`SUDDEN` times the median step of the record, and well above its
-    noise), from at least :data:`NEAR_MAXIMUM` of the maximum. A controlled
-    unloading (a proof-load test, the end of a cycle) is no faster than a few
-    loading steps and is not a fracture. Nothing after the fracture is
-    analysed.
+    A sudden drop of the force from near its maximum: after the maximum, from
+    at least :data:`NEAR_MAXIMUM` of it, the force falls by at least
+    :data:`FRACTURE_DROP` of the maximum (and well above its noise) within
+    :data:`FRACTURE_SAMPLES` samples, and that fall is
+
+    * at least :data:`SUDDEN` times any fall before it over as many samples
+      (so a cyclic test's controlled unloadings, however fast, are not);
+    * over within :data:`FRACTURE_SPAN` samples (an unloading, however fast
+      at first, goes on falling for longer);
+    * never half recovered (the next cycle of a cyclic test rises again; after
+      a fracture the force stays down, or rises a little where only part of
+      the specimen broke).
+
+    Nothing after the fracture is analysed.
 
 Channel removal (:func:`find_removal`)
     A clip-on extensometer is often taken off before fracture. From then on
@@ -37,8 +43,12 @@ FRACTURE_DROP = 0.03
 #: Samples over which a fracture drop must happen.
 FRACTURE_SAMPLES = 5
 
-#: A fracture drop is at least this many times the median force step of the record.
-SUDDEN = 50.0
+#: A fracture falls at least this many times more within :data:`FRACTURE_SAMPLES` than
+#: the force ever fell before it (a cyclic test's controlled unloadings).
+SUDDEN = 2.0
+
+#: A fracture has stopped falling within this many samples.
+FRACTURE_SPAN = 20
 
 #: A fracture starts at or above this fraction of the maximum force.
 NEAR_MAXIMUM = 0.5
@@ -60,6 +70,26 @@ class Removal:
 
     position: int  #: first unusable sample (position in the record)
     reason: str  #: ``"runs backwards"``, ``"jumps"`` or ``"freezes"``
+
+
+def _falls(force: np.ndarray, window: int) -> np.ndarray:
+    """Fall of the force from each sample to the lowest of the next `window` samples."""
+    size = force.size
+    lowest = np.full(size, np.inf)
+    for lag in range(1, min(window, size - 1) + 1):
+        lowest[: size - lag] = np.minimum(lowest[: size - lag], force[lag:])
+    return np.where(np.isfinite(lowest), force - lowest, 0.0)
+
+
+def _is_fracture(force: np.ndarray, start: int, falls: np.ndarray, settled: float) -> bool:
+    """The fall from `start` is a fracture (see the module docstring); `settled` [N] is the
+    fall over :data:`FRACTURE_SAMPLES` below which the force has stopped falling."""
+    stopped = np.flatnonzero(falls[start + 1 : start + FRACTURE_SPAN + 2] <= settled)
+    rest = force[start + FRACTURE_SAMPLES + 1 :]
+    recovers = rest.size > 0 and rest.max() >= force[start] - falls[start] / 2
+    before = falls[: max(start - FRACTURE_SAMPLES, 0)]  # windows that end before the fall
+    earlier = before.max() if before.size else 0.0
+    return bool(stopped.size) and falls[start] >= SUDDEN * earlier and not recovers
 
 
 def find_fracture(oriented_force: np.ndarray) -> int | None:
@@ -90,24 +120,21 @@ def find_fracture(oriented_force: np.ndarray) -> int | None:
     maximum = force[peak]
     if not maximum > 0:
         return None
-    steps = np.abs(np.diff(force))
-    threshold = max(FRACTURE_DROP * maximum, SUDDEN * float(np.median(steps)),
-                    10.0 * noise_level(force))
-    after = force[peak:]
-    size = after.size
-    lowest_ahead = np.full(size, np.inf)
-    for lag in range(1, min(FRACTURE_SAMPLES, size - 1) + 1):
-        lowest_ahead[: size - lag] = np.minimum(lowest_ahead[: size - lag], after[lag:])
-    drops = np.flatnonzero((after - lowest_ahead >= threshold)
-                           & (after >= NEAR_MAXIMUM * maximum))
-    if not drops.size:
+    threshold = max(FRACTURE_DROP * maximum, 10.0 * noise_level(force))
+    falls = _falls(force, FRACTURE_SAMPLES)
+    candidates = peak + np.flatnonzero((falls[peak:] >= threshold)
+                                       & (force[peak:] >= NEAR_MAXIMUM * maximum))
+    settled = max(3.0 * noise_level(force), 0.005 * maximum)
+    start = next((int(i) for i in candidates if _is_fracture(force, int(i), falls, settled)),
+                 None)
+    if start is None:
         return None
-    start = int(drops[0])
-    bottom = start + int(np.argmin(after[start : start + FRACTURE_SAMPLES + 1]))
+    bottom = start + 1 + int(np.argmin(force[start + 1 : start + FRACTURE_SAMPLES + 1]))
     last = bottom - 1  # the last sample before the sudden fall to the bottom
-    while last > start and after[last] - after[bottom] < threshold:
+    while last > start and force[last] - force[bottom] < threshold:
         last -= 1
-    return peak + last
+    return last
+
 
 
 def _envelope(force: np.ndarray) -> np.ndarray:

@@ -37,7 +37,7 @@ PREFERENCE = ("extensometer", "gauge", "crosshead")
 SAME_SLOPE_TOLERANCE = 0.2
 
 #: Force range of the first loading on which channels are compared, as fractions of its
-#: maximum force.
+#: force range (from its lowest force: of its maximum for a loading from zero).
 COMPARISON_RANGE = (0.1, 0.4)
 
 #: Fewest samples a channel needs in the comparison range.
@@ -70,11 +70,12 @@ def compared_slopes(force: np.ndarray, strains: dict[str, np.ndarray],
     -------
     dict
         Channel -> slope on the samples of the first loading whose force lies in
-        :data:`COMPARISON_RANGE` of its maximum (NaN when a channel has fewer than
+        :data:`COMPARISON_RANGE` of its range (NaN when a channel has fewer than
         :data:`MIN_COMPARED` usable samples there).
     """
-    top = force[loading].max() if loading.any() else np.nan
-    inside = loading & (force >= COMPARISON_RANGE[0] * top) & (force <= COMPARISON_RANGE[1] * top)
+    low, top = (force[loading].min(), force[loading].max()) if loading.any() else (0, np.nan)
+    limits = [low + fraction * (top - low) for fraction in COMPARISON_RANGE]
+    inside = loading & (force >= limits[0]) & (force <= limits[1])
     slopes = {}
     for name, strain in strains.items():
         usable = inside & np.isfinite(strain)
@@ -124,11 +125,13 @@ def choose_channels(
     >>> choice.used, len(choice.warnings)
     (['gauge_2'], 1)
     """
+    if len(slopes) == 1:  # nothing to choose from: the fit says whether it is usable
+        return Choice(list(slopes), slopes)
     usable = [name for name, slope in slopes.items() if np.isfinite(slope) and slope > 0]
     warnings = [
         f"channel {columns[name]!r} not used: it gives no positive stiffness on the first "
         "loading (not connected, removed early, or reading against the load)"
-        for name in slopes if name not in usable and len(slopes) > 1
+        for name in slopes if name not in usable
     ]
     if not usable:
         return Choice([], slopes, warnings)

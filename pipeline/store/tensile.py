@@ -95,7 +95,7 @@ def _channels(run: TensileRun) -> xr.Dataset:
                 "flag_meanings": "not_used used"}),
             "channel_stiffness": ("channel", channels["slope"].to_numpy(dtype=float), {
                 "units": "N", "long_name": "slope of force over the channel's strain on the "
-                "first loading between 10 and 40 % of its maximum force"}),
+                "first loading between 10 and 40 % of its force range"}),
             "channel_removed_at": ("channel", channels["removed_at"].to_numpy().astype("int32"),
                                    {"units": "1", "long_name": "first sample where the channel "
                                     "stopped following the specimen (-1: never)"}),
