@@ -6,7 +6,8 @@ to; only declared limits are checked:
 ``proof_force_kN``
     the specimen carried the proof force (its maximum force reached it);
 ``min_breaking_force_kN``
-    its maximum (breaking) force is at least this;
+    its maximum (breaking) force is at least this (not measured when it did not
+    break below the limit, as in a proof-load test);
 ``max_elongation_at_proof_pct``
     its elongation at the proof force, relative to the gauge length, is at most
     this (not measured when the proof force was not reached);
@@ -86,7 +87,8 @@ def specimen_verdicts(figures: Mapping[str, float], limits: Mapping[str, float])
     Examples
     --------
     >>> verdicts = specimen_verdicts(
-    ...     {"max_force": 4.2e5, "strain_at_proof": np.nan, "strain_at_fracture": 0.15},
+    ...     {"max_force": 4.2e5, "strain_at_proof": np.nan, "strain_at_fracture": 0.15,
+    ...      "fracture_force": 4.1e5},
     ...     {"breaking_force": 4.1e5, "elongation_at_proof": 0.016})
     >>> verdicts["breaking_force"], verdicts["elongation_at_proof"], verdicts["proof_force"]
     (1, -1, -2)
@@ -101,6 +103,10 @@ def specimen_verdicts(figures: Mapping[str, float], limits: Mapping[str, float])
             verdicts[check] = NOT_MEASURED
             continue
         passed = value >= limits[check] if side == "at_least" else value <= limits[check]
+        unbroken = not np.isfinite(float(figures.get("fracture_force", np.nan)))
+        if check == "breaking_force" and not passed and unbroken:
+            verdicts[check] = NOT_MEASURED  # it was not taken to fracture
+            continue
         verdicts[check] = PASS if passed else FAIL
     return verdicts
 

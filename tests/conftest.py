@@ -9,6 +9,17 @@ import pytest
 ROOT = Path(__file__).parents[1]
 DEMOS = ("stiffness-demo", "engagement-demo")
 
+#: Third-party exports (never copied into the repository); tests skip without them.
+REALDATA = ROOT / ".." / "shared" / "realdata"
+
+
+@pytest.fixture
+def realdata() -> Path:
+    """The folder of real exports, or skip."""
+    if not REALDATA.is_dir():
+        pytest.skip("../shared/realdata is absent")
+    return REALDATA.resolve()
+
 
 @pytest.fixture(scope="session")
 def processed_demos(tmp_path_factory) -> Path:

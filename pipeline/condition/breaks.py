@@ -23,13 +23,16 @@ Channel removal (:func:`find_removal`)
     A clip-on extensometer is often taken off before fracture. From then on
     its signal runs backwards while the force keeps rising (it falls off),
     jumps (a single step far larger than its neighbours), or freezes (it stays
-    within its noise while the force rises by :data:`FREEZE_RISE` of the
-    maximum). The first sample where one of these happens ends the channel's
-    usable data.
+    within its noise while the force rises, or past the maximum falls, by
+    :data:`FREEZE_RISE` of the maximum, or while another displacement channel
+    keeps moving: the specimen lengthens all the while).
+    The first sample where one of these happens ends the channel's usable
+    data.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -56,6 +59,13 @@ NEAR_MAXIMUM = 0.5
 #: A channel that stays within its noise while the force rises by this fraction of
 #: the maximum force has frozen (it no longer follows the specimen).
 FREEZE_RISE = 0.05
+
+#: A channel that stands still for this fraction of the record while another channel
+#: moves by :data:`OTHERS_MOVE` of its range has frozen.
+STILL_WINDOW = 0.05
+
+#: See :data:`STILL_WINDOW`.
+OTHERS_MOVE = 0.02
 
 #: A channel step this many times the median of its neighbouring steps is a jump.
 JUMP_FACTOR = 30.0
@@ -165,13 +175,13 @@ def _jump(channel: np.ndarray, tolerance: float) -> int | None:
     return int(hits[0]) + 1 if hits.size else None
 
 
-def _freeze(force: np.ndarray, channel: np.ndarray, tolerance: float) -> int | None:
-    """First sample of a stretch of the rising envelope over which the force rises by
-    :data:`FREEZE_RISE` of its maximum while the channel stays within `tolerance`."""
+def _freeze(force: np.ndarray, channel: np.ndarray, tolerance: float, rise: float,
+            low: float) -> int | None:
+    """First sample of a stretch of the rising envelope of `force` over which it rises by
+    `rise` from above `low` while the channel stays within `tolerance`."""
     rising = _envelope(force)
     if rising.size < 3:
         return None
-    rise = FREEZE_RISE * force.max()
     on_force, on_channel = force[rising], channel[rising]
     ends = np.searchsorted(on_force, on_force + rise, side="left")
     starts = np.flatnonzero(ends < rising.size)
@@ -179,24 +189,55 @@ def _freeze(force: np.ndarray, channel: np.ndarray, tolerance: float) -> int | N
     # only where the channel had been moving clearly with the force before
     level = np.abs(on_channel[ends[starts]] - on_channel[starts]) <= tolerance
     with np.errstate(divide="ignore", invalid="ignore"):
-        moving = (rise * (on_channel[starts] - on_channel[0]) / (on_force[starts] - on_force[0])
-                  > 4.0 * tolerance)
-    for start in starts[level & moving & (on_force[starts] > 0.1 * force.max())]:
+        moving = (rise * np.abs(on_channel[starts] - on_channel[0])
+                  / (on_force[starts] - on_force[0]) > 4.0 * tolerance)
+    for start in starts[level & moving & (on_force[starts] > low)]:
         if np.ptp(on_channel[start : ends[start] + 1]) <= tolerance:
             return int(rising[start])
     return None
 
 
-def find_removal(oriented_force: np.ndarray, oriented_channel: np.ndarray) -> Removal | None:
+def _still_while_others_move(channel: np.ndarray, others: Sequence[np.ndarray],
+                             tolerance: float) -> int | None:
+    """First window of :data:`STILL_WINDOW` of the record over which the channel stays
+    within `tolerance` while another channel moves by :data:`OTHERS_MOVE` of its range."""
+    width = max(10, int(STILL_WINDOW * channel.size))
+    if channel.size < 2 * width:
+        return None
+    starts = np.arange(0, channel.size - width + 1, max(1, width // 4))
+    still = np.array([np.ptp(channel[start : start + width]) <= tolerance for start in starts])
+    for other in others:
+        span = np.nanmax(other) - np.nanmin(other)
+        moving = np.array([np.nanmax(other[start : start + width])
+                           - np.nanmin(other[start : start + width]) >= OTHERS_MOVE * span
+                           for start in starts])
+        hits = np.flatnonzero(still & moving)
+        if hits.size:
+            return int(starts[hits[0]])
+    return None
+
+
+def _frozen_since(channel: np.ndarray, position: int, tolerance: float) -> int:
+    """The first sample of the constant stretch of `channel` that holds `position`."""
+    moved = np.flatnonzero(np.abs(channel[:position] - channel[position]) > tolerance)
+    return int(moved[-1]) + 1 if moved.size else 0
+
+
+def find_removal(oriented_force: np.ndarray, oriented_channel: np.ndarray,
+                 others: Sequence[np.ndarray] = ()) -> Removal | None:
     """Where a displacement channel stops following the specimen, or None.
 
     Parameters
     ----------
     oriented_force : numpy.ndarray
-        Force in the direction of the load [N]; only the samples up to its
-        maximum are examined (while the force keeps rising).
+        Force in the direction of the load [N], up to the fracture: the channel
+        may run backwards or jump while the force rises to its maximum, and
+        freeze while it rises or, past the maximum, falls.
     oriented_channel : numpy.ndarray
         The channel's reading in the direction of the load [any unit], same samples.
+    others : sequence of numpy.ndarray
+        The file's other displacement channels, same samples [any unit]: the
+        channel has frozen where it stands still while one of them moves.
 
     Returns
     -------
@@ -212,22 +253,32 @@ def find_removal(oriented_force: np.ndarray, oriented_channel: np.ndarray) -> Re
     >>> find_removal(force, channel)
     Removal(position=60, reason='runs backwards')
     """
-    rising = int(np.argmax(oriented_force)) + 1  # the force keeps rising up to its maximum
-    force = np.asarray(oriented_force[:rising], dtype=float)
-    channel = np.asarray(oriented_channel[:rising], dtype=float)
+    whole = np.asarray(oriented_force, dtype=float)
+    peak = int(np.argmax(whole))
+    force = whole[: peak + 1]  # the force keeps rising up to its maximum
+    channel = np.asarray(oriented_channel[: peak + 1], dtype=float)
     if force.size < 3:
         return None
     tolerance = max(5.0 * noise_level(channel), 0.005 * np.ptp(channel))
+    rise = FREEZE_RISE * whole[peak]
+    # past the maximum the specimen still lengthens while the force falls (necking)
+    falling = _freeze(whole[peak] - whole[peak:], oriented_channel[peak:], tolerance, rise,
+                      -np.inf)
     found = [
         (position, reason)
         for position, reason in (
             (_backwards(force, channel, tolerance), "runs backwards"),
             (_jump(channel, tolerance), "jumps"),
-            (_freeze(force, channel, tolerance), "freezes"),
+            (_freeze(force, channel, tolerance, rise, 0.1 * whole[peak]), "freezes"),
+            (None if falling is None else peak + falling, "freezes"),
+            (_still_while_others_move(np.asarray(oriented_channel, dtype=float), others,
+                                      tolerance), "freezes"),
         )
         if position is not None
     ]
     if not found:
         return None
     position, reason = min(found, key=lambda item: item[0])
+    if reason == "freezes":
+        position = _frozen_since(np.asarray(oriented_channel, dtype=float), position, tolerance)
     return Removal(position=int(position), reason=reason)

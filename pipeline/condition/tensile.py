@@ -209,12 +209,16 @@ def _channel_strains(
     return strains
 
 
-def _cut_removed(force: np.ndarray, strains: dict[str, np.ndarray], loading: slice,
-                 sign: int, columns: Mapping[str, str], warnings: list[str]) -> dict:
-    """Cut each channel where it stopped following the specimen on the first loading."""
+def _cut_removed(force: np.ndarray, strains: dict[str, np.ndarray],
+                 readings: dict[str, np.ndarray], loading: slice, sign: int,
+                 columns: Mapping[str, str], warnings: list[str]) -> dict:
+    """Cut each channel where it stopped following the specimen within `loading` (the first
+    loading of a cyclic test, a single pull up to its fracture), judged on its own and
+    against the other channels' `readings`."""
     removals = {}
     for name, strain in strains.items():
-        removal = find_removal(sign * force[loading], sign * strain[loading])
+        others = [sign * other[loading] for key, other in readings.items() if key != name]
+        removal = find_removal(sign * force[loading], sign * strain[loading], others)
         if removal is None:
             continue
         removals[name] = removal
@@ -222,7 +226,7 @@ def _cut_removed(force: np.ndarray, strains: dict[str, np.ndarray], loading: sli
         strain[position:] = np.nan
         warnings.append(
             f"channel {columns[name]!r} {removal.reason} at {abs(force[position]) / 1e3:.4g} kN "
-            "while the force keeps rising (taken off or slipped): its data from there on "
+            "while the specimen lengthens (taken off or slipped): its data from there on "
             "are not used")
     return removals
 
@@ -330,7 +334,9 @@ def condition_tensile(
                         samples.index)
     strains = _channel_strains(samples, channels, gauge_length, columns, warnings)
     first = slice(0, int(segmentation.turns[0, 1]) + 1)  # up to the first peak
-    removals = _cut_removed(force, strains, first, sign, columns, warnings)
+    readings = {name: samples[name].to_numpy() for name in channels}
+    removals = _cut_removed(force, strains, readings, slice(0, end) if single_pull else first,
+                            sign, columns, warnings)
     for strain in strains.values():
         strain[end:] = np.nan
     loading = np.zeros(force.size, dtype=bool)

@@ -159,8 +159,9 @@ def specimen_strength(
     proof = np.nan if proof_force is None else float(proof_force)
     at_proof = permanent = np.nan
     if proof_force is not None:
-        first = run.segmentation.turns[0]
-        reached = _crossing(force[int(first[0]) : int(first[1]) + 1], proof_force)
+        first = run.segmentation.turns[0]  # the loading and its hold: a proof force is held
+        reached = _crossing(force[int(first[0]) : int(first[2]) + 1],
+                            proof_force - run.segmentation.tolerance)
         if reached is not None:
             position = int(first[0]) + reached
             at_proof = strain(position, "at proof force")

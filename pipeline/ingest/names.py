@@ -37,7 +37,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "cycle_count": ("zyklus", "zyklen", "zykluszahl", "lastwechsel"),
     },
     "pl": {
-        "time": ("czas",),
+        "time": ("czas", "godzina"),
         "force": ("siła", "obciążenie", "naciąg"),
         "gauge": ("wydłużenie", "przemieszczenie", "czujnik", "ugięcie", "odkształcenie",
                   "ekstensometr", "trawersa", "tłok"),

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import pytest
 from typer.testing import CliRunner
@@ -12,20 +11,10 @@ from pipeline.cli import app
 
 runner = CliRunner()
 
-#: Third-party exports (never copied into the repository); tests skip without them.
-REALDATA = Path(__file__).parents[2] / ".." / "shared" / "realdata"
-
 LOAD = [min(i % 10, 10 - i % 10) for i in range(60)]  # 6 load/unload cycles, 0 -> 5 -> 0 kN
 PLAIN = "time [s],force [kN],gauge1 [mm],gauge2 [mm]\n" + "".join(
     f"{i / 10},{load},{load / 100},{load / 90}\n" for i, load in enumerate(LOAD)
 )
-
-
-@pytest.fixture
-def realdata() -> Path:
-    if not REALDATA.is_dir():
-        pytest.skip("../shared/realdata is absent")
-    return REALDATA.resolve()
 
 
 def inspect_json(*arguments: str) -> dict:

@@ -6,9 +6,6 @@ from pathlib import Path
 
 import pytest
 
-#: Third-party exports (never copied into the repository); tests skip without them.
-REALDATA = Path(__file__).parents[2] / ".." / "shared" / "realdata"
-
 
 @pytest.fixture
 def write(tmp_path):
@@ -21,10 +18,3 @@ def write(tmp_path):
 
     return _write
 
-
-@pytest.fixture
-def realdata() -> Path:
-    """The folder of real exports, or skip."""
-    if not REALDATA.is_dir():
-        pytest.skip("../shared/realdata is absent")
-    return REALDATA.resolve()

@@ -1,0 +1,136 @@
+"""Single pulls through a whole campaign, in the layouts real machines write.
+
+Each run's E0 is compared with an independent least-squares slope of force over the
+extensometer's strain between 10 % and 40 % of the maximum force, computed from the
+file parsed here with pandas (or from the simulated log), never through chainbench's
+readers: within 5 %, and never from an average of different kinds of channel.
+"""
+
+from __future__ import annotations
+
+import shutil
+import textwrap
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from pipeline.campaign import process_campaign
+from pipeline.simulate.pull import PullTruth, simulate_pull
+from pipeline.store.netcdf import read_dataset
+
+GERMAN = "AschenPhoenix__Simulation_mit_Python__Specimen_RawData_1.csv"
+
+
+def independent_slope(force: np.ndarray, strain: np.ndarray) -> float:
+    """Least-squares slope of force over strain between 10 % and 40 % of the maximum force,
+    on the loading (the samples up to the maximum)."""
+    loading = np.arange(force.size) <= np.argmax(force)
+    inside = loading & (force >= 0.1 * force.max()) & (force <= 0.4 * force.max())
+    return float(np.polyfit(strain[inside], force[inside], 1)[0])
+
+
+def campaign(folder, file: str, extra: str = "", chain: str = 'catalog = "18x64"') -> None:
+    (folder / "campaign.toml").write_text(textwrap.dedent(f"""\
+        [campaign]
+        id = "{folder.name}"
+        [chains.c]
+        {chain}
+        [[runs]]
+        id = "P1"
+        kind = "tensile"
+        file = "{file}"
+        chain = "c"
+        cycles = 1
+        """) + extra, encoding="utf-8")
+
+
+def processed(folder, tmp_path):
+    result = process_campaign(folder, tmp_path / "processed" / folder.name)
+    assert result.ok, [failure.message for failure in result.failures]
+    return read_dataset(result.output / "P1.nc"), result.warnings["P1"]
+
+
+@pytest.mark.realdata
+def test_german_bluehill_single_pull(realdata, tmp_path):
+    folder = tmp_path / "german"
+    folder.mkdir()
+    shutil.copy(realdata / GERMAN, folder / GERMAN)
+    campaign(folder, GERMAN, chain="")  # a specimen of 3.45 mm^2, no catalogue chain
+    run, warnings = processed(folder, tmp_path)
+    table = pd.read_csv(realdata / GERMAN, sep=";", decimal=",", skiprows=[0, 1, 2, 3, 5])
+    force, strain = table["Last"].to_numpy() * 1e3, table["Dehnung 1"].to_numpy() / 100
+    expected = independent_slope(force, strain)
+    assert float(run["specimen_E0"]) == pytest.approx(expected, rel=0.05)
+    assert run["channel_column"].values[run["channel_used"].values == 1].tolist() == [
+        "Dehnung 1"]
+    assert any("'Traversenweg'" in warning and "not used" in warning for warning in warnings)
+    assert any("'Dehnung 1' runs backwards at 5.262 kN" in warning for warning in warnings)
+    assert float(run["max_force"]) == pytest.approx(force.max())
+    # the first sudden drop: 8.230 kN then 7.849 kN at 186.95 s (row 1870 of the data)
+    assert int(run["fracture_sample"]) == 1869 and float(run["fracture_force"]) == 8230.0
+
+
+def polish_bluehill(log: pd.DataFrame, gauge_length: float) -> bytes:
+    """A Polish Bluehill export as the machine writes it: cp1250, ';', every number quoted."""
+    lines = ['Test : Tempo 1;"15,00000";mm/min',
+             'Właściwości próbki : Etykietka próbki;"18x64-1"', "",
+             "Godzina;Przemieszczenie;Obciążenie;Odkształcenie 1", "(s);(mm);(kN);(mm/mm)"]
+    for row in log.itertuples():
+        values = (f"{row.time:.5f}", f"{row.crosshead * 1e3:.5f}", f"{row.force / 1e3:.5f}",
+                  f"{row.extensometer / gauge_length:.8f}")
+        lines.append(";".join(f'"{value.replace(".", ",")}"' for value in values))
+    return ("\r\n".join(lines) + "\r\n").encode("cp1250")
+
+
+def catman(log: pd.DataFrame, gauge_length: float) -> bytes:
+    """An HBM catman ASCII export: tab, decimal comma, units in the names row."""
+    lines = ["Datei: zugversuch.bin", "",
+             "Zeit  1 - Standardmessrate [s]\tKraft [kN]\tMaytec [mm]\t"
+             "Standardwegaufnehmer [mm]"]
+    for row in log.itertuples():
+        values = (f"{row.time:.4f}", f"{row.force / 1e3:.4f}", f"{row.extensometer * 1e3:.5f}",
+                  f"{row.crosshead * 1e3:.5f}")
+        lines.append("\t".join(value.replace(".", ",") for value in values))
+    return ("\r\n".join(lines) + "\r\n").encode("latin-1")
+
+
+@pytest.mark.parametrize(("writer", "extra"), [
+    (polish_bluehill, ""),
+    (catman, "gauge_length_mm = 320\n"),
+])
+def test_machine_layouts_with_extensometer_and_crosshead(tmp_path, writer, extra):
+    truth = PullTruth.for_chain("18x64", extensometer_removed_at=0.9, removal_mode="reverse",
+                                repeated_first_time=True)
+    log = simulate_pull(truth, seed=5)
+    folder = tmp_path / writer.__name__
+    folder.mkdir()
+    (folder / "log.txt").write_bytes(writer(log, truth.gauge_length))
+    campaign(folder, "log.txt", extra)
+    run, warnings = processed(folder, tmp_path)
+    expected = independent_slope(log["force"].to_numpy(),
+                                 log["extensometer"].to_numpy() / truth.gauge_length)
+    assert float(run["specimen_E0"]) == pytest.approx(expected, rel=0.05)
+    assert float(run["specimen_E0"]) == pytest.approx(truth.E0, rel=0.01)
+    other = "'Przemieszczenie'" if writer is polish_bluehill else "'Standardwegaufnehmer'"
+    assert any(other in warning and "not used" in warning for warning in warnings)
+    assert any("repeated time stamp" in warning for warning in warnings)
+    assert int(run["channel_removed_at"].sel(channel=run["channel"].values[
+        run["channel_kind"].values == "extensometer"][0])) >= 0
+
+
+def test_two_gauges_of_one_kind_that_disagree_are_not_averaged(tmp_path):
+    """Same kind, slopes 30 % apart: the stiffer is used, with a warning."""
+    truth = PullTruth.for_chain("18x64", to_fracture=False, proof_force=300e3)
+    log = simulate_pull(truth, seed=2)
+    table = pd.DataFrame({"force [kN]": log["force"] / 1e3,
+                          "gauge1 [mm]": log["extensometer"] * 1e3,
+                          "gauge2 [mm]": log["extensometer"] * 1e3 / 0.7})
+    folder = tmp_path / "two"
+    folder.mkdir()
+    table.to_csv(folder / "log.csv", index=False)
+    campaign(folder, "log.csv", f"gauge_length_mm = {truth.gauge_length * 1e3}\n")
+    run, warnings = processed(folder, tmp_path)
+    assert run["channel_used"].values.tolist() == [1, 0]
+    assert float(run["specimen_E0"]) == pytest.approx(truth.E0, rel=0.01)
+    assert any("disagrees beyond 20 %" in warning for warning in warnings)
