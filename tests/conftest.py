@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).parents[1]
-DEMOS = ("stiffness-demo", "engagement-demo")
+DEMOS = ("stiffness-demo", "engagement-demo", "pull-demo")
 
 #: Third-party exports (never copied into the repository); tests skip without them.
 REALDATA = ROOT / ".." / "shared" / "realdata"

@@ -1,7 +1,8 @@
 """``chainbench simulate ...``: synthetic campaigns from the virtual test benches.
 
-``chainbench simulate tensile`` and ``chainbench simulate engagement`` write the
-logs of a campaign (one file per run, in any layout and units the readers
+``chainbench simulate tensile`` (cyclic runs, or with ``--single-pull`` single
+pulls to fracture and proof-load tests) and ``chainbench simulate engagement``
+write the logs of a campaign (one file per run, in any layout and units the readers
 accept), its run sheet ``campaign.toml`` and ``truth.json``, the true values each
 log was made from (:mod:`pipeline.simulate.campaign`). ``chainbench simulate
 demo`` (re)writes the demo campaigns of ``raw/`` (:mod:`pipeline.simulate.demo`).
@@ -23,9 +24,11 @@ from pipeline.cli._output import emit
 from pipeline.simulate.campaign import (
     CampaignSpec,
     EngagementRunSpec,
+    PullRunSpec,
     TensileRunSpec,
     engagement_settings,
     write_engagement_campaign,
+    write_pull_campaign,
     write_tensile_campaign,
 )
 from pipeline.simulate.demo import DEMOS
@@ -34,6 +37,7 @@ from pipeline.simulate.export import (
     LENGTH_UNITS,
     SUFFIXES,
 )
+from pipeline.simulate.pull import REMOVAL_MODES, PullTruth
 from pipeline.simulate.tensile import TensileTruth
 from pipeline.units import from_si, to_si
 
@@ -57,6 +61,10 @@ class Language(StrEnum):
 
     pl = "pl"
     de = "de"
+
+
+#: How a removed extensometer misbehaves (:data:`pipeline.simulate.pull.REMOVAL_MODES`).
+RemovalMode = StrEnum("RemovalMode", {mode: mode for mode in REMOVAL_MODES})
 
 
 def _choice(value: str, allowed: tuple[str, ...], option: str) -> str:
@@ -101,9 +109,14 @@ def tensile(
     ] = 0.01,
     cycles: Annotated[int, typer.Option("--cycles", min=1, help="Load cycles per run.")] = 3,
     gauge_length_mm: Annotated[
-        float, typer.Option("--gauge-length-mm", help="Gauge length in mm (Paper 001: ~900).")
-    ] = 900.0,
-    sample_rate: Annotated[float, typer.Option("--sample-rate", help="Logging rate in Hz.")] = 10.0,
+        float | None,
+        typer.Option("--gauge-length-mm",
+                     help="Gauge length in mm. Default: 900 (Paper 001); single pull: 5 pitches."),
+    ] = None,
+    sample_rate: Annotated[
+        float | None,
+        typer.Option("--sample-rate", help="Logging rate in Hz. Default: 10; single pull: 20."),
+    ] = None,
     loading_rate_kn_per_s: Annotated[
         float, typer.Option("--loading-rate-kn-per-s", help="Loading and unloading rate in kN/s.")
     ] = 1.0,
@@ -127,46 +140,127 @@ def tensile(
     campaign: Annotated[
         str, typer.Option("--campaign", help="Campaign id written to the run sheet.")
     ] = "simulated-tensile",
+    single_pull: Annotated[
+        bool,
+        typer.Option("--single-pull",
+                     help="Single pulls to fracture (or proof-load tests) instead of cycles: "
+                          "extensometer and crosshead channels."),
+    ] = False,
+    max_force_kn: Annotated[
+        float | None,
+        typer.Option("--max-force-kn",
+                     help="Single pull: true maximum force in kN. Default: 1.1 x the "
+                          "minimum breaking force."),
+    ] = None,
+    proof_force_kn: Annotated[
+        float | None,
+        typer.Option("--proof-force-kn",
+                     help="Single pull: load to this force, hold, unload, then pull."),
+    ] = None,
+    proof_only: Annotated[
+        bool,
+        typer.Option("--proof-only",
+                     help="Single pull: end after the proof unloading (a proof-load test)."),
+    ] = False,
+    extensometer_removed_at: Annotated[
+        float | None,
+        typer.Option("--extensometer-removed-at",
+                     help="Single pull: take the extensometer off at this fraction of the "
+                          "maximum force."),
+    ] = None,
+    removal_mode: Annotated[
+        RemovalMode,
+        typer.Option("--removal-mode", help="How the removed extensometer misbehaves."),
+    ] = RemovalMode.jump,
+    crosshead: Annotated[
+        bool, typer.Option("--crosshead/--no-crosshead", help="Single pull: write the crosshead.")
+    ] = True,
+    strain_channel: Annotated[
+        bool,
+        typer.Option("--strain-channel", help="Single pull: write the extensometer as a strain "
+                                              "in % (the run sheet then has no gauge length)."),
+    ] = False,
+    repeated_first_time: Annotated[
+        bool,
+        typer.Option("--repeated-first-time",
+                     help="Single pull: two first rows at time 0, as Bluehill writes."),
+    ] = False,
+    quote: Annotated[
+        bool, typer.Option("--quote", help="Single pull, machine layout: quote every field.")
+    ] = False,
     seed: Annotated[int, typer.Option("--seed", help="Seed of all the randomness.")] = 1,
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
 ) -> None:
-    """Write the logs of a simulated tensile campaign with known truth."""
+    """Write the logs of a simulated tensile campaign with known truth.
+
+    Cyclic runs by default; with --single-pull, single pulls to fracture or
+    proof-load tests (--language de also names the machine layout's columns in
+    German).
+    """
     _choice(force_unit, FORCE_UNITS, "--force-unit")
     _choice(length_unit, LENGTH_UNITS, "--length-unit")
     spec = _campaign(campaign, f"Virtual tensile bench, chain {chain}", "tensile", seed)
     rng = np.random.default_rng(seed)
+    E0 = None if e0_kn is None else to_si(e0_kn, "kN")
+    lengths = {} if gauge_length_mm is None else {"gauge_length": to_si(gauge_length_mm, "mm")}
+    rates = {} if sample_rate is None else {"sample_rate": sample_rate}
     try:
-        base = TensileTruth.for_chain(
-            chain,
-            E0=None if e0_kn is None else to_si(e0_kn, "kN"),
-            n_cycles=cycles,
-            gauge_length=to_si(gauge_length_mm, "mm"),
-            sample_rate=sample_rate,
-            loading_rate=to_si(loading_rate_kn_per_s, "kN/s"),
-            dwell=dwell,
-        )
+        if single_pull:
+            forces = {name: to_si(value, "kN") for name, value in
+                      (("max_force", max_force_kn), ("proof_force", proof_force_kn))
+                      if value is not None}
+            base = PullTruth.for_chain(
+                chain, E0=E0, **lengths, **rates, **forces, to_fracture=not proof_only,
+                extensometer_removed_at=extensometer_removed_at,
+                removal_mode=str(removal_mode), strain_channel=strain_channel,
+                repeated_first_time=repeated_first_time)
+        else:
+            base = TensileTruth.for_chain(
+                chain, E0=E0, n_cycles=cycles, gauge_length=lengths.get("gauge_length", 0.9),
+                sample_rate=rates.get("sample_rate", 10.0),
+                loading_rate=to_si(loading_rate_kn_per_s, "kN/s"), dwell=dwell)
     except (KeyError, ValueError) as error:
         raise typer.BadParameter(str(error).strip("'\"")) from None
     runs = []
-    prefix = "T" + chain.split("x")[0]
+    prefix = ("P" if single_pull else "T") + chain.split("x")[0]
     for number in range(1, specimens + 1):
         truth = base.with_(E0=base.E0 * (1.0 + specimen_scatter * rng.standard_normal()))
         run_id = f"{prefix}-{number}"
-        runs.append(TensileRunSpec(
+        common = dict(
             id=run_id, chain=chain, specimen=f"{chain}-{number}", truth=truth,
             seed=int(rng.integers(2**31)), file=run_id + SUFFIXES[layout], layout=str(layout),
-            force_unit=force_unit, length_unit=length_unit, language=str(language),
-            encoding=encoding, preamble=(("Text Inputs", f'Specimen label,"{run_id}"'),
-                                         ("General", f'Machine,"{spec.machine}"')),
-        ))
-    sheet = write_tensile_campaign(out, runs, spec)
+            force_unit=force_unit, length_unit=length_unit, encoding=encoding,
+            preamble=(("Text Inputs", f'Specimen label,"{run_id}"'),
+                      ("General", f'Machine,"{spec.machine}"')))
+        if single_pull:
+            runs.append(PullRunSpec(**common, language=_pull_language(layout, language),
+                                    quote=quote, crosshead=crosshead))
+        else:
+            runs.append(TensileRunSpec(**common, language=str(language)))
+    if single_pull:
+        sheet = write_pull_campaign(out, runs, spec)
+        rows = [{"id": run.id, "file": run.file, "E0_kN": from_si(run.truth.E0, "kN"),
+                 "max_force_kN": from_si(run.truth.max_force, "kN")} for run in runs]
+    else:
+        sheet = write_tensile_campaign(out, runs, spec)
+        rows = [{"id": run.id, "file": run.file, "E0_kN": from_si(run.truth.E0, "kN")}
+                for run in runs]
     emit(
-        [{"id": run.id, "file": run.file, "E0_kN": from_si(run.truth.E0, "kN")} for run in runs],
+        rows,
         title=f"Simulated tensile campaign in {out}",
         as_json=as_json,
         extra={"out": str(out), "run_sheet": str(sheet), "truth": str(out / "truth.json")},
         digits=6,
     )
+
+
+def _pull_language(layout: Layout, language: Language) -> str | None:
+    """Column names of a single-pull log: the European language, or a German machine export."""
+    if layout == Layout.european:
+        return str(language)
+    if layout == Layout.machine and language == Language.de:
+        return "de"
+    return None
 
 
 class EngagementFormat(StrEnum):
@@ -290,7 +384,7 @@ def demo(
     ] = Path("raw"),
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
 ) -> None:
-    """(Re)write the demo campaigns: stiffness-demo (Paper 001) and engagement-demo (Paper 000)."""
+    """(Re)write the demo campaigns: stiffness-demo, engagement-demo and pull-demo."""
     rows = []
     for name, write in DEMOS.items():
         folder = out / name

@@ -7,7 +7,8 @@ data come from). Beside them ``truth.json`` keeps the true values each log was
 made from; the run sheet never refers to it, so the folder processes like any
 other.
 
-:func:`write_tensile_campaign` writes tensile runs (:class:`TensileRunSpec`),
+:func:`write_tensile_campaign` writes cyclic tensile runs (:class:`TensileRunSpec`),
+:func:`write_pull_campaign` single pulls and proof-load tests (:class:`PullRunSpec`),
 :func:`write_engagement_campaign` engagement runs (:class:`EngagementRunSpec`);
 ``chainbench simulate`` and :mod:`pipeline.simulate.demo` both go through them.
 Run sheets are written as TOML text by a small writer: strings are quoted with
@@ -19,7 +20,7 @@ from __future__ import annotations
 import json
 import math
 import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
@@ -38,8 +39,11 @@ from pipeline.simulate.export import (
     FORCE_UNITS,
     LAYOUTS,
     LENGTH_UNITS,
+    PULL_LANGUAGES,
+    write_pull_table,
     write_table,
 )
+from pipeline.simulate.pull import PullTruth, simulate_pull
 from pipeline.simulate.tensile import TensileTruth, simulate_tensile
 from pipeline.store.netcdf import write_text_atomic
 from pipeline.units import from_si
@@ -98,7 +102,7 @@ class TensileRunSpec:
         Seed of the log's noise.
     file : str
         File name in the campaign folder.
-    layout, force_unit, length_unit, language, encoding, preamble
+    layout, force_unit, length_unit, encoding, preamble, language
         How the log is written (:func:`pipeline.simulate.export.write_table`).
     """
 
@@ -111,19 +115,48 @@ class TensileRunSpec:
     layout: str = "plain"
     force_unit: str = "kN"
     length_unit: str = "mm"
-    language: str = "pl"
     encoding: str | None = None
     preamble: tuple[tuple[str, str], ...] = ()
+    language: str = "pl"
 
     def __post_init__(self) -> None:
         _check_run(self.id, self.file)
         for name, value, allowed in (("layout", self.layout, LAYOUTS),
                                      ("force_unit", self.force_unit, FORCE_UNITS),
                                      ("length_unit", self.length_unit, LENGTH_UNITS),
-                                     ("language", self.language, tuple(EUROPEAN_ENCODINGS))):
+                                     ("language", self.language, self._languages())):
             if value not in allowed:
                 raise ValueError(f"run {self.id}: {name} must be one of "
-                                 f"{', '.join(allowed)}, got {value!r}")
+                                 f"{', '.join(map(str, allowed))}, got {value!r}")
+
+    def _languages(self) -> tuple[str | None, ...]:
+        return tuple(EUROPEAN_ENCODINGS)
+
+
+@dataclass(frozen=True)
+class PullRunSpec(TensileRunSpec):
+    """One single pull (or proof-load test) to simulate and write.
+
+    Parameters
+    ----------
+    id, chain, specimen, seed, file
+        As in :class:`TensileRunSpec`.
+    truth : PullTruth
+        The test's settings and true properties.
+    layout, force_unit, length_unit, encoding, preamble, language, quote
+        How the log is written (:func:`pipeline.simulate.export.write_pull_table`;
+        `language` None: the layout's default).
+    crosshead : bool
+        Write the crosshead channel.
+    """
+
+    truth: PullTruth
+    language: str | None = None
+    quote: bool = False
+    crosshead: bool = True
+
+    def _languages(self) -> tuple[str | None, ...]:
+        return (None, *PULL_LANGUAGES[self.layout]) if self.layout in LAYOUTS else ()
 
 
 @dataclass(frozen=True)
@@ -247,6 +280,7 @@ def run_sheet_text(
     chains: Iterable[str],
     runs: Sequence[dict[str, str | bool | int | float]],
     wheels: dict[str, tuple[int, float]] | None = None,
+    chain_settings: Mapping[str, Mapping[str, float]] | None = None,
 ) -> str:
     """Text of the ``campaign.toml`` of a synthetic campaign.
 
@@ -260,6 +294,9 @@ def run_sheet_text(
         The ``[[runs]]`` entries, in order.
     wheels : dict, optional
         Wheel key -> (teeth, apex angle [deg]), written as ``[wheels.<key>]``.
+    chain_settings : mapping, optional
+        Catalogue chain -> more keys of its table (acceptance limits such as
+        ``min_breaking_force_kN``).
 
     Returns
     -------
@@ -277,7 +314,8 @@ def run_sheet_text(
     lines = ["# Synthetic campaign written by chainbench's virtual test bench.",
              "[campaign]", *(f"{key} = {_toml_value(value)}" for key, value in info.items())]
     for chain in dict.fromkeys(chains):
-        lines += _toml_table(f"[chains.{_toml_key(chain_key(chain))}]", {"catalog": chain})
+        settings = {"catalog": chain, **(chain_settings or {}).get(chain, {})}
+        lines += _toml_table(f"[chains.{_toml_key(chain_key(chain))}]", settings)
     for key, (teeth, apex_deg) in (wheels or {}).items():
         lines += _toml_table(f"[wheels.{_toml_key(key)}]",
                              {"teeth": teeth, "apex_angle_deg": float(apex_deg)})
@@ -286,7 +324,7 @@ def run_sheet_text(
     return "\n".join(lines) + "\n"
 
 
-def _check_unique(runs: Sequence[TensileRunSpec] | Sequence[EngagementRunSpec]) -> None:
+def _check_unique(runs: Sequence[TensileRunSpec | EngagementRunSpec]) -> None:
     if not runs:
         raise ValueError("a campaign needs at least one run")
     for attribute in ("id", "file"):
@@ -305,9 +343,29 @@ def _plain(value):
     return value
 
 
-def _write_truth(out: Path, campaign: CampaignSpec, runs: dict[str, dict]) -> None:
-    document = {"campaign": campaign.id, "runs": runs}
+def _folder(out: str | Path, runs: Sequence[TensileRunSpec | EngagementRunSpec]) -> Path:
+    """The campaign folder, created, after checking the run list."""
+    _check_unique(runs)
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    return out
+
+
+def _write_sheet_and_truth(out: Path, campaign: CampaignSpec, sheet_text: str,
+                           truths: dict[str, dict]) -> Path:
+    """Write the run sheet and ``truth.json``; the run sheet's path."""
+    sheet = write_text_atomic(sheet_text, out / RUN_SHEET_NAME)
+    document = {"campaign": campaign.id, "runs": truths}
     write_text_atomic(json.dumps(_plain(document), indent=2) + "\n", out / TRUTH_NAME)
+    return sheet
+
+
+def _log_truth(run: TensileRunSpec) -> dict:
+    """What ``truth.json`` says of a tensile log: its file, how it is written, its truth."""
+    return {"file": run.file, "chain": run.chain, "specimen": run.specimen,
+            "layout": run.layout, "force_unit": run.force_unit,
+            "length_unit": run.length_unit, "language": run.language,
+            "encoding": run.encoding, "seed": run.seed, "truth": asdict(run.truth)}
 
 
 def write_tensile_campaign(
@@ -336,9 +394,7 @@ def write_tensile_campaign(
     ValueError
         For an empty or duplicated run list.
     """
-    _check_unique(runs)
-    out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = _folder(out, runs)
     entries, truths = [], {}
     for run in runs:
         write_table(simulate_tensile(run.truth, run.seed), out / run.file, layout=run.layout,
@@ -352,17 +408,71 @@ def write_tensile_campaign(
             "cycles": run.truth.n_cycles,
         })
         truths[run.id] = {
-            "file": run.file, "chain": run.chain, "specimen": run.specimen,
-            "layout": run.layout, "force_unit": run.force_unit,
-            "length_unit": run.length_unit, "language": run.language,
-            "encoding": run.encoding, "seed": run.seed, "truth": asdict(run.truth),
+            **_log_truth(run),
             "permanent_set_m": [run.truth.permanent_set(k) for k in cycles],
             "hysteresis_energy_J": [run.truth.hysteresis_energy(k) for k in cycles],
         }
-    sheet = write_text_atomic(
-        run_sheet_text(campaign, [run.chain for run in runs], entries), out / RUN_SHEET_NAME)
-    _write_truth(out, campaign, truths)
-    return sheet
+    text = run_sheet_text(campaign, [run.chain for run in runs], entries)
+    return _write_sheet_and_truth(out, campaign, text, truths)
+
+
+def write_pull_campaign(
+    out: str | Path,
+    runs: Sequence[PullRunSpec],
+    campaign: CampaignSpec,
+    limits: Mapping[str, Mapping[str, float]] | None = None,
+) -> Path:
+    """Simulate and write single pulls and proof-load tests: logs, run sheet and ``truth.json``.
+
+    Parameters
+    ----------
+    out : str or Path
+        Campaign folder (created; files of the same names are replaced).
+    runs : sequence of PullRunSpec
+        The runs, in run-sheet order (unique ids and file names).
+    campaign : CampaignSpec
+        The ``[campaign]`` table.
+    limits : mapping, optional
+        Catalogue chain -> acceptance limits written into its ``[chains.*]``
+        table: ``proof_force_kN``, ``min_breaking_force_kN``,
+        ``max_elongation_at_proof_pct``, ``min_elongation_at_fracture_pct``.
+
+    Returns
+    -------
+    Path
+        The run sheet written: per run ``cycles = 1``, ``gauge_length_mm``
+        (unless the extensometer is written as a strain) and ``proof_force_kN``
+        (with a proof load). ``truth.json`` holds per run its file, chain, how
+        it is written, seed, ``truth`` (the :class:`PullTruth` fields, SI),
+        ``crosshead``, ``quote`` and the true values of
+        :meth:`PullTruth.summary` (``E0_N``, ``max_force_N``,
+        ``offset_yield_force_N``, ``fracture_index``...).
+
+    Raises
+    ------
+    ValueError
+        For an empty or duplicated run list.
+    """
+    out = _folder(out, runs)
+    entries, truths = [], {}
+    for run in runs:
+        table = simulate_pull(run.truth, run.seed)
+        write_pull_table(table if run.crosshead else table.drop(columns="crosshead"),
+                         out / run.file, layout=run.layout, force_unit=run.force_unit,
+                         length_unit=run.length_unit, language=run.language,
+                         encoding=run.encoding, preamble=run.preamble, quote=run.quote)
+        entry = {"id": run.id, "kind": "tensile", "file": run.file,
+                 "chain": chain_key(run.chain), "specimen": run.specimen, "cycles": 1}
+        if not run.truth.strain_channel:
+            entry["gauge_length_mm"] = float(from_si(run.truth.gauge_length, "mm"))
+        if run.truth.proof_force is not None:
+            entry["proof_force_kN"] = float(from_si(run.truth.proof_force, "kN"))
+        entries.append(entry)
+        truths[run.id] = {**_log_truth(run), "crosshead": run.crosshead, "quote": run.quote,
+                          **run.truth.summary()}
+    text = run_sheet_text(campaign, [run.chain for run in runs], entries,
+                          chain_settings=limits)
+    return _write_sheet_and_truth(out, campaign, text, truths)
 
 
 def write_engagement_campaign(
@@ -393,9 +503,7 @@ def write_engagement_campaign(
     ValueError
         For an empty or duplicated run list.
     """
-    _check_unique(runs)
-    out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = _folder(out, runs)
     entries, truths, wheels = [], {}, {}
     for run in runs:
         s = run.settings
@@ -411,8 +519,5 @@ def write_engagement_campaign(
         entries.append(entry)
         truths[run.id] = {"file": run.file, "format": run.format, "chain": run.chain,
                           "seed": run.seed, **truth}
-    sheet = write_text_atomic(
-        run_sheet_text(campaign, [run.chain for run in runs], entries, wheels),
-        out / RUN_SHEET_NAME)
-    _write_truth(out, campaign, truths)
-    return sheet
+    text = run_sheet_text(campaign, [run.chain for run in runs], entries, wheels)
+    return _write_sheet_and_truth(out, campaign, text, truths)

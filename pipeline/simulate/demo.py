@@ -1,8 +1,9 @@
 """The demo campaigns of ``raw/``: synthetic, deterministic, with known truth.
 
-``chainbench simulate demo`` writes both with :func:`write_stiffness_demo` and
-:func:`write_engagement_demo`; fixed seeds make every byte reproducible (a test
-regenerates them and compares with the committed files).
+``chainbench simulate demo`` writes them with :func:`write_stiffness_demo`,
+:func:`write_engagement_demo` and :func:`write_pull_demo` (:data:`DEMOS`); fixed
+seeds make every byte reproducible (a test regenerates them and compares with the
+committed files).
 
 ``stiffness-demo``
     Paper 001, section 3, re-created on the virtual tensile bench: chains
@@ -18,7 +19,17 @@ regenerates them and compares with the committed files).
     30 1/s (27 runs): TDMS and CSV alternately, some with the wheel-angle
     channel, noise at SNR 20, 1.2 s at 5 kHz (at least 11 seating periods a run).
 
-Both run sheets say ``synthetic = true``; ``truth.json`` beside them keeps the
+``pull-demo``
+    Single pulls of chain 18x64 with the acceptance limits of its standard
+    declared (:data:`PULL_LIMITS`): four pulls to fracture in the layouts a
+    tensile lab meets (a German Bluehill export with the extensometer as a
+    strain in % taken off near the maximum force, a Polish European CSV with
+    extensometer and crosshead in mm, an English Bluehill export with every
+    field quoted and the first time stamp repeated, a plain CSV) and one
+    proof-load test (load to the proof force, hold, unload). Specimen D breaks
+    at 404 kN, below the minimum breaking force of 410 kN: the one failed check.
+
+Every run sheet says ``synthetic = true``; ``truth.json`` beside them keeps the
 true values, and the run sheets do not depend on it.
 """
 
@@ -34,18 +45,29 @@ import numpy as np
 from pipeline.simulate.campaign import (
     CampaignSpec,
     EngagementRunSpec,
+    PullRunSpec,
     TensileRunSpec,
     engagement_settings,
     write_engagement_campaign,
+    write_pull_campaign,
     write_tensile_campaign,
 )
 from pipeline.simulate.export import SUFFIXES
+from pipeline.simulate.pull import YIELD_RATIO, PullTruth
 from pipeline.simulate.tensile import TensileTruth
 from pipeline.units import to_si
 
-#: Seeds of the two demos.
+#: Seeds of the demos.
 STIFFNESS_SEED = 1969
 ENGAGEMENT_SEED = 2000
+PULL_SEED = 2024
+
+#: Acceptance limits of the pull demo's chain 18x64 (run-sheet keys of ``[chains.*]``):
+#: proof force, minimum breaking force, largest elongation at the proof force and
+#: smallest elongation at fracture, plausible values for a mining chain of its size.
+PULL_LIMITS = {"18x64": {"proof_force_kN": 320.0, "min_breaking_force_kN": 410.0,
+                         "max_elongation_at_proof_pct": 1.6,
+                         "min_elongation_at_fracture_pct": 12.0}}
 
 
 class LogFormat(NamedTuple):
@@ -166,8 +188,67 @@ def write_engagement_demo(folder: str | Path) -> Path:
     return write_engagement_campaign(folder, runs, campaign)
 
 
+def write_pull_demo(folder: str | Path) -> Path:
+    """Write the ``pull-demo`` campaign (single pulls of chain 18x64) into `folder`.
+
+    Parameters
+    ----------
+    folder : str or Path
+        Campaign folder (created; the demo's files are replaced).
+
+    Returns
+    -------
+    Path
+        The run sheet written.
+    """
+    rng = np.random.default_rng(PULL_SEED)
+    kN, mm = to_si(1.0, "kN"), to_si(1.0, "mm")
+    base = PullTruth.for_chain("18x64")
+    machine = "Instron 600 kN (virtual)"
+    german = (("Texteingaben", 'Probenbezeichnung,"18x64-A"'),
+              ("Allgemein", f'Prüfmaschine,"{machine}"'))
+    english = (("Text Inputs", 'Specimen label,"18x64-C"'), ("General", f'Machine,"{machine}"'))
+    specimens = [
+        # letter, truth settings (yield force 0.65 of the maximum unless given), log format
+        ("A", dict(E0=base.E0 * 1.012, max_force=457 * kN, fracture_strain=0.146,
+                   slack=0.25 * mm, strain_channel=True, extensometer_removed_at=0.99,
+                   removal_mode="freeze"),
+         dict(layout="machine", language="de", preamble=german)),
+        ("B", dict(E0=base.E0 * 0.991, max_force=449 * kN, fracture_strain=0.138,
+                   slack=0.18 * mm),
+         dict(layout="european", language="pl")),
+        ("C", dict(E0=base.E0 * 1.004, max_force=462 * kN, fracture_strain=0.152,
+                   slack=0.22 * mm, strain_channel=True, repeated_first_time=True),
+         dict(layout="machine", language="en", quote=True, preamble=english)),
+        ("D", dict(E0=base.E0 * 0.996, max_force=404 * kN, yield_force=293 * kN,
+                   fracture_strain=0.131, slack=0.30 * mm),
+         dict(layout="plain")),
+        ("P", dict(E0=base.E0 * 1.007, max_force=455 * kN, slack=0.2 * mm,
+                   proof_force=320 * kN, to_fracture=False),
+         dict(layout="european", language="de")),
+    ]
+    runs = []
+    for letter, settings, log in specimens:
+        truth = base.with_(**{"yield_force": YIELD_RATIO * settings["max_force"], **settings})
+        run_id = f"P18-{letter}"
+        runs.append(PullRunSpec(
+            id=run_id, chain="18x64", specimen=f"18x64-{letter}", truth=truth,
+            seed=int(rng.integers(2**31)), file=run_id + SUFFIXES[log["layout"]], **log))
+    campaign = CampaignSpec(
+        id="pull-demo",
+        title="Single pulls to fracture and a proof-load test of an 18x64 chain",
+        lab="Tensile testing laboratory (virtual)",
+        machine=machine,
+        note="Synthetic data made with `chainbench simulate demo`: single pulls of "
+             "chain 18x64 on the virtual tensile bench, with known stiffness, maximum "
+             "force and elongations. Not measurements.",
+    )
+    return write_pull_campaign(folder, runs, campaign, limits=PULL_LIMITS)
+
+
 #: The demo campaigns by folder name, and their writers.
 DEMOS: dict[str, Callable[[str | Path], Path]] = {
     "stiffness-demo": write_stiffness_demo,
     "engagement-demo": write_engagement_demo,
+    "pull-demo": write_pull_demo,
 }

@@ -19,6 +19,11 @@ Layouts (``formats.md``, "Tensile-test logs"):
     workbook's dates (document properties, zip entries) are :data:`XLSX_DATE`,
     so the same table always gives the same bytes.
 
+:func:`write_table` writes the cyclic tensile logs (``force``, ``gauge_<n>``),
+:func:`write_pull_table` single pulls (``force``, ``extensometer`` or
+``extensometer_strain``, ``crosshead``; :data:`PULL_NAMES`); both go through
+:func:`write_columns`.
+
 Units are converted with pint (:func:`pipeline.units.from_si`). Numbers are
 written in fixed-point notation with :data:`SIGNIFICANT_DIGITS` significant
 digits of the column's largest magnitude (trailing zeros trimmed), so a
@@ -63,6 +68,28 @@ NAMES = {
     "machine": ("Time", "Load", "Extension {n}"),
 }
 
+#: Column names of single-pull logs (:func:`write_pull_table`) per naming scheme:
+#: plain, European Polish and German, Bluehill English and German.
+PULL_NAMES = {
+    "plain": {"time": "time", "force": "force", "extensometer": "extensometer",
+              "extensometer_strain": "strain", "crosshead": "crosshead"},
+    "pl": {"time": "Czas", "force": "Siła", "extensometer": "Ekstensometr",
+           "extensometer_strain": "Odkształcenie", "crosshead": "Trawersa"},
+    "de": {"time": "Zeit", "force": "Standardkraft", "extensometer": "Feindehnung",
+           "extensometer_strain": "Dehnung", "crosshead": "Traversenweg"},
+    "machine-en": {"time": "Time", "force": "Load", "extensometer": "Strain 1",
+                   "extensometer_strain": "Strain 1", "crosshead": "Extension"},
+    "machine-de": {"time": "Zeit", "force": "Last", "extensometer": "Dehnung 1",
+                   "extensometer_strain": "Dehnung 1", "crosshead": "Traversenweg"},
+}
+
+#: Languages of the column names of single-pull logs per layout (the first is the default).
+PULL_LANGUAGES = {"plain": ("en",), "european": ("pl", "de"), "machine": ("en", "de"),
+                  "xlsx": ("en",)}
+
+#: Column order of single-pull logs: the machine layout puts the crosshead first.
+PULL_ORDER = {"machine": ("time", "crosshead", "force", "extensometer", "extensometer_strain")}
+
 #: Default encoding of the European layout per language.
 EUROPEAN_ENCODINGS = {"pl": "cp1250", "de": "latin-1"}
 
@@ -70,14 +97,18 @@ EUROPEAN_ENCODINGS = {"pl": "cp1250", "de": "latin-1"}
 XLSX_DATE = datetime(2000, 1, 1)
 
 
-def _converted(table: pd.DataFrame, force_unit: str, length_unit: str):
-    """Names by role and values converted from SI: [(role, unit, values)]."""
+def _check_units(force_unit: str, length_unit: str) -> None:
     if force_unit not in FORCE_UNITS:
         raise ValueError(f"force_unit must be one of {', '.join(FORCE_UNITS)}, got {force_unit!r}")
     if length_unit not in LENGTH_UNITS:
         raise ValueError(
             f"length_unit must be one of {', '.join(LENGTH_UNITS)}, got {length_unit!r}"
         )
+
+
+def _converted(table: pd.DataFrame, force_unit: str, length_unit: str):
+    """Names by role and values converted from SI: [(role, unit, values)]."""
+    _check_units(force_unit, length_unit)
     gauges = [name for name in table.columns if str(name).startswith("gauge_")]
     if "force" not in table.columns or not gauges:
         raise ValueError("the table needs a force column and at least one gauge_<n> column")
@@ -121,12 +152,22 @@ def format_numbers(values: np.ndarray, decimal: str = ".") -> np.ndarray:
 
 
 def _lines(
-    header: Sequence[str], columns: Sequence[np.ndarray], delimiter: str, decimal: str
+    header: Sequence[Sequence[str]],
+    columns: Sequence[np.ndarray],
+    delimiter: str,
+    decimal: str,
+    quote: bool = False,
 ) -> list[str]:
-    rows = format_numbers(columns[0], decimal)
+    """The header rows, then one line per row of `columns`; ``quote`` wraps every field in ``"``."""
+
+    def cells(text: np.ndarray) -> np.ndarray:
+        return np.char.add(np.char.add('"', text), '"') if quote else text
+
+    rows = cells(format_numbers(columns[0], decimal))
     for values in columns[1:]:
-        rows = np.char.add(np.char.add(rows, delimiter), format_numbers(values, decimal))
-    return [delimiter.join(header), *rows.tolist()]
+        rows = np.char.add(np.char.add(rows, delimiter), cells(format_numbers(values, decimal)))
+    head = [delimiter.join(cells(np.array(row, dtype=str)).tolist()) for row in header]
+    return [*head, *rows.tolist()]
 
 
 def _xlsx_bytes(workbook: Workbook) -> bytes:
@@ -205,30 +246,172 @@ def write_table(
         raise ValueError(f"language must be one of {', '.join(EUROPEAN_ENCODINGS)}")
     columns = _converted(table, force_unit, length_unit)
     gauges = len(columns) - 1 - ("time" in table.columns)
-    if layout == "xlsx":
-        workbook = Workbook(write_only=True)
-        sheet = workbook.create_sheet("Data")
-        sheet.append([f"{_name(role, 'plain', gauges)} [{unit}]" for role, unit, _ in columns])
-        for row in np.column_stack([values for _, _, values in columns]).tolist():
-            sheet.append(row)
-        _write_atomic(path, _xlsx_bytes(workbook))
-        return path
     if layout == "machine":
         columns = [column for column in columns if column[0] != "force"] + [
             column for column in columns if column[0] == "force"
         ]
-        header = [_name(role, "machine", gauges) for role, _, _ in columns]
-        units = ",".join(f"({'sec' if unit == 's' else unit})" for _, unit, _ in columns)
+    scheme = {"european": language, "machine": "machine"}.get(layout, "plain")
+    return write_columns(
+        path,
+        [_name(role, scheme, gauges) for role, _, _ in columns],
+        [unit for _, unit, _ in columns],
+        [values for _, _, values in columns],
+        layout=layout,
+        encoding=encoding or (EUROPEAN_ENCODINGS[language] if layout == "european" else None),
+        preamble=preamble,
+        xlsx_names=[_name(role, "plain", gauges) for role, _, _ in columns],
+    )
+
+
+def write_columns(
+    path: Path,
+    names: Sequence[str],
+    units: Sequence[str],
+    columns: Sequence[np.ndarray],
+    *,
+    layout: str,
+    encoding: str | None = None,
+    preamble: Sequence[tuple[str, str]] = (),
+    delimiter: str | None = None,
+    decimal: str | None = None,
+    quote: bool = False,
+    xlsx_names: Sequence[str] | None = None,
+) -> Path:
+    """Write named columns, already in their units, as a raw log in `layout`.
+
+    Parameters
+    ----------
+    path : Path
+        File to write (replaced atomically if it exists).
+    names, units : sequence of str
+        Column names and units as written (``"s"`` is written ``(sec)`` in the
+        units row of the machine layout).
+    columns : sequence of numpy.ndarray
+        Values in those units (:func:`format_numbers`).
+    layout : str
+        One of :data:`LAYOUTS`: ``plain`` and ``european`` write ``name [unit]``
+        headers with LF line ends; ``machine`` writes the preamble, a blank
+        line, a names row and a units row with CRLF line ends; ``xlsx`` a
+        workbook.
+    encoding : str, optional
+        Text encoding; default UTF-8 (plain) or ASCII (machine).
+    preamble : sequence of (str, str)
+        ``key : value`` lines of the machine layout.
+    delimiter, decimal : str, optional
+        Default ``;`` and ``,`` for the European layout, else ``,`` and ``.``.
+    quote : bool
+        Wrap every field of the table (not the preamble) in ``"``.
+    xlsx_names : sequence of str, optional
+        Names of the workbook's header (default `names`).
+
+    Returns
+    -------
+    Path
+        The file written.
+    """
+    if layout == "xlsx":
+        workbook = Workbook(write_only=True)
+        sheet = workbook.create_sheet("Data")
+        sheet.append([f"{name} [{unit}]"
+                      for name, unit in zip(xlsx_names or names, units, strict=True)])
+        for row in np.column_stack(columns).tolist():
+            sheet.append(row)
+        _write_atomic(path, _xlsx_bytes(workbook))
+        return path
+    european = layout == "european"
+    delimiter = delimiter or (";" if european else ",")
+    decimal = decimal or ("," if european else ".")
+    if layout == "machine":
+        unit_row = [f"({'sec' if unit == 's' else unit})" for unit in units]
         lines = [f"{key} : {value}" for key, value in preamble] + ([""] if preamble else [])
-        body = _lines(header, [values for _, _, values in columns], ",", ".")
-        text = "\r\n".join([*lines, body[0], units, *body[1:]]) + "\r\n"
+        body = _lines([names, unit_row], columns, delimiter, decimal, quote)
+        text = "\r\n".join([*lines, *body]) + "\r\n"
         _write_atomic(path, text.encode(encoding or "ascii"))
         return path
-    scheme, delimiter, decimal = ("plain", ",", ".")
-    if layout == "european":
-        scheme, delimiter, decimal = (language, ";", ",")
-        encoding = encoding or EUROPEAN_ENCODINGS[language]
-    header = [f"{_name(role, scheme, gauges)} [{unit}]" for role, unit, _ in columns]
-    body = _lines(header, [values for _, _, values in columns], delimiter, decimal)
+    header = [f"{name} [{unit}]" for name, unit in zip(names, units, strict=True)]
+    body = _lines([header], columns, delimiter, decimal, quote)
     _write_atomic(path, ("\n".join(body) + "\n").encode(encoding or "utf-8"))
     return path
+
+
+def write_pull_table(
+    table: pd.DataFrame,
+    path: str | Path,
+    *,
+    layout: str = "plain",
+    force_unit: str = "kN",
+    length_unit: str = "mm",
+    language: str | None = None,
+    encoding: str | None = None,
+    preamble: Sequence[tuple[str, str]] = (),
+    quote: bool = False,
+) -> Path:
+    """Write a single-pull log (SI, :func:`pipeline.simulate.pull.simulate_pull`) as a raw file.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        ``time`` [s], ``force`` [N], and any of ``extensometer`` [m],
+        ``extensometer_strain`` [1] and ``crosshead`` [m].
+    path : str or Path
+        File to write (replaced atomically if it exists).
+    layout : str
+        One of :data:`LAYOUTS`. The column names are :data:`PULL_NAMES`:
+        ``time [s],force [kN],extensometer [mm],crosshead [mm]`` (plain, xlsx);
+        ``Czas [s];Siła [kN];Ekstensometr [mm];Trawersa [mm]`` or
+        ``Zeit [s];Standardkraft [kN];Feindehnung [mm];Traversenweg [mm]``
+        (European); ``Time,Extension,Load,Strain 1`` over ``(sec),(mm),(kN),(%)``
+        or, German with ``;`` and decimal comma, ``Zeit;Traversenweg;Last;Dehnung 1``
+        (machine: ``Extension`` is the crosshead, ``Strain 1`` the extensometer).
+        A strain column is written in %.
+    force_unit, length_unit : str
+        Units of force and of the length columns (:data:`FORCE_UNITS`,
+        :data:`LENGTH_UNITS`).
+    language : str, optional
+        Column names: ``"pl"`` (default) or ``"de"`` for the European layout,
+        ``"en"`` (default) or ``"de"`` for the machine layout.
+    encoding : str, optional
+        Text encoding; default UTF-8 (plain), :data:`EUROPEAN_ENCODINGS`
+        (European, German machine), ASCII (English machine).
+    preamble : sequence of (str, str)
+        ``key : value`` lines of the machine layout.
+    quote : bool
+        Wrap every field of the table in ``"`` (as some Bluehill versions write).
+
+    Returns
+    -------
+    Path
+        The file written.
+
+    Raises
+    ------
+    ValueError
+        On an unknown layout, language or unit, or a table without time or force.
+    """
+    if layout not in LAYOUTS:
+        raise ValueError(f"layout must be one of {', '.join(LAYOUTS)}, got {layout!r}")
+    languages = PULL_LANGUAGES[layout]
+    language = language or languages[0]
+    if language not in languages:
+        raise ValueError(f"language of the {layout} layout must be one of "
+                         f"{', '.join(languages)}, got {language!r}")
+    _check_units(force_unit, length_unit)
+    if not {"time", "force"} <= set(table.columns):
+        raise ValueError("a pull log needs time and force columns")
+    units = {"time": "s", "force": force_unit, "extensometer": length_unit,
+             "extensometer_strain": "%", "crosshead": length_unit}
+    scheme = {"european": language, "machine": f"machine-{language}"}.get(layout, "plain")
+    roles = [role for role in PULL_ORDER.get(layout, tuple(units)) if role in table.columns]
+    german_machine = layout == "machine" and language == "de"
+    return write_columns(
+        Path(path),
+        [PULL_NAMES[scheme][role] for role in roles],
+        [units[role] for role in roles],
+        [from_si(table[role].to_numpy(dtype=float), units[role]) for role in roles],
+        layout=layout,
+        encoding=encoding or EUROPEAN_ENCODINGS.get(language),
+        preamble=preamble,
+        delimiter=";" if german_machine else None,
+        decimal="," if german_machine else None,
+        quote=quote,
+    )

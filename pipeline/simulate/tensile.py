@@ -48,6 +48,7 @@ zero offset within one division, then quantised to ``gauge_resolution``.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -56,6 +57,28 @@ import pandas as pd
 from pipeline.catalog import chain
 from pipeline.theory.link_stiffness import TABLE_1_PUBLISHED
 from pipeline.units import to_si
+
+
+def check_fields(
+    settings: object, names: Iterable[str], valid: Callable[[float], bool], rule: str
+) -> None:
+    """Raise ValueError for the first field of `names` of `settings` that is not `valid`.
+
+    Parameters
+    ----------
+    settings : object
+        A dataclass instance.
+    names : iterable of str
+        Its fields to check.
+    valid : callable
+        True for a valid value.
+    rule : str
+        The rule, as the message says it (``"> 0"``).
+    """
+    for name in names:
+        value = getattr(settings, name)
+        if not valid(value):
+            raise ValueError(f"{name} must be {rule}, got {value!r}")
 
 
 @dataclass(frozen=True)
@@ -130,19 +153,16 @@ class TensileTruth:
     force_noise: float = 50.0
 
     def __post_init__(self) -> None:
-        positive = ("E0", "gauge_length", "sample_rate", "loading_rate")
-        for name in positive:
-            if not getattr(self, name) > 0:
-                raise ValueError(f"{name} must be > 0, got {getattr(self, name)!r}")
+        check_fields(self, ("E0", "gauge_length", "sample_rate", "loading_rate"),
+                     lambda value: value > 0, "> 0")
         if not 0 <= self.preload < self.upper_force:
             raise ValueError(
                 f"need 0 <= preload < upper_force, got {self.preload!r} and {self.upper_force!r}"
             )
         if self.n_cycles < 1:
             raise ValueError(f"n_cycles must be >= 1, got {self.n_cycles!r}")
-        for name in ("toe_fraction", "reseat_fraction"):
-            if not 0 < getattr(self, name) <= 1:
-                raise ValueError(f"{name} must be in (0, 1], got {getattr(self, name)!r}")
+        check_fields(self, ("toe_fraction", "reseat_fraction"),
+                     lambda value: 0 < value <= 1, "in (0, 1]")
         non_negative = (
             "dwell",
             "hold",
@@ -155,9 +175,7 @@ class TensileTruth:
             "gauge_noise",
             "force_noise",
         )
-        for name in non_negative:
-            if not getattr(self, name) >= 0:
-                raise ValueError(f"{name} must be >= 0, got {getattr(self, name)!r}")
+        check_fields(self, non_negative, lambda value: value >= 0, ">= 0")
         if not 0 <= self.bending < 1:
             raise ValueError(f"bending must be in [0, 1), got {self.bending!r}")
         if self.hysteresis * 4 >= self.stroke:
@@ -239,7 +257,7 @@ class TensileTruth:
         return np.array(times), np.array(forces)
 
 
-def _toe(u: np.ndarray, slack: float, fraction: float) -> np.ndarray:
+def toe_slack(u: np.ndarray, slack: float, fraction: float) -> np.ndarray:
     """Slack taken up at load fraction `u` [m]: ``S (1 - (1 - u/f)^3)``, S above f."""
     rest = np.clip(1.0 - u / fraction, 0.0, 1.0)
     return slack * (1.0 - rest**3)
@@ -273,7 +291,7 @@ def mean_elongation(truth: TensileTruth, time: np.ndarray) -> tuple[np.ndarray, 
         permanent = truth.permanent_set(cycle)
         first = 1 + 3 * (cycle - 1)
         up, dwell, down = (interval == first), (interval == first + 1), (interval == first + 2)
-        elongation[up] = start + truth.stroke * u[up] + _toe(u[up], slack, fraction)
+        elongation[up] = start + truth.stroke * u[up] + toe_slack(u[up], slack, fraction)
         elongation[dwell] = start + truth.stroke + slack
         chord = truth.stroke + slack - permanent
         elongation[down] = (
@@ -310,10 +328,35 @@ def simulate_tensile(truth: TensileTruth, seed: int | None = None) -> pd.DataFra
     time = np.arange(int(np.floor(duration * truth.sample_rate)) + 1) / truth.sample_rate
     force, elongation = mean_elongation(truth, time)
     columns = {"time": time, "force": force + rng.normal(0.0, truth.force_noise, time.size)}
-    q = truth.gauge_resolution
     for number, factor in ((1, 1.0 + truth.bending), (2, 1.0 - truth.bending)):
-        reading = elongation * factor + rng.normal(0.0, truth.gauge_noise, time.size)
-        if q > 0:
-            reading = q * np.round((reading + rng.uniform(-q / 2, q / 2)) / q)
-        columns[f"gauge_{number}"] = reading
+        columns[f"gauge_{number}"] = measured(
+            elongation * factor, truth.gauge_noise, truth.gauge_resolution, rng)
     return pd.DataFrame(columns)
+
+
+def measured(
+    values: np.ndarray, noise: float, resolution: float, rng: np.random.Generator
+) -> np.ndarray:
+    """`values` as a channel reads them: plus white noise, quantised with a random zero offset.
+
+    Parameters
+    ----------
+    values : numpy.ndarray
+        True values [any unit].
+    noise : float
+        Standard deviation of the white noise [same unit].
+    resolution : float
+        Division of the reading [same unit]; 0 disables quantisation.
+    rng : numpy.random.Generator
+        Source of the noise and of the zero offset (within half a division).
+
+    Returns
+    -------
+    numpy.ndarray
+        The readings.
+    """
+    reading = values + rng.normal(0.0, noise, values.size)
+    if resolution > 0:
+        offset = rng.uniform(-resolution / 2, resolution / 2)
+        reading = resolution * np.round((reading + offset) / resolution)
+    return reading

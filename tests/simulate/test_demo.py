@@ -86,3 +86,31 @@ def test_engagement_demo_recovers_its_truth(processed_demos):
         np.testing.assert_allclose(measured, expected, rtol=0.03, err_msg=name)
     assert float(summary["k_fit"]) == pytest.approx(2.0, rel=0.05)
     assert float(summary["k_fit_ci_low"]) <= 2.0 <= float(summary["k_fit_ci_high"])
+
+
+def test_pull_demo_declares_limits_and_one_specimen_fails_one():
+    folder = committed("pull-demo")
+    sheet = tomllib.loads((folder / "campaign.toml").read_text(encoding="utf-8"))
+    limits = sheet["chains"]["c18x64"]
+    assert limits["catalog"] == "18x64" and limits["proof_force_kN"] == 320
+    runs = {run["id"]: run for run in sheet["runs"]}
+    assert all(run["cycles"] == 1 for run in runs.values())
+    truth = json.loads((folder / "truth.json").read_text(encoding="utf-8"))["runs"]
+    failed = []
+    for run_id, run in truth.items():
+        # a strain channel needs no gauge length; a proof-load run names its proof force
+        assert ("gauge_length_mm" in runs[run_id]) == (not run["truth"]["strain_channel"])
+        assert runs[run_id].get("proof_force_kN") == (
+            None if run["proof_force_N"] is None else run["proof_force_N"] / 1e3)
+        if run["fracture_index"] is not None:
+            if run["max_force_N"] < limits["min_breaking_force_kN"] * 1e3:
+                failed.append((run_id, "min_breaking_force_kN"))
+            if 100 * run["strain_at_fracture"] < limits["min_elongation_at_fracture_pct"]:
+                failed.append((run_id, "min_elongation_at_fracture_pct"))
+        else:
+            strain = run["elongation_at_proof_m"] / run["truth"]["gauge_length"]
+            if 100 * strain > limits["max_elongation_at_proof_pct"]:
+                failed.append((run_id, "max_elongation_at_proof_pct"))
+    assert failed == [("P18-D", "min_breaking_force_kN")]
+    assert sum(run["fracture_index"] is not None for run in truth.values()) == 4
+    assert all(path.stat().st_size < 300e3 for path in folder.iterdir())
