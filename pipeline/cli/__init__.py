@@ -5,7 +5,7 @@ from __future__ import annotations
 import typer
 
 from pipeline import __version__
-from pipeline.cli import inspect, report, run
+from pipeline.cli import init, inspect, report, run
 from pipeline.cli.simulate import simulate_app
 from pipeline.cli.theory import theory_app
 
@@ -14,6 +14,7 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
 )
 app.add_typer(theory_app, name="theory")
+app.command("init")(init.command)
 app.command("inspect")(inspect.command)
 app.command("run")(run.run_command)
 app.command("validate")(run.validate_command)

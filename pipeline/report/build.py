@@ -36,11 +36,13 @@ import numpy as np
 import xarray as xr
 
 from pipeline import __version__
+from pipeline.acceptance import CHECKS
 from pipeline.errors import ChainbenchError
 from pipeline.fit import stiffness as stiffness_fit
 from pipeline.report import design_figures, impact_figures, stiffness_figures
 from pipeline.report.render import report_style, svg
 from pipeline.store.netcdf import read_dataset, write_text_atomic
+from pipeline.store.tensile import STRENGTH_VARIABLES
 from pipeline.theory.wheel_impact import RYABOV_MASS_SHARE
 from pipeline.units import from_si
 
@@ -53,6 +55,14 @@ TEMPLATE_NAME = "report.html.j2"
 
 #: Shown where a value is missing (NaN).
 MISSING = "–"
+
+#: How each acceptance check reads in the report.
+ACCEPTANCE_LABELS = {
+    "proof_force": "carries the proof force",
+    "breaking_force": "breaking force at least the minimum",
+    "elongation_at_proof": "elongation at proof force at most the maximum",
+    "elongation_at_fracture": "elongation at fracture at least the minimum",
+}
 
 
 @dataclass(frozen=True)
@@ -208,6 +218,36 @@ def _impact_checks(summary: xr.Dataset) -> Iterable[dict[str, str]]:
                "status": _status(inside), "detail": f"interval {interval(low, high)}"}
 
 
+_VERDICT = {1: ("pass", "pass"), 0: ("fail", "fail"), -1: ("not measured", "info")}
+
+
+def _acceptance_checks(summary: xr.Dataset) -> Iterable[dict[str, str]]:
+    """The acceptance limits each chain declares, with its verdict and the failing specimens."""
+    for chain in summary["chain"].values:
+        for check in CHECKS:
+            code = int(summary[f"accept_{check}"].sel(chain=chain))
+            if code not in _VERDICT:
+                continue
+            mine = summary["specimen_chain"].values == chain
+            verdicts = summary[f"specimen_accept_{check}"].values[mine]
+            failing = [str(run) for run, code in zip(summary["specimen"].values[mine], verdicts,
+                                                     strict=True) if code == 0]
+            result, status = _VERDICT[code]
+            yield {"check": f"chain {chain}: {ACCEPTANCE_LABELS[check]}", "result": result,
+                   "status": status,
+                   "detail": (f"failed by {', '.join(failing)}; " if failing else "")
+                   + f"{int(np.sum(verdicts >= 0))} specimen(s) measured"}
+
+
+def _run_warnings(runs: Sequence[RunFile]) -> Iterable[dict[str, str]]:
+    """One row per tensile run whose stages decided or repaired something."""
+    for run in runs:
+        found = str(run.attrs.get("warnings", ""))
+        if run.kind == "tensile" and found:
+            yield {"check": f"run {run.run_id}: channels, fracture and time",
+                   "result": "warning", "status": "info", "detail": found}
+
+
 def _checks(summary: xr.Dataset, runs: Sequence[RunFile]) -> list[dict[str, str]]:
     """Every check of the campaign as rows: check, result, status, detail."""
     failures = _failures(summary)
@@ -217,6 +257,9 @@ def _checks(summary: xr.Dataset, runs: Sequence[RunFile]) -> list[dict[str, str]
              "detail": "" if not failures else f"{len(failures)} failed, listed below"}]
     if _has(summary, "chain"):
         rows.extend(_band_checks(summary))
+        if _has(summary, "specimen"):
+            rows.extend(_acceptance_checks(summary))
+        rows.extend(_run_warnings(runs))
     if _has(summary, "operating_point"):
         rows.extend(_impact_checks(summary))
     rows.extend({"check": f"run {run_id}", "result": "failed", "status": "fail",
@@ -284,6 +327,52 @@ def _specimen_row(run: xr.Dataset) -> dict[str, str]:
     }
 
 
+def _percent_of_length(value: float) -> str:
+    return percent(value, 2)
+
+
+def _strength_rows(summary: xr.Dataset) -> list[dict[str, str]]:
+    """The figures a lab reports per specimen, with its acceptance verdicts."""
+    rows = []
+    for run_id in summary["specimen"].values if _has(summary, "specimen") else []:
+        row = summary.sel(specimen=run_id)
+        value = {name: float(row[f"specimen_{name}"]) for name in STRENGTH_VARIABLES}
+        verdicts = [f"{ACCEPTANCE_LABELS[check]}: {_VERDICT[code][0]}" for check in CHECKS
+                    if (code := int(row[f"specimen_accept_{check}"])) in _VERDICT]
+        rows.append({
+            "run": str(run_id), "specimen": str(row["specimen_name"].values),
+            "kind": "single pull" if int(row["specimen_single_pull"]) else "cyclic",
+            "max_force": kilonewtons(value["max_force"]),
+            "at_max": _percent_of_length(value["strain_at_max_force"]),
+            "fracture_force": kilonewtons(value["fracture_force"]),
+            "at_fracture": _percent_of_length(value["strain_at_fracture"]),
+            "yield_force": kilonewtons(value["yield_force"]),
+            "offset": percent(value["yield_offset"], 2),
+            "at_proof": _percent_of_length(value["strain_at_proof"]),
+            "set": _percent_of_length(value["permanent_strain_after_proof"]),
+            "verdicts": "; ".join(verdicts) or MISSING,
+            "status": ("fail" if any(v.endswith("fail") for v in verdicts) else
+                       "pass" if verdicts else "info"),
+        })
+    return rows
+
+
+def _channel_rows(run: xr.Dataset) -> list[dict[str, str]]:
+    rows = []
+    for channel in run["channel"].values if "channel" in run.dims else []:
+        row = run.sel(channel=channel)
+        removed = int(row["channel_removed_at"])
+        rows.append({
+            "channel": str(channel), "column": str(row["channel_column"].values),
+            "kind": str(row["channel_kind"].values),
+            "stiffness": kilonewtons(row["channel_stiffness"]),
+            "used": "yes" if int(row["channel_used"]) else "no",
+            "removed": (f"{row['channel_removal'].values} at sample {removed}" if removed >= 0
+                        else MISSING),
+        })
+    return rows
+
+
 def _fit_rows(run: xr.Dataset) -> list[dict[str, str]]:
     rows = []
     for cycle in run["cycle"].values:
@@ -317,8 +406,11 @@ def _stiffness(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
         "overview_svg": svg(stiffness_figures.stiffness_by_specimen(summary, tensile)),
         "chains": _chain_rows(summary),
         "specimens": [_specimen_row(run) for run in tensile],
+        "strength": _strength_rows(summary),
         "runs": [{
             **_specimen_row(run),
+            "single_pull": bool(int(run["single_pull"])) if "single_pull" in run else False,
+            "channels": _channel_rows(run),
             "warnings": "; ".join(filter(None, (str(run.attrs.get("warnings", "")),
                                                 str(run.attrs.get("ingest_warnings", ""))))),
             "curve_svg": svg(stiffness_figures.force_strain(run)),

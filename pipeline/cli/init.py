@@ -1,0 +1,565 @@
+"""``chainbench init FOLDER``: a draft run sheet from the machine exports in a folder.
+
+Every file directly in FOLDER is read as ``chainbench inspect`` reads it (the
+readers' auto-detection, nothing processed); the run sheet itself, hidden
+files, ``truth.json`` and sub-folders are passed over, and files the readers
+cannot read are listed as skipped with the reason. The draft
+``FOLDER/campaign.toml`` holds the ``[campaign]`` table, one ``[chains.chain1]``
+placeholder and one ``[[runs]]`` entry per readable file, in natural order of
+the file names, with what was detected written out (columns, units, cycles)
+and every value a person must give marked ``TODO``.
+
+A file is drafted as an engagement run when it looks like an engagement log:
+a time and a force column, no gauge column, sampled at
+:data:`ENGAGEMENT_RATE_HZ` or faster; every other file as a tensile run.
+
+An existing run sheet is never overwritten; the draft is written to a
+temporary file and renamed into place (UTF-8).
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import stat
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Annotated
+
+import numpy as np
+import typer
+from rich.markup import escape
+from rich.table import Table
+
+from pipeline.cli._output import _plain, console
+from pipeline.errors import ChainbenchError, ColumnError
+from pipeline.runsheet import RUN_SHEET_NAME, resolve_inside
+
+if TYPE_CHECKING:
+    import pandas as pd
+
+    from pipeline.ingest.table import ColumnInfo, TableMetadata
+
+# The readers are imported inside the functions that use them, so that every other
+# command starts without loading them.
+
+#: Files of a campaign folder that are no machine exports.
+NOT_EXPORTS = (RUN_SHEET_NAME, "truth.json")
+
+#: Key of the placeholder chain every drafted run refers to.
+CHAIN_KEY = "chain1"
+
+#: Key of the placeholder wheel the drafted engagement runs are told to name.
+WHEEL_KEY = "wheel1"
+
+#: Sampling rate [Hz] from which a log with time and force but no gauge is an engagement log.
+ENGAGEMENT_RATE_HZ = 1000.0
+
+#: Unit written for a role whose unit the file does not give (validation refuses it).
+UNIT_PLACEHOLDER = "TODO"
+
+#: Longest comment line written into the draft (longer text is shortened).
+COMMENT_WIDTH = 120
+
+#: Roles of the run sheet's ``columns`` / ``units`` tables other than ``gauges``.
+SINGLE_ROLES = ("time", "force", "angle")
+
+_ID_UNSAFE = re.compile(r"[^A-Za-z0-9._-]+")
+_CONTROL = re.compile(r"[\x00-\x1f\x7f]")
+_TOML_ESCAPES = {'"': '\\"', "\\": "\\\\", "\b": "\\b", "\t": "\\t", "\n": "\\n",
+                 "\f": "\\f", "\r": "\\r"}
+_DELIMITER_NAMES = {"\t": "tab", " ": "space"}
+
+
+@dataclass
+class DraftRun:
+    """One readable file and what its ``[[runs]]`` entry says."""
+
+    file: str  #: path relative to the campaign folder, forward slashes
+    id: str
+    kind: str
+    kind_reason: str
+    report: dict  #: what ``chainbench inspect`` shows for the file
+    metadata: TableMetadata  #: columns and warnings as the drafted entry reads the file
+    columns: dict = field(default_factory=dict)  #: the run sheet's ``columns``
+    units: dict = field(default_factory=dict)  #: the run sheet's ``units``
+    notes: list[str] = field(default_factory=list)  #: remarks on the columns and the cycles
+
+    @property
+    def gauges(self) -> list[ColumnInfo]:
+        """The gauge and strain columns, in file order."""
+        return [column for column in self.metadata.columns if _is_gauge(column)]
+
+
+# -- names ---------------------------------------------------------------------------------
+
+def safe_name(text: str, fallback: str) -> str:
+    """`text` as a run-sheet id: letters, digits, ``.``, ``_``, ``-``, at most 100 characters.
+
+    Examples
+    --------
+    >>> safe_name("TST 2021/10 (FA) #22", "run")
+    'TST_2021_10_FA_22'
+    >>> safe_name("..", "run")
+    'run'
+    """
+    name = _ID_UNSAFE.sub("_", text).strip("_")[:100]
+    return name if name.strip(".") else fallback
+
+
+def unique_name(name: str, taken: set[str]) -> str:
+    """`name`, or `name` with the first free ``-2``, ``-3``... suffix; added to `taken`."""
+    candidate, number = name, 1
+    while candidate in taken:
+        number += 1
+        suffix = f"-{number}"
+        candidate = name[: 100 - len(suffix)] + suffix
+    taken.add(candidate)
+    return candidate
+
+
+def natural_key(name: str) -> tuple:
+    """Sort key putting ``run2`` before ``run10`` (digits compared as numbers)."""
+    parts = re.split(r"(\d+)", name)  # the digit runs are at the odd places
+    return tuple(int(part) if index % 2 else part.casefold()
+                 for index, part in enumerate(parts)), name
+
+
+# -- TOML text -----------------------------------------------------------------------------
+
+def toml_string(text: str) -> str:
+    """`text` as a TOML basic string (quotes, backslashes and control characters escaped).
+
+    Examples
+    --------
+    >>> print(toml_string('Siła "1" \\\\ kN'))
+    "Siła \\"1\\" \\\\ kN"
+    """
+    return '"' + "".join(
+        _TOML_ESCAPES.get(char) or (f"\\u{ord(char):04X}" if _CONTROL.match(char) else char)
+        for char in text
+    ) + '"'
+
+
+def toml_value(value: str | list[str]) -> str:
+    """A string or a list of strings as a TOML value."""
+    if isinstance(value, str):
+        return toml_string(value)
+    return "[" + ", ".join(toml_string(item) for item in value) + "]"
+
+
+def inline_table(mapping: dict) -> str:
+    """`mapping` (role -> string or list of strings) as a TOML inline table."""
+    return "{" + ", ".join(f"{key} = {toml_value(value)}" for key, value in mapping.items()) + "}"
+
+
+def quoted(text: str) -> str:
+    """`text` in double quotes, as names are shown in comments (nothing escaped)."""
+    return f'"{text}"'
+
+
+def comment(text: str) -> str:
+    """`text` as one comment line: control characters and runs of blanks made one space,
+    shortened to :data:`COMMENT_WIDTH`."""
+    flat = " ".join(_CONTROL.sub(" ", text).split())
+    line = f"# {flat}"
+    return line if len(line) <= COMMENT_WIDTH else line[: COMMENT_WIDTH - 3] + "..."
+
+
+# -- finding and reading the exports -------------------------------------------------------
+
+def _hidden(path: Path) -> bool:
+    attributes = getattr(path.lstat(), "st_file_attributes", 0)
+    return path.name.startswith(".") or bool(attributes & stat.FILE_ATTRIBUTE_HIDDEN)
+
+
+def candidate_files(folder: Path) -> tuple[list[Path], list[tuple[str, str]]]:
+    """The files of `folder` to read, in natural order, and the sub-folders passed over."""
+    files, skipped = [], []
+    for path in sorted(folder.iterdir(), key=lambda item: natural_key(item.name)):
+        if _hidden(path) or path.name in NOT_EXPORTS:
+            continue
+        try:
+            resolve_inside(folder, path.name)
+        except ValueError:
+            skipped.append((path.name, "a link leading out of the campaign folder"))
+            continue
+        if path.is_dir():
+            skipped.append((path.name, "a folder: only the files directly in the campaign "
+                            "folder are read"))
+        else:
+            files.append(path)
+    return files, skipped
+
+
+def sample_rate(table: pd.DataFrame) -> float | None:
+    """Sampling rate [Hz] from the median time step, or None without a usable time column."""
+    if "time" not in table or len(table) < 2:
+        return None
+    step = float(np.nanmedian(np.diff(table["time"].to_numpy())))
+    return 1.0 / step if step > 0 else None
+
+
+def _is_gauge(column: ColumnInfo) -> bool:
+    return (column.role or "").startswith(("gauge_", "strain_"))
+
+
+def run_kind(table: pd.DataFrame, metadata: TableMetadata) -> tuple[str, str]:
+    """``"engagement"`` for a log that looks like one, else ``"tensile"``; and why.
+
+    An engagement log has a time and a force column and no gauge column, sampled
+    at :data:`ENGAGEMENT_RATE_HZ` or faster.
+    """
+    rate = sample_rate(table)
+    has_gauge = any(_is_gauge(column) for column in metadata.columns)
+    if "force" in table and not has_gauge and rate is not None and rate >= ENGAGEMENT_RATE_HZ:
+        return "engagement", (f"guessed: time and force at {rate:.4g} Hz and no gauge "
+                              "column, like an engagement log")
+    return "tensile", "a force and gauge log" if has_gauge else "no gauge column found"
+
+
+def column_map(metadata: TableMetadata) -> dict:
+    """The run sheet's ``columns``: each role found -> the file's column name."""
+    found = {role: next((c.name for c in metadata.columns if c.role == role), None)
+             for role in SINGLE_ROLES}
+    mapping: dict = {role: name for role, name in found.items() if name is not None}
+    gauges = [column.name for column in metadata.columns if _is_gauge(column)]
+    if gauges:
+        mapping["gauges"] = gauges
+    return mapping
+
+
+def unit_map(metadata: TableMetadata) -> dict:
+    """The run sheet's ``units``: the units found, :data:`UNIT_PLACEHOLDER` where the file
+    gives none; ``gauges`` only when every gauge column has one unit (the run sheet takes
+    one unit for all gauges)."""
+    units: dict = {}
+    for role in SINGLE_ROLES:
+        column = next((c for c in metadata.columns if c.role == role), None)
+        if column is not None:
+            units[role] = column.unit or UNIT_PLACEHOLDER
+    found = {column.unit for column in metadata.columns if _is_gauge(column)}
+    if len(found) == 1:
+        units["gauges"] = found.pop() or UNIT_PLACEHOLDER
+    return units
+
+
+def unit_notes(run: DraftRun) -> list[str]:
+    """Remarks on the drafted ``units``: the placeholders, gauges of several units."""
+    notes = []
+    if run.units and run.gauges and "gauges" not in run.units:
+        listed = ", ".join(f"{quoted(c.name)} {c.unit or 'no unit (TODO)'}" for c in run.gauges)
+        notes.append(f"gauge units differ ({listed}): units takes one for all gauges, so the "
+                     "file's own are used")
+    missing = [role for role, unit in run.units.items() if unit == UNIT_PLACEHOLDER]
+    if missing:
+        notes.append(f"TODO: the file gives no unit for {', '.join(missing)}: replace "
+                     f"{quoted(UNIT_PLACEHOLDER)} by the unit (s, N, kN, kgf, mm, um, %...)")
+    return notes
+
+
+def _read(path: Path, kind: str, columns: dict | None = None,
+          units: dict | None = None) -> tuple[pd.DataFrame, TableMetadata]:
+    from pipeline.ingest import read_table
+
+    return read_table(path, kind=kind, columns=columns, units=units, strict=False)
+
+
+def _roles(metadata: TableMetadata) -> dict[str, str]:
+    return {column.name: column.role for column in metadata.columns if column.role}
+
+
+def _as_drafted(run: DraftRun, path: Path, detected: TableMetadata) -> None:
+    """Read `path` again as the drafted entry says, keeping that read's metadata.
+
+    When the file's names cannot be given back to the reader (a TDMS time made
+    from the waveform, a blank name) or give other roles, ``columns`` and
+    ``units`` are left out of the entry (auto-detection), with a note.
+    """
+    known = {role: unit for role, unit in run.units.items() if unit != UNIT_PLACEHOLDER}
+    try:
+        _, metadata = _read(path, run.kind, run.columns, known)
+        problem = None if _roles(metadata) == _roles(detected) else "they give other roles"
+    except ChainbenchError as error:
+        problem = _reason(error)
+    if problem is None:
+        run.metadata = metadata
+        return
+    run.columns, run.units = {}, {}
+    run.notes.insert(0, f"columns and units left to auto-detection: naming them failed "
+                        f"({problem})")
+    run.metadata = _read(path, run.kind)[1]
+
+
+def _countable(path: Path, table: pd.DataFrame) -> pd.DataFrame:
+    """`table`, or, when its force has no usable unit, the file read with the force taken
+    as N: the number of cycles does not depend on the force's unit."""
+    return table if "force" in table else _read(path, "tensile", units={"force": "N"})[0]
+
+
+def draft_run(path: Path, folder: Path, taken: set[str]) -> DraftRun:
+    """Read one export and draft its ``[[runs]]`` entry; its id is added to `taken`.
+
+    Raises
+    ------
+    ChainbenchError
+        When the readers cannot read the file (:class:`~pipeline.errors.ColumnError`
+        when they find no force column in it).
+    """
+    from pipeline.cli.inspect import summary
+
+    table, metadata = _read(path, "tensile")
+    if not any(column.role == "force" for column in metadata.columns):
+        raise ColumnError("no force column found", file=path,
+                          hint="a run needs a force; name it in the run sheet if the file "
+                          "has one")
+    kind, reason = run_kind(table, metadata)
+    report = summary(_countable(path, table), metadata)
+    run = DraftRun(
+        file=path.relative_to(folder).as_posix(),
+        id=unique_name(safe_name(path.stem, "run"), taken),
+        kind=kind, kind_reason=reason, report=report,
+        metadata=metadata, columns=column_map(metadata), units=unit_map(metadata),
+        notes=report["warnings"][len(metadata.warnings):],  # the cycle counts disagreeing
+    )
+    _as_drafted(run, path, metadata)
+    return run
+
+
+def draft_runs(folder: Path, *, debug: bool = False) -> tuple[list[DraftRun], list[tuple]]:
+    """The drafted runs of `folder`'s exports, and the ``(name, reason)`` of those skipped."""
+    files, skipped = candidate_files(folder)
+    runs: list[DraftRun] = []
+    taken: set[str] = set()
+    for path in files:
+        try:
+            runs.append(draft_run(path, folder, taken))
+        except ChainbenchError as error:
+            if debug:
+                raise
+            skipped.append((path.name, _reason(error)))
+        except Exception as error:
+            if debug:
+                raise
+            skipped.append((path.name, f"unexpected failure ({type(error).__name__}: "
+                            f"{' '.join(str(error).split())}); rerun with --debug and report it"))
+    return runs, skipped
+
+
+def _reason(error: ChainbenchError) -> str:
+    """The error on one line, without the file name (the draft names the file)."""
+    text = " ".join(str(error).split())
+    return text.removeprefix(f"{error.file}, ").removeprefix(f"{error.file}: ")
+
+
+# -- the draft -----------------------------------------------------------------------------
+
+def _header(folder: Path, skipped: list[tuple]) -> list[str]:
+    lines = [
+        "# Draft run sheet written by `chainbench init` from the exports in this folder.",
+        "# Fill in every TODO, then check it with: chainbench validate "
+        + folder.as_posix(),
+    ]
+    lines += [comment(f"skipped {name}: {reason}") for name, reason in skipped]
+    return lines
+
+
+def _campaign(folder: Path) -> list[str]:
+    campaign_id = safe_name(folder.resolve().name, "campaign")
+    return [
+        "",
+        "[campaign]",
+        f"id = {toml_string(campaign_id)}  # from the folder name",
+        'title = ""    # TODO: what the campaign tests',
+        'lab = ""      # TODO: the laboratory',
+        'machine = ""  # TODO: the testing machine',
+    ]
+
+
+def _chain(engagement: bool) -> list[str]:
+    lines = [
+        "",
+        '# TODO: fill in the chain (catalog = "18x64", or d_mm, t_mm, R0_mm, a_mm)',
+        f"[chains.{CHAIN_KEY}]",
+        '# catalog = "..."',
+        *(f"# {key} = ..." for key in ("d_mm", "t_mm", "R0_mm", "a_mm")),
+    ]
+    if engagement:
+        lines += [
+            "",
+            "# TODO: the wheel of the engagement runs (uncomment and fill in)",
+            f"# [wheels.{WHEEL_KEY}]",
+            "# teeth = ...",
+            "# apex_angle_deg = ...",
+        ]
+    return lines
+
+
+def _detected(run: DraftRun) -> list[str]:
+    """What the reader detected, and its warnings, one comment line each."""
+    meta = run.metadata
+    found = {
+        "layout": meta.layout, "encoding": meta.encoding,
+        "sheet": meta.sheet and quoted(meta.sheet),
+        "delimiter": meta.delimiter and _DELIMITER_NAMES.get(meta.delimiter,
+                                                             quoted(meta.delimiter)),
+        "decimal": meta.decimal and quoted(meta.decimal),
+    }
+    text = ", ".join(f"{key} {value}" for key, value in found.items() if value)
+    return [comment(f"detected: {text}, {meta.rows} rows"),
+            *(comment(f"reader: {warning}") for warning in meta.warnings)]
+
+
+def _cycles(run: DraftRun) -> str:
+    cycles = run.report["cycles"]
+    if cycles:
+        return (f"cycles = {cycles}  # detected: {cycles} loading(s) in the force signal "
+                "(1 = a single pull)")
+    return "# cycles = ...  # TODO: load cycles of the test (none found in the force signal)"
+
+
+def _is_strain(column: ColumnInfo) -> bool:
+    return column.role.startswith("strain_")
+
+
+def _gauge_lines(run: DraftRun) -> list[str]:
+    """The gauge channels' kinds, the one chainbench prefers, and the gauge length."""
+    from pipeline.condition.channels import PREFERENCE
+
+    gauges = run.gauges
+    if not gauges:
+        return ['# TODO: no gauge column found: name it, columns = {gauges = ["..."]}']
+    kinds = [(column, column.kind or "gauge") for column in gauges]
+    preferred = next(kind for kind in PREFERENCE if any(k == kind for _, k in kinds))
+    chosen = [column.name for column, kind in kinds if kind == preferred]
+    together = " (averaged when their stiffnesses agree)" if len(chosen) > 1 else ""
+    lines = [
+        comment("gauge channels: " + "; ".join(
+            f"{quoted(column.name)} {kind} ({'strain' if _is_strain(column) else 'length'})"
+            for column, kind in kinds)),
+        comment(f"chainbench prefers {', '.join(map(quoted, chosen))}{together} "
+                f"({preferred}; extensometer over plain gauge over crosshead)"),
+    ]
+    strains = [column.name for column in gauges if _is_strain(column)]
+    if len(strains) == len(gauges):
+        return [*lines, "# no gauge_length_mm needed: every gauge channel reads a strain"]
+    lines.append("# gauge_length_mm = ...  # TODO: the length the gauges measure over")
+    if strains:
+        lines.append(comment(f"(without it only the strain channel(s) "
+                             f"{', '.join(map(quoted, strains))} are used)"))
+    return lines
+
+
+def _engagement_lines() -> list[str]:
+    return [
+        "# TODO: an engagement run needs its wheel, branch length, speed and chain stiffness:",
+        f'# wheel = "{WHEEL_KEY}"',
+        "# branch_length_m = ...",
+        "# rpm = ...          # or omega_per_s = ...",
+        '# E0_N = ...         # or stiffness_from = "<campaign>/<chain>"',
+    ]
+
+
+def run_lines(run: DraftRun) -> list[str]:
+    """The ``[[runs]]`` entry of one drafted run, with its comments."""
+    lines = ["", "[[runs]]", *_detected(run)]
+    lines += [
+        f"id = {toml_string(run.id)}",
+        f"kind = {toml_string(run.kind)}  " + comment(run.kind_reason),
+        f"file = {toml_string(run.file)}",
+        f"chain = {toml_string(CHAIN_KEY)}",
+    ]
+    if run.kind == "tensile":
+        lines += [f"specimen = {toml_string(Path(run.file).stem)}", _cycles(run)]
+    if run.columns:
+        lines.append(f"columns = {inline_table(run.columns)}")
+        lines.append(f"units = {inline_table(run.units)}")
+    lines += [comment(note) for note in [*run.notes, *unit_notes(run)]]
+    lines += _gauge_lines(run) if run.kind == "tensile" else _engagement_lines()
+    return lines
+
+
+def render(folder: Path, runs: list[DraftRun], skipped: list[tuple]) -> str:
+    """The draft run sheet of `folder`, as TOML text."""
+    lines = [*_header(folder, skipped), *_campaign(folder),
+             *_chain(any(run.kind == "engagement" for run in runs))]
+    for run in runs:
+        lines += run_lines(run)
+    return "\n".join(lines) + "\n"
+
+
+# -- the command ---------------------------------------------------------------------------
+
+def run_json(run: DraftRun) -> dict:
+    """What was detected in one file and drafted for it, JSON-ready."""
+    keys = ("layout", "encoding", "delimiter", "decimal", "sheet", "rows", "cycles",
+            "machine_cycles", "preamble")
+    return {
+        "file": run.file, "id": run.id, "kind": run.kind, "kind_reason": run.kind_reason,
+        **{key: run.report[key] for key in keys},
+        "columns": [asdict(column) for column in run.metadata.columns],
+        "run_sheet_columns": run.columns, "run_sheet_units": run.units,
+        "warnings": [*run.metadata.warnings, *run.notes, *unit_notes(run)],
+    }
+
+
+def _show(runs: list[DraftRun], skipped: list[tuple]) -> None:
+    table = Table(title="exports found")
+    for heading in ("file", "kind", "layout", "rows", "cycles", "force", "gauges"):
+        table.add_column(heading)
+    for run in runs:
+        table.add_row(*(escape(str(value)) for value in (
+            run.file, run.kind, run.metadata.layout, run.metadata.rows,
+            run.report["cycles"] if run.kind == "tensile" and run.report["cycles"] else "-",
+            next((c.name for c in run.metadata.columns if c.role == "force"), "-"),
+            ", ".join(f"{c.name} ({c.kind})" for c in run.gauges) or "-")))
+    console.print(table)
+    for name, reason in skipped:
+        console.print(f"[yellow]skipped[/yellow] {escape(name)}: {escape(reason)}",
+                      highlight=False)
+
+
+def _refuse(message: str) -> typer.Exit:
+    typer.echo(f"error: {message}", err=True)
+    return typer.Exit(1)
+
+
+def command(
+    folder: Annotated[Path, typer.Argument(help="Campaign folder holding the machine exports.")],
+    to_stdout: Annotated[bool, typer.Option(
+        "--print", help="Print the draft instead of writing FOLDER/campaign.toml.")] = False,
+    as_json: Annotated[bool, typer.Option(
+        "--json", help="Print what was detected as JSON (for programs).")] = False,
+    debug: Annotated[bool, typer.Option("--debug", help="Show the traceback of an error.")] = False,
+) -> None:
+    """Draft FOLDER/campaign.toml from the exports in FOLDER, for you to complete."""
+    if to_stdout and as_json:
+        raise typer.BadParameter("give --print or --json, not both")
+    if not folder.is_dir():
+        raise _refuse(f"{folder} is not a folder")
+    target = folder / RUN_SHEET_NAME
+    if target.exists() and not to_stdout:
+        raise _refuse(f"{target} exists: init never overwrites a run sheet (use --print to "
+                      "see the draft, or move the file away)")
+    runs, skipped = draft_runs(folder, debug=debug)
+    if not runs:
+        for name, reason in skipped:
+            typer.echo(f"skipped {name}: {reason}", err=True)
+        raise _refuse(f"no file in {folder} could be read as a machine export")
+    text = render(folder, runs, skipped)
+    if to_stdout:
+        typer.echo(text, nl=False)
+        return
+    from pipeline.store.netcdf import write_text_atomic
+
+    write_text_atomic(text, target)
+    if as_json:
+        document = {"campaign": folder.as_posix(), "run_sheet": target.as_posix(),
+                    "runs": [run_json(run) for run in runs],
+                    "skipped": [{"file": name, "reason": reason} for name, reason in skipped]}
+        print(json.dumps(_plain(document), indent=2, ensure_ascii=False))
+        return
+    _show(runs, skipped)
+    console.print(f"wrote {escape(str(target))}", highlight=False)
+    console.print(f"next: fill in the TODOs, then chainbench validate {escape(str(folder))}",
+                  highlight=False)

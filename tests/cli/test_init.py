@@ -1,0 +1,243 @@
+"""``chainbench init``: a draft run sheet from the exports in a folder."""
+
+from __future__ import annotations
+
+import json
+import shutil
+import tomllib
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from pipeline.cli import app
+from pipeline.cli.init import natural_key, safe_name, toml_string, unique_name
+from pipeline.runsheet import load_run_sheet
+
+runner = CliRunner()
+
+ASCHEN = "AschenPhoenix__Simulation_mit_Python__Specimen_RawData_1"
+CCFATIGUE = "EPFL-ENAC__CCFatiguePlatform__TST_2021-10_FA_22"
+YADBOR = "yadbor__bluer__Specimen_RawData_6"
+
+LOAD = [min(i % 10, 10 - i % 10) for i in range(60)]  # 6 load/unload cycles, 0 -> 5 -> 0 kN
+PLAIN = "time [s],force [kN],gauge1 [mm],gauge2 [mm]\n" + "".join(
+    f"{i / 10},{load},{load / 100},{load / 90}\n" for i, load in enumerate(LOAD)
+)
+#: Names with a quote, a backslash and non-ASCII letters (European CSV, quoted header cell).
+ODD_NAMES = ("Zeit", 'Siła "A"', "Odkształcenie 1", "Weg\\2")
+ODD = 'Zeit [s];"Siła ""A"" [kN]";Odkształcenie 1 [%];Weg\\2 [mm]\n' + "".join(
+    f"{i / 10:.1f};{load};{load / 100:.3f};{load / 90:.4f}\n".replace(".", ",")
+    for i, load in enumerate(LOAD)
+)
+
+
+@pytest.fixture
+def realdata_campaign(realdata, tmp_path) -> Path:
+    """A campaign folder in `tmp_path` holding copies of every real export (never the
+    repository: the exports are not ours to commit)."""
+    folder = tmp_path / "realdata"
+    folder.mkdir()
+    for path in realdata.iterdir():
+        if path.is_file() and path.name != "README.md":
+            shutil.copy2(path, folder / path.name)
+    return folder
+
+
+def init(*arguments: str):
+    return runner.invoke(app, ["init", *arguments])
+
+
+def fill_in(sheet: Path) -> None:
+    """Replace the placeholders of a realdata draft as a technician would."""
+    text = sheet.read_text(encoding="utf-8")
+    # 18x64's geometry without its catalogue preload (1000 kgf): the real specimens are
+    # coupons loaded to a few kN, below any chain preload
+    for key, value in (("d_mm", 18), ("t_mm", 64), ("R0_mm", 20), ("a_mm", 42)):
+        text = text.replace(f"\n# {key} = ...\n", f"\n{key} = {value}\n")
+    text = text.replace("# gauge_length_mm = ...  # TODO: the length the gauges measure over",
+                        "gauge_length_mm = 50")
+    text = text.replace('units = {force = "TODO", gauges = "TODO"}',
+                        'units = {force = "kN", gauges = "mm"}')
+    sheet.write_text(text, encoding="utf-8")
+
+
+@pytest.mark.realdata
+def test_realdata_draft_has_one_run_per_file(realdata_campaign):
+    result = init(str(realdata_campaign))
+    assert result.exit_code == 0, result.output
+    assert "chainbench validate" in result.stdout
+    sheet = load_run_sheet(realdata_campaign)
+    assert sheet.invalid_runs == []
+    assert sheet.campaign.id == "realdata"
+    assert sorted(run.file for run in sheet.runs) == sorted(
+        path.name for path in realdata_campaign.iterdir() if path.name != "campaign.toml")
+    runs = {run.id: run for run in sheet.runs}
+    aschen = runs[ASCHEN]
+    assert (aschen.kind, aschen.chain, aschen.specimen, aschen.cycles) == (
+        "tensile", "chain1", ASCHEN, 1)
+    assert aschen.columns.force == "Last" and aschen.columns.time == "Zeit"
+    assert {"Traversenweg", "Dehnung 1"} <= set(aschen.columns.gauges)
+    assert aschen.units.gauges is None  # mm and %: the file's own units are used
+    assert runs[YADBOR].cycles == 3 and runs[YADBOR].columns.force == "Load"
+    assert (runs[CCFATIGUE].units.force, runs[CCFATIGUE].units.gauges) == ("TODO", "TODO")
+    assert all(run.gauge_length_mm is None for run in sheet.runs)
+
+
+@pytest.mark.realdata
+def test_realdata_draft_comments(realdata_campaign):
+    text = init("--print", str(realdata_campaign)).stdout
+    assert '# TODO: fill in the chain (catalog = "18x64", or d_mm, t_mm, R0_mm, a_mm)' in text
+    assert ('# gauge channels: "Traversenweg" crosshead (length); "Dehnung 1" extensometer '
+            "(strain)") in text
+    assert '# chainbench prefers "Dehnung 1" (extensometer;' in text
+    assert "# detected: layout mts, encoding latin-1, delimiter tab" in text
+    assert "# TODO: the file gives no unit for force, gauges" in text
+    assert all(len(line) <= 120 for line in text.splitlines()
+               if line.startswith("#") and "chainbench validate" not in line)
+
+
+@pytest.mark.realdata
+def test_realdata_draft_validates_once_filled_in(realdata_campaign):
+    assert init(str(realdata_campaign)).exit_code == 0
+    assert runner.invoke(app, ["validate", str(realdata_campaign)]).exit_code == 1
+    fill_in(realdata_campaign / "campaign.toml")
+    result = runner.invoke(app, ["validate", str(realdata_campaign)])
+    assert result.exit_code == 0, result.output
+    assert "5 runs, 0 problems" in " ".join(result.output.split())
+
+
+def test_never_overwrites(tmp_path):
+    (tmp_path / "t.csv").write_text(PLAIN)
+    (tmp_path / "campaign.toml").write_text("# mine\n")
+    result = init(str(tmp_path))
+    assert result.exit_code == 1
+    assert "exists" in result.stderr and "never overwrites" in result.stderr
+    assert (tmp_path / "campaign.toml").read_text() == "# mine\n"
+
+
+def test_print_writes_nothing_and_is_allowed_over_a_sheet(tmp_path):
+    (tmp_path / "t.csv").write_text(PLAIN)
+    (tmp_path / "campaign.toml").write_text("# mine\n")
+    result = init("--print", str(tmp_path))
+    assert result.exit_code == 0, result.output
+    draft = tomllib.loads(result.stdout)
+    assert draft["runs"] == [{
+        "id": "t", "kind": "tensile", "file": "t.csv", "chain": "chain1", "specimen": "t",
+        "cycles": 6, "columns": {"time": "time", "force": "force", "gauges": ["gauge1", "gauge2"]},
+        "units": {"time": "s", "force": "kN", "gauges": "mm"},
+    }]
+    assert draft["chains"] == {"chain1": {}}
+    assert (tmp_path / "campaign.toml").read_text() == "# mine\n"
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["campaign.toml", "t.csv"]
+
+
+def test_odd_column_names_round_trip(tmp_path):
+    (tmp_path / "odd.csv").write_text(ODD, encoding="utf-8")
+    assert init(str(tmp_path)).exit_code == 0
+    raw = (tmp_path / "campaign.toml").read_bytes()
+    run = tomllib.loads(raw.decode("utf-8"))["runs"][0]
+    assert [run["columns"]["time"], run["columns"]["force"], *run["columns"]["gauges"]] == list(
+        ODD_NAMES)
+    text = raw.decode("utf-8")
+    text = text.replace("# gauge_length_mm = ...  # TODO: the length the gauges measure over",
+                        "gauge_length_mm = 500").replace('# catalog = "..."', 'catalog = "13x50"')
+    (tmp_path / "campaign.toml").write_text(text, encoding="utf-8")
+    sheet = load_run_sheet(tmp_path)
+    from pipeline.runs import read_run
+
+    _, metadata = read_run(sheet, sheet.runs[0])
+    assert {column.name: column.role for column in metadata.columns} == {
+        "Zeit": "time", 'Siła "A"': "force", "Odkształcenie 1": "strain_1", "Weg\\2": "gauge_1"}
+
+
+@pytest.mark.parametrize("text", ['Siła "A"', "back\\slash", "tab\there", "line\nbreak",
+                                  "bell\x07 del\x7f", "Odkształcenie 1", "µm/m ≥ 0 🙂"])
+def test_toml_string_reads_back_exactly(text):
+    assert tomllib.loads(f"name = {toml_string(text)}\n")["name"] == text
+
+
+def test_skips_what_is_no_export(tmp_path):
+    (tmp_path / "run2.csv").write_text(PLAIN)
+    (tmp_path / "run10.csv").write_text(PLAIN)
+    (tmp_path / "run 2.csv").write_text(PLAIN)
+    (tmp_path / "notes.txt").write_text("nothing to read here\n")
+    (tmp_path / "empty.csv").write_bytes(b"")
+    (tmp_path / ".hidden.csv").write_text(PLAIN)
+    (tmp_path / "truth.json").write_text("{}")
+    (tmp_path / "photos").mkdir()
+    result = init("--json", str(tmp_path))
+    assert result.exit_code == 0, result.output
+    document = json.loads(result.stdout)
+    assert [(run["file"], run["id"]) for run in document["runs"]] == [
+        ("run2.csv", "run2"), ("run10.csv", "run10"), ("run 2.csv", "run_2")]
+    assert sorted(item["file"] for item in document["skipped"]) == [
+        "empty.csv", "notes.txt", "photos"]
+    sheet = load_run_sheet(tmp_path)
+    assert [run.id for run in sheet.runs] == ["run2", "run10", "run_2"]
+    text = (tmp_path / "campaign.toml").read_text(encoding="utf-8")
+    assert "# skipped empty.csv: " in text and "# skipped notes.txt: " in text
+
+
+def test_no_readable_file_exits_1(tmp_path):
+    (tmp_path / "notes.txt").write_text("nothing to read here\n")
+    result = init(str(tmp_path))
+    assert result.exit_code == 1
+    assert "no file" in result.stderr and "skipped notes.txt" in result.stderr
+    assert not (tmp_path / "campaign.toml").exists()
+
+
+def test_engagement_log_is_guessed(tmp_path):
+    rows = "".join(f"{i / 5000},{20000 + (i % 50) * 100},{i / 1000}\n" for i in range(2000))
+    (tmp_path / "E6.csv").write_text("time [s],force [N],angle [rad]\n" + rows)
+    text = init("--print", str(tmp_path)).stdout
+    assert 'kind = "engagement"  # guessed: time and force at 5000 Hz and no gauge' in text
+    assert "# [wheels.wheel1]" in text and '# wheel = "wheel1"' in text
+    draft = tomllib.loads(text)
+    assert draft["runs"][0]["columns"] == {"time": "time", "force": "force", "angle": "angle"}
+    assert "cycles" not in draft["runs"][0]
+
+
+def test_ids_and_order():
+    assert safe_name("TST 2021/10 (FA) #22", "run") == "TST_2021_10_FA_22"
+    assert safe_name("...", "run") == "run"
+    taken: set[str] = set()
+    assert [unique_name(name, taken) for name in ("a", "a", "a")] == ["a", "a-2", "a-3"]
+    assert sorted(["s10.csv", "s9.csv", "S1.csv"], key=natural_key) == [
+        "S1.csv", "s9.csv", "s10.csv"]
+
+
+def test_tdms_time_from_the_waveform_is_left_to_auto_detection(tmp_path):
+    demo = Path(__file__).resolve().parents[2] / "raw" / "engagement-demo" / "E6-20-10.tdms"
+    if not demo.is_file():
+        pytest.skip("the engagement demo campaign is absent")
+    shutil.copy2(demo, tmp_path / demo.name)
+    text = init("--print", str(tmp_path)).stdout
+    run = tomllib.loads(text)["runs"][0]
+    assert (run["kind"], "columns" in run) == ("engagement", False)
+    assert "# columns and units left to auto-detection: naming them failed" in text
+
+
+def test_equal_safe_ids_are_made_unique(tmp_path):
+    (tmp_path / "a b.csv").write_text(PLAIN)
+    (tmp_path / "a_b.csv").write_text(PLAIN)
+    assert init(str(tmp_path)).exit_code == 0
+    sheet = load_run_sheet(tmp_path)
+    assert [(run.file, run.id) for run in sheet.runs] == [("a b.csv", "a_b"),
+                                                          ("a_b.csv", "a_b-2")]
+
+
+def test_link_leading_out_is_skipped(tmp_path):
+    outside = tmp_path / "outside.csv"
+    outside.write_text(PLAIN)
+    campaign = tmp_path / "campaign"
+    campaign.mkdir()
+    (campaign / "t.csv").write_text(PLAIN)
+    try:
+        (campaign / "link.csv").symlink_to(outside)
+    except OSError:
+        pytest.skip("this system cannot make symbolic links")
+    document = json.loads(init("--json", str(campaign)).stdout)
+    assert [run["file"] for run in document["runs"]] == ["t.csv"]
+    assert document["skipped"] == [
+        {"file": "link.csv", "reason": "a link leading out of the campaign folder"}]
