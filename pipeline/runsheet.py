@@ -141,11 +141,12 @@ class ColumnMap(_Strict):
 
 
 class UnitMap(_Strict):
-    """Roles -> units, for files whose header carries none."""
+    """Roles -> units, for files whose header carries none (``gauges``: one for all, or
+    one per gauge column)."""
 
     time: str | None = None
     force: str | None = None
-    gauges: str | None = None
+    gauges: str | list[str] | None = None
     angle: str | None = None
 
 

@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import numpy as np
 import typer
+from rich.markup import escape
 from rich.table import Table
 
 from pipeline.cli._output import _plain, console
@@ -76,7 +77,7 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
         "rows": metadata.rows,
         "columns": [
             {"name": column.name, "role": column.role, "unit": column.unit,
-             "si_unit": column.si_unit}
+             "si_unit": column.si_unit, "kind": column.kind}
             for column in metadata.columns
         ],
         "cycles": cycles if cycles is not None else counted,
@@ -96,14 +97,14 @@ def _show(report: dict) -> None:
             console.print(f"  {key:<15}{shown.get(value, value) if key == 'delimiter' else value}",
                           markup=False, highlight=False)
     table = Table(title="columns")
-    for heading in ("name", "role", "unit", "si_unit"):
+    for heading in ("name", "role", "unit", "si_unit", "kind"):
         table.add_column(heading)
     for column in report["columns"]:
-        table.add_row(*(str(column[key]) if column[key] is not None else "-"
-                        for key in ("name", "role", "unit", "si_unit")))
+        table.add_row(*(escape(str(column[key])) if column[key] is not None else "-"
+                        for key in ("name", "role", "unit", "si_unit", "kind")))
     console.print(table)
     for warning in report["warnings"]:
-        console.print(f"[yellow]warning:[/yellow] {warning}", highlight=False)
+        console.print(f"[yellow]warning:[/yellow] {escape(warning)}", highlight=False)
 
 
 def command(

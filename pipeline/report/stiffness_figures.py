@@ -106,10 +106,11 @@ def force_strain(run: xr.Dataset) -> Figure:
         ax = figure.subplots()
         strain, force = run["strain"].values / PER_MILLE, run["force"].values / KN
         cycles = run["sample_cycle"].values
+        pull = "single_pull" in run and bool(int(run["single_pull"]))
         for cycle in np.unique(cycles):
             index = np.flatnonzero(cycles == cycle)[::_stride(int(np.sum(cycles == cycle)))]
             ax.plot(strain[index], force[index], color=_cycle_colour(int(cycle)), lw=1.0,
-                    label=_cycle_label(int(cycle)))
+                    label="single pull" if pull and cycle == 1 else _cycle_label(int(cycle)))
         for _cycle, branch, e0, intercept, low, high in _fits(run):
             forces = np.array([low, high])
             ax.plot((forces - intercept) / e0 / PER_MILLE, forces / KN, color="black", lw=1.4,
@@ -195,8 +196,9 @@ def _chain_panel(ax, summary: xr.Dataset, chain: str, runs: Sequence[xr.Dataset]
     if np.isfinite(mean):
         ax.axhspan(float(row["E0_exp_ci_low"]) / KN, float(row["E0_exp_ci_high"]) / KN,
                    color="C0", alpha=0.25, lw=0, label="95 % interval of the chain mean")
-        ax.axhline(mean / KN, color="C0", lw=1.4, label="chain mean (cycles 2..n)")
+        ax.axhline(mean / KN, color="C0", lw=1.4, label="chain mean of the specimens")
     for position, run in enumerate(runs):
+        pull = "single_pull" in run and bool(int(run["single_pull"]))
         cycles = run["cycle"].values
         offsets = np.linspace(-0.2, 0.2, cycles.size) if cycles.size > 1 else np.zeros(1)
         for offset, cycle in zip(offsets, cycles, strict=True):
@@ -206,6 +208,10 @@ def _chain_panel(ax, summary: xr.Dataset, chain: str, runs: Sequence[xr.Dataset]
                 continue
             error = np.array([[e0 - float(fit["fit_E0_ci_low"])],
                               [float(fit["fit_E0_ci_high"]) - e0]]) / KN
+            if pull:  # its one loading is its E0
+                ax.errorbar(position + offset, e0 / KN, yerr=error, fmt="s", ms=5, capsize=2,
+                            color="C3", label="single pull (its loading)")
+                continue
             ax.errorbar(position + offset, e0 / KN, yerr=error, fmt="o", ms=5, capsize=2,
                         color=_cycle_colour(int(cycle)),
                         mfc="white" if int(cycle) == 1 else _cycle_colour(int(cycle)),

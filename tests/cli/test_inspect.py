@@ -32,7 +32,7 @@ def test_json_document(tmp_path):
     assert (report["layout"], report["delimiter"], report["decimal"], report["rows"]) == (
         "plain_csv", ",", ".", 60)
     assert report["columns"][1] == {"name": "force", "role": "force", "unit": "kN",
-                                    "si_unit": "N"}
+                                    "si_unit": "N", "kind": None}
     assert report["cycles"] == 6 and report["machine_cycles"] is None
     assert report["warnings"] == []
 
@@ -87,7 +87,8 @@ def test_bluehill_has_three_cycles(realdata):
 def test_ccfatigue_without_units(realdata):
     report = inspect_json(str(realdata / "EPFL-ENAC__CCFatiguePlatform__TST_2021-10_FA_22.csv"))
     load = next(c for c in report["columns"] if c["name"] == "Machine_Load")
-    assert load == {"name": "Machine_Load", "role": "force", "unit": None, "si_unit": None}
+    assert load == {"name": "Machine_Load", "role": "force", "unit": None, "si_unit": None,
+                    "kind": None}
     assert any("Machine_Load" in w and "run sheet" in w for w in report["warnings"])
     assert report["machine_cycles"] == 373
 
