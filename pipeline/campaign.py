@@ -291,8 +291,16 @@ def _write_summary(summary: xr.Dataset, output: Path) -> None:
     for dim, name in (("chain", "summary.csv"), ("specimen", "specimens.csv"),
                       ("operating_point", "impact_summary.csv")):
         if summary.sizes.get(dim, 0):
-            csv = summary_table(summary, dim).to_csv(float_format="%.6g")
+            table = summary_table(summary, dim)
+            table.columns = [_with_unit(column, summary[column].attrs.get("units"))
+                             for column in table.columns]
+            csv = table.to_csv(float_format="%.6g")
             write_text_atomic(csv, output / name)
+
+
+def _with_unit(name: str, units: str | None) -> str:
+    """A CSV column heading: the variable's name and its unit (``E0_exp [N]``)."""
+    return f"{name} [{units}]" if units else name
 
 
 def _summary_is_current(output: Path, key: str) -> bool:

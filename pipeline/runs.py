@@ -14,6 +14,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import xarray as xr
 
@@ -130,9 +131,10 @@ def condition_tensile_run(sheet: RunSheet, run: RunDef, table: pd.DataFrame,
     channels = {column.role: column for column in metadata.columns
                 if column.kind is not None}
     gauge_length = to_si(run.gauge_length_mm, "mm") if run.gauge_length_mm else None
+    preload, note = _preload(sheet, run, table)
     try:
-        return condition_tensile(
-            table, gauge_length, preload=sheet.chains[run.chain].si()["preload"],
+        conditioned = condition_tensile(
+            table, gauge_length, preload=preload,
             n_cycles=run.cycles, kinds={name: info.kind for name, info in channels.items()},
             columns={name: info.name for name, info in channels.items()},
             average=run.average_gauges)
@@ -140,6 +142,28 @@ def condition_tensile_run(sheet: RunSheet, run: RunDef, table: pd.DataFrame,
         if "gauge length" in error.message:
             error.file, error.column = str(sheet.path), f"{run.id}.gauge_length_mm"
         raise
+    conditioned.warnings.extend(note)
+    return conditioned
+
+
+def _preload(sheet: RunSheet, run: RunDef, table: pd.DataFrame) -> tuple[float | None, list]:
+    """The preload [N] a cyclic run is segmented with, and a warning when one is set aside.
+
+    A single pull has none. The run sheet's ``preload_kgf`` always holds; the
+    catalogue's (the lower force of Paper 001's cyclic programme for that chain)
+    only where the log rises above it: a log that never does was not run to that
+    programme, and is said so.
+    """
+    chain = sheet.chains[run.chain]
+    preload = chain.si()["preload"]
+    if run.cycles == 1 or preload is None:
+        return None, []
+    peak = float(np.nanmax(np.abs(table["force"].to_numpy()))) if "force" in table else 0.0
+    if chain.preload_kgf is not None or peak > preload:
+        return preload, []
+    return None, [f"the catalogue's preload of chain {chain.catalog} ({preload / 1e3:.4g} kN) "
+                  f"is above this log's largest force ({peak / 1e3:.4g} kN): not used; set "
+                  "preload_kgf for the chain if the test had one"]
 
 
 def chain_stiffness_for(sheet: RunSheet, run: RunDef, output: Path) -> float:

@@ -72,7 +72,7 @@ def test_good_runs_processed_bad_runs_listed(campaign, tmp_path):
     assert float(summary["E0_exp"].sel(chain="c18x64")) == pytest.approx(true_mean, rel=5e-3)
     assert list(summary["failed_run"].values) == ["runs[4]", "T18-empty"]
     csv = (tmp_path / "out" / "summary.csv").read_text().splitlines()
-    assert csv[0].startswith("chain,E0_exp,")
+    assert csv[0].startswith("chain,E0_exp [N],E0_exp_ci_low [N],")
     assert csv[1].startswith("c18x64,")
 
 

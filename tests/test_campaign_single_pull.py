@@ -134,3 +134,30 @@ def test_two_gauges_of_one_kind_that_disagree_are_not_averaged(tmp_path):
     assert run["channel_used"].values.tolist() == [1, 0]
     assert float(run["specimen_E0"]) == pytest.approx(truth.E0, rel=0.01)
     assert any("disagrees beyond 20 %" in warning for warning in warnings)
+
+
+@pytest.mark.realdata
+def test_catalogue_preload_above_a_small_specimen_is_set_aside_with_a_warning(realdata,
+                                                                              tmp_path):
+    """yadbor's Bluehill export peaks at 53 N; chain 18x64's catalogue preload is 9.8 kN."""
+    name = "yadbor__bluer__Specimen_RawData_6.csv"
+    folder = tmp_path / "small"
+    folder.mkdir()
+    shutil.copy(realdata / name, folder / name)
+    (folder / "campaign.toml").write_text(textwrap.dedent(f"""\
+        [campaign]
+        id = "small"
+        [chains.c]
+        catalog = "18x64"
+        [[runs]]
+        id = "P1"
+        kind = "tensile"
+        file = "{name}"
+        chain = "c"
+        cycles = 3
+        gauge_length_mm = 50
+        """), encoding="utf-8")
+    run, warnings = processed(folder, tmp_path)
+    assert int(run["specimen_n_cycles"]) == 2  # cycles 2 and 3 counted
+    assert any("catalogue's preload of chain 18x64 (9.807 kN)" in warning
+               for warning in warnings)
