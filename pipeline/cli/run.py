@@ -106,41 +106,57 @@ def _impact_table(summary) -> Table:
 _VERDICT_TEXT = {1: "pass", 0: "FAIL", -1: "not measured"}
 
 
-#: Short names of the acceptance checks in the specimen table.
+#: Short names of the acceptance checks in the acceptance table.
 _CHECK_SHORT = {"proof_force": "proof", "breaking_force": "F_break",
                 "elongation_at_proof": "A_proof", "elongation_at_fracture": "A_frac"}
 
 
-def _verdicts(row, prefix: str, short: bool = False) -> str:
-    """The declared checks of a specimen or chain row, as ``name: verdict`` text."""
+def _verdicts(row, prefix: str) -> str:
+    """The declared checks of a chain row, as ``name: verdict`` text."""
     from pipeline.acceptance import CHECKS
 
-    found = [f"{_CHECK_SHORT[check] if short else check.replace('_', ' ')}"
-             f"{' ' if short else ': '}{_VERDICT_TEXT[int(row[prefix + check])]}"
+    found = [f"{check.replace('_', ' ')}: {_VERDICT_TEXT[int(row[prefix + check])]}"
              for check in CHECKS if int(row[prefix + check]) in _VERDICT_TEXT]
-    return (", " if short else "; ").join(found) or "-"
+    return "; ".join(found) or "-"
 
 
 def _specimen_table(summary) -> Table:
-    table = Table(title="tensile specimens (forces in kN, elongations in % of the gauge "
+    table = Table(title="tensile specimens (forces in kN, elongations A in % of the gauge "
                   "length)")
     for column in ("run", "E0 [kN]", "F_max [kN]", "A at F_max [%]", "A at fracture [%]",
-                   "F_yield [kN]", "A at proof [%]", "set [%]", "checks"):
+                   "F_yield [kN]", "A at proof [%]", "set [%]"):
         table.add_column(escape(column), justify="right")
     for run_id in summary["specimen"].values:
         row = summary.sel(specimen=run_id)
         table.add_row(
-            escape(str(run_id)) + (" (pull)" if int(row["specimen_single_pull"]) else ""),
+            escape(str(run_id)) + ("*" if int(row["specimen_single_pull"]) else ""),
             _fmt(float(row["specimen_E0"]), 1e3, 5),
-            *(_fmt(float(row[f"specimen_{name}"]), 1e3, 4)
-              for name in ("max_force",)),
+            _fmt(float(row["specimen_max_force"]), 1e3, 4),
             *(_fmt(100 * float(row[f"specimen_{name}"]), 1, 3)
               for name in ("strain_at_max_force", "strain_at_fracture")),
             _fmt(float(row["specimen_yield_force"]), 1e3, 4),
             *(_fmt(100 * float(row[f"specimen_{name}"]), 1, 3)
               for name in ("strain_at_proof", "permanent_strain_after_proof")),
-            escape(_verdicts(row, "specimen_accept_", short=True)),
         )
+    table.caption = "* single pull: E0 from its one loading; - not reached or not measured"
+    return table
+
+
+def _acceptance_table(summary) -> Table | None:
+    """Verdict of every declared check per specimen, or None when no chain declares one."""
+    from pipeline.acceptance import CHECKS
+
+    declared = [check for check in CHECKS
+                if any(int(value) in _VERDICT_TEXT for value in summary[f"accept_{check}"].values)]
+    if not declared:
+        return None
+    table = Table(title="acceptance checks the chains declare")
+    for column in ("run", *(_CHECK_SHORT[check] for check in declared)):
+        table.add_column(column, justify="right")
+    for run_id in summary["specimen"].values:
+        row = summary.sel(specimen=run_id)
+        table.add_row(escape(str(run_id)), *(
+            _VERDICT_TEXT.get(int(row[f"specimen_accept_{check}"]), "-") for check in declared))
     return table
 
 
@@ -159,6 +175,9 @@ def _print_result(result: CampaignResult) -> None:
         console.print(_chain_table(summary))
     if _shows_specimens(summary):
         console.print(_specimen_table(summary))
+        acceptance = _acceptance_table(summary)
+        if acceptance is not None:
+            console.print(acceptance)
         for chain in summary["chain"].values:
             verdicts = _verdicts(summary.sel(chain=chain), "accept_")
             if verdicts != "-":
