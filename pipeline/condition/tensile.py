@@ -78,6 +78,10 @@ class TensileRun:
         :mod:`pipeline.condition.channels`), ``used`` (bool), ``removed_at``
         (position of the first unusable sample, -1 when usable throughout) and
         ``removal`` (why: ``"runs backwards"``, ``"jumps"``, ``"freezes"`` or "").
+    channel_strains : pandas.DataFrame
+        Strain [1] of each channel that can give one (index as ``samples``): a
+        strain as read, an elongation over the gauge length; NaN from where the
+        channel stopped following the specimen, and after a fracture.
     fracture : int or None
         Position of the last sample before fracture; None when it did not break.
     single_pull : bool
@@ -93,6 +97,7 @@ class TensileRun:
     gauge_disagreement: float
     segmentation: Segmentation
     channels: pd.DataFrame
+    channel_strains: pd.DataFrame
     fracture: int | None = None
     single_pull: bool = False
     warnings: list[str] = field(default_factory=list)
@@ -409,6 +414,7 @@ def condition_tensile(
         gauge_disagreement=disagreement,
         segmentation=segmentation,
         channels=channel_table,
+        channel_strains=pd.DataFrame(strains, index=samples.index),
         fracture=fracture,
         single_pull=single_pull,
         warnings=warnings,

@@ -63,13 +63,9 @@ def _fallback_strains(run: TensileRun) -> list[tuple[str, np.ndarray]]:
     found = []
     for kind in PREFERENCE:
         for name, channel in run.channels.iterrows():
-            if channel["used"] or channel["kind"] != kind:
+            if channel["used"] or channel["kind"] != kind or name not in run.channel_strains:
                 continue
-            values = run.samples[name].to_numpy(dtype=float)
-            strain = values.copy() if name.startswith("strain_") else values / run.gauge_length
-            if channel["removed_at"] >= 0:
-                strain[int(channel["removed_at"]):] = np.nan
-            found.append((str(channel["column"]), strain))
+            found.append((str(channel["column"]), run.channel_strains[name].to_numpy()))
     return found
 
 
