@@ -1,0 +1,52 @@
+"""The names of the files a campaign's output folder holds.
+
+``processed/<campaign id>/`` holds one netCDF file per run (``<run id>.nc``)
+beside the campaign outputs below. A run id therefore must not name a campaign
+output (in any letter case: Windows and macOS file systems ignore case), nor a
+device name that Windows refuses as a file name (``CON``, ``NUL``, ``COM1``...).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+SUMMARY = "summary.nc"  #: the campaign summary dataset
+CHAIN_TABLE = "summary.csv"  #: one row per chain
+SPECIMEN_TABLE = "specimens.csv"  #: one row per tensile specimen
+IMPACT_TABLE = "impact_summary.csv"  #: one row per engagement operating point
+REPORT = "report.html"  #: the campaign report
+LOCK = ".lock"  #: held while a process writes the folder
+
+#: Every campaign-level output of a processed folder.
+CAMPAIGN_OUTPUTS = (SUMMARY, CHAIN_TABLE, SPECIMEN_TABLE, IMPACT_TABLE, REPORT)
+
+#: File names Windows reserves for devices, with or without an extension.
+WINDOWS_DEVICE_NAMES = frozenset(
+    {"con", "prn", "aux", "nul"}
+    | {f"com{digit}" for digit in range(10)}
+    | {f"lpt{digit}" for digit in range(10)}
+)
+
+
+def run_output(output: Path, run_id: str) -> Path:
+    """The netCDF file of run `run_id` in the output folder `output`."""
+    return Path(output) / f"{run_id}.nc"
+
+
+def reserved_id_reason(run_id: str) -> str | None:
+    """Why `run_id` cannot name a run's output file, or None when it can.
+
+    >>> reserved_id_reason("Summary")
+    "'Summary' names a campaign output (summary.nc, summary.csv)"
+    >>> reserved_id_reason("pull-01") is None
+    True
+    """
+    stem = run_id.split(".")[0].casefold()
+    taken = [name for name in CAMPAIGN_OUTPUTS if name.split(".")[0] == run_id.casefold()]
+    if taken:
+        return f"{run_id!r} names a campaign output ({', '.join(taken)})"
+    if stem in WINDOWS_DEVICE_NAMES:
+        return f"{run_id!r} is a device name Windows refuses as a file name"
+    if run_id.endswith("."):
+        return f"{run_id!r} ends in '.', which Windows drops from file names"
+    return None
