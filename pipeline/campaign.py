@@ -4,17 +4,22 @@
 -> per run (:mod:`pipeline.runs`): ingest -> condition -> fit -> one netCDF file
 -> compare (:mod:`pipeline.compare`) -> ``summary.nc``, CSV tables (``summary.csv``
    per chain, ``specimens.csv`` per tensile specimen, ``impact_summary.csv``)
--> report (:mod:`pipeline.report`) -> ``processed/<campaign>/report.html``.
+-> report (:mod:`pipeline.report`) -> ``report.html``,
+all in ``<project>/processed/<campaign id>/`` (``raw/`` is only read).
 
 * One bad run does not stop a campaign: its error is recorded, the other runs
-  are processed, and the summary lists the failures. ``raw/`` is only read.
-* Incremental: a run is redone only when its input key changes (the raw file's
+  are processed, and the summary lists the failures.
+* Incremental: a run is redone only when its input key changes: the raw file's
   SHA-256, its run-sheet entry, its chain and wheel definitions, the stiffness
-  it uses and the chainbench version); the summary and report only when one of
-  their inputs does. ``force=True`` redoes everything.
+  it uses, the campaign fields its dataset records, and the fingerprint of the
+  code (:mod:`pipeline.store.fingerprint`). The summary, tables and report are
+  rebuilt when the key of all their inputs differs from the one in the
+  folder's manifest. ``force=True`` redoes everything. Run files the run sheet
+  no longer yields (renamed, removed or now failing runs) are deleted.
 * Safe: every output is written to a temporary file and renamed; one process
-  at a time writes a campaign's outputs (:mod:`pipeline.store.lock`); a run
-  interrupted at any point is completed by the next.
+  at a time writes a campaign's outputs (:mod:`pipeline.store.lock`); the
+  manifest is removed before the campaign outputs are rewritten and written
+  after the last, so a run interrupted at any point is completed by the next.
 * Scale-out: with a dask.distributed ``client``, each run is a task.
 """
 
@@ -29,10 +34,9 @@ from typing import TYPE_CHECKING
 import pandas as pd
 import xarray as xr
 
-from pipeline import __version__
 from pipeline.acceptance import limits_si
 from pipeline.compare import ChainInput, impact_summary, specimen_summary, stiffness_summary
-from pipeline.errors import ChainbenchError, FitError, IngestError
+from pipeline.errors import ChainbenchError, FitError, IngestError, OutputError
 from pipeline.fit.impact_model import ImpactModelFit, fit_impact_model
 from pipeline.fit.stiffness import SpecimenStiffness
 from pipeline.report.build import build_report
@@ -44,7 +48,9 @@ from pipeline.runs import (
     process_tensile_run,
 )
 from pipeline.runsheet import RunDef, RunSheet, load_run_sheet
+from pipeline.store import layout
 from pipeline.store.engagement import measured_point
+from pipeline.store.fingerprint import code_fingerprint
 from pipeline.store.lock import campaign_lock, remove_stale_temporaries
 from pipeline.store.netcdf import (
     provenance_attrs,
@@ -61,6 +67,13 @@ if TYPE_CHECKING:
 
 #: Name of the attribute holding the key of the inputs a file was made from.
 INPUT_KEY = "input_key"
+#: The folder holding the campaigns' raw files, and the one holding their outputs.
+RAW_FOLDER, PROCESSED_FOLDER = "raw", "processed"
+#: The ``[campaign]`` fields a run's dataset records (its provenance): the only ones in
+#: a run's input key, so that editing the title or the band redoes no run.
+RUN_CAMPAIGN_FIELDS = {"id", "machine", "synthetic"}
+#: How a text cell that a spreadsheet would run as a formula begins.
+FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
 
 
 @dataclass(frozen=True)
@@ -90,6 +103,7 @@ class CampaignResult:
     report_error: str | None = None  #: why the report could not be built
     redone: list[str] = field(default_factory=list)  #: runs processed this time
     reused: list[str] = field(default_factory=list)  #: runs whose stored result was current
+    removed: list[str] = field(default_factory=list)  #: stale run files deleted
     warnings: dict[str, list[str]] = field(default_factory=dict)  #: per run
 
     @property
@@ -107,11 +121,35 @@ class _Plan:
     key: str
 
 
-def default_output(campaign_folder: Path) -> Path:
-    """``processed/<campaign>`` beside the ``raw/`` folder holding the campaign."""
-    campaign_folder = Path(campaign_folder).resolve()
-    root = campaign_folder.parent.parent if campaign_folder.parent.name == "raw" else Path.cwd()
-    return root / "processed" / campaign_folder.name
+def project_root(campaign_folder: Path) -> Path:
+    """The project folder of a campaign: the parent of the ``raw/`` folder holding it.
+
+    A campaign outside any ``raw/`` folder belongs to the current folder's
+    project (the current folder, or the parent of the ``raw/`` folder it lies in).
+    """
+    for folder in (Path(campaign_folder).resolve(), Path.cwd().resolve()):
+        for parent in (folder, *folder.parents):
+            if parent.name == RAW_FOLDER:
+                return parent.parent
+    return Path.cwd().resolve()
+
+
+def default_output(campaign: RunSheet | str | Path) -> Path:
+    """``<project>/processed/<campaign id>``, however the campaign is named.
+
+    Parameters
+    ----------
+    campaign : RunSheet, str or Path
+        The run sheet, or the campaign folder or run-sheet file (read for its id).
+
+    Examples
+    --------
+    The folder ``.`` inside ``raw/c18``, the folder ``raw/c18`` and the file
+    ``raw/c18/campaign.toml`` all give ``processed/<id>`` beside ``raw/``, where
+    ``<id>`` is ``[campaign] id`` of the run sheet.
+    """
+    sheet = campaign if isinstance(campaign, RunSheet) else load_run_sheet(campaign)
+    return project_root(sheet.folder) / PROCESSED_FOLDER / sheet.campaign.id
 
 
 def _digest(document) -> str:
@@ -130,7 +168,8 @@ def _plan(sheet: RunSheet, run: RunDef, output: Path) -> _Plan:
         "raw_sha256": raw_sha256, "entry": sheet.entries[run.id], "E0": E0,
         "chain": sheet.chains[run.chain].model_dump(mode="json"),
         "wheel": sheet.wheels[run.wheel].model_dump(mode="json") if run.wheel else None,
-        "campaign": sheet.campaign.model_dump(mode="json"), "version": __version__,
+        "campaign": sheet.campaign.model_dump(mode="json", include=RUN_CAMPAIGN_FIELDS),
+        "code": code_fingerprint(),
     })
     return _Plan(run, raw_sha256, E0, key)
 
@@ -153,11 +192,13 @@ def _process(sheet: RunSheet, plan: _Plan, output: Path, progress: Progress | No
     else:
         dataset = process_engagement_run(sheet, plan.run, plan.raw_sha256, plan.E0, progress)
     dataset.attrs[INPUT_KEY] = plan.key
-    return write_atomic(dataset, output / f"{plan.run.id}.nc")
+    return write_atomic(dataset, layout.run_output(output, plan.run.id))
 
 
 def _failure(sheet: RunSheet, run: RunDef, error: Exception, debug: bool) -> RunFailure:
-    if debug and not isinstance(error, ChainbenchError):
+    """`error` of `run` as a recorded failure; an output that cannot be written is no fault
+    of the run: it stops the campaign, before anything stored is touched."""
+    if isinstance(error, OutputError) or (debug and not isinstance(error, ChainbenchError)):
         raise error
     if isinstance(error, ChainbenchError) and error.file is None:
         error.file = str(sheet.run_file(run))  # stages after ingest know no file
@@ -286,16 +327,42 @@ def _summary(sheet: RunSheet, stored: list[str], specimens, rows, points,
     return summary
 
 
-def _write_summary(summary: xr.Dataset, output: Path) -> None:
-    write_atomic(summary, output / "summary.nc")
-    for dim, name in (("chain", "summary.csv"), ("specimen", "specimens.csv"),
-                      ("operating_point", "impact_summary.csv")):
+def _write_summary(summary: xr.Dataset, output: Path) -> list[str]:
+    """Write ``summary.nc`` and its CSV tables; return the names written."""
+    write_atomic(summary, output / layout.SUMMARY)
+    written = [layout.SUMMARY]
+    for dim, name in (("chain", layout.CHAIN_TABLE), ("specimen", layout.SPECIMEN_TABLE),
+                      ("operating_point", layout.IMPACT_TABLE)):
         if summary.sizes.get(dim, 0):
-            table = summary_table(summary, dim)
-            table.columns = [_with_unit(column, summary[column].attrs.get("units"))
-                             for column in table.columns]
-            csv = table.to_csv(float_format="%.6g")
-            write_text_atomic(csv, output / name)
+            write_text_atomic(csv_table(summary, dim), output / name)
+            written.append(name)
+        else:
+            (output / name).unlink(missing_ok=True)  # from an earlier sheet: not current
+    return written
+
+
+def csv_table(summary: xr.Dataset, dim: str) -> str:
+    """The variables of `summary` on `dim` as CSV: headings with units, text made inert.
+
+    A text cell that begins like a spreadsheet formula (``=``, ``+``, ``-``,
+    ``@``, a tab or a carriage return) is written with a leading apostrophe, so
+    that a spreadsheet shows it instead of running it.
+    """
+    table = summary_table(summary, dim)
+    table.columns = [_with_unit(column, summary[column].attrs.get("units"))
+                     for column in table.columns]
+    table.index = table.index.map(_inert)
+    for column in table.columns:
+        if table[column].dtype == object:
+            table[column] = table[column].map(_inert)
+    return table.to_csv(float_format="%.6g")
+
+
+def _inert(value):
+    """`value`, with a leading apostrophe when it is text that a spreadsheet would run."""
+    if isinstance(value, str) and value.startswith(FORMULA_STARTS):
+        return "'" + value
+    return value
 
 
 def _with_unit(name: str, units: str | None) -> str:
@@ -303,10 +370,50 @@ def _with_unit(name: str, units: str | None) -> str:
     return f"{name} [{units}]" if units else name
 
 
-def _summary_is_current(output: Path, key: str) -> bool:
-    found = _stored(output / "summary.nc")
-    return found is not None and found[1].get(INPUT_KEY) == key and (
-        output / "report.html").is_file()
+def _outputs_current(output: Path, key: str) -> bool:
+    """Whether the campaign outputs were all written, completely, from inputs of `key`.
+
+    The manifest (:data:`pipeline.store.layout.MANIFEST`) is removed before any
+    campaign output is rewritten and written after the last one, so a run
+    killed in between leaves no manifest, and the next run rebuilds them all.
+    """
+    try:
+        manifest = json.loads((output / layout.MANIFEST).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return False
+    return (manifest.get(INPUT_KEY) == key
+            and all((output / name).is_file() for name in manifest.get("outputs", [])))
+
+
+def _write_manifest(output: Path, key: str, written: list[str]) -> None:
+    text = json.dumps({INPUT_KEY: key, "outputs": written}, indent=1)
+    write_text_atomic(text, output / layout.MANIFEST)
+
+
+def _remove_stale_runs(output: Path, campaign_id: str, current: set[str]) -> list[str]:
+    """Delete run files of this campaign that the run sheet no longer yields (call under
+    the lock): runs renamed, removed, or failing now. Returns their run ids."""
+    removed = []
+    for path in sorted(output.glob("*.nc")):
+        if path.name == layout.SUMMARY or path.stem in current:
+            continue
+        found = _stored(path)
+        if found is None or found[1].get("campaign") != campaign_id or "run_id" not in found[1]:
+            continue  # not a run file chainbench wrote for this campaign: leave it
+        path.unlink()
+        removed.append(path.stem)
+    return removed
+
+
+def _relative_to_campaign(failure: RunFailure, folder: Path) -> RunFailure:
+    """`failure` with its file named relative to the campaign folder (no home paths in
+    the outputs)."""
+    error = failure.error
+    if isinstance(error, ChainbenchError) and error.file is not None:
+        path = Path(error.file)
+        if path.is_absolute() and path.is_relative_to(folder.resolve()):
+            error.file = path.relative_to(folder.resolve()).as_posix()
+    return failure
 
 
 def process_campaign(
@@ -324,7 +431,8 @@ def process_campaign(
     path : str or Path
         The campaign folder (holding ``campaign.toml``) or the run sheet.
     output : str or Path, optional
-        Output folder; default ``processed/<campaign>`` (see :func:`default_output`).
+        Output folder; default ``<project>/processed/<campaign id>`` (see
+        :func:`default_output`).
     progress : callable, optional
         Called as ``progress(run_id, stage)`` at each stage.
     debug : bool
@@ -339,7 +447,8 @@ def process_campaign(
     CampaignResult
         The summary dataset, the run files, the failures, the report (a report
         that cannot be built is recorded in ``report_error``; the results
-        written before it are kept), and which runs were redone or reused.
+        written before it are kept), and which runs were redone, reused or
+        removed.
 
     Raises
     ------
@@ -347,9 +456,12 @@ def process_campaign(
         When the run sheet as a whole is unusable.
     CampaignBusyError
         When another process is writing the same outputs.
+    OutputError
+        When the outputs cannot be written (the outputs already there are kept).
     """
     sheet = load_run_sheet(path)
-    output = Path(output) if output is not None else default_output(sheet.folder)
+    output = Path(output) if output is not None else default_output(sheet)
+    _check_output_folder(output, sheet)
     with campaign_lock(output):
         remove_stale_temporaries(output)
         failures = [RunFailure(_invalid_run_id(error), error) for error in sheet.invalid_runs]
@@ -359,7 +471,7 @@ def process_campaign(
                 plans[run.id] = _plan(sheet, run, output)
             except Exception as error:
                 failures.append(_failure(sheet, run, error, debug))
-        stored = {run_id: _stored(output / f"{run_id}.nc") for run_id in plans}
+        stored = {run_id: _stored(layout.run_output(output, run_id)) for run_id in plans}
         current = {run_id: found for run_id, found in stored.items()
                    if not force and found is not None and found[1].get(INPUT_KEY) == plans[
                        run_id].key}
@@ -368,32 +480,58 @@ def process_campaign(
             if progress:
                 progress(run_id, "unchanged")
         done, failed = _execute(sheet, todo, output, progress, debug, client)
-        failures += failed
+        failures = [_relative_to_campaign(failure, sheet.folder) for failure in failures + failed]
         current.update({run_id: read_scalars(path) for run_id, path in done.items()})
-        files = {run.id: output / f"{run.id}.nc" for run in sheet.runs if run.id in current}
+        files = {run.id: layout.run_output(output, run.id) for run in sheet.runs
+                 if run.id in current}
+        removed = _remove_stale_runs(output, sheet.campaign.id, set(files))
         specimens, rows, points, run_warnings = _collect(sheet, plans, current)
         key = _digest({"runs": {run_id: plans[run_id].key for run_id in sorted(files)},
                        "failures": [failure.message for failure in failures],
-                       "sheet": sheet.sha256, "version": __version__})
+                       "sheet": sheet.sha256, "code": code_fingerprint()})
         result = CampaignResult(
             sheet.campaign.id, output, xr.Dataset(), files, failures,
-            redone=[plan.run.id for plan in todo],
+            redone=[plan.run.id for plan in todo if plan.run.id in done],
             reused=[run_id for run_id in plans if run_id in current and run_id not in done],
-            warnings=run_warnings)
-        if not force and _summary_is_current(output, key):
-            result.summary = read_dataset(output / "summary.nc")
-            result.report = output / "report.html"
+            removed=removed, warnings=run_warnings)
+        if not force and _outputs_current(output, key):
+            result.summary = read_dataset(output / layout.SUMMARY)
+            result.report = output / layout.REPORT
             return result
+        (output / layout.MANIFEST).unlink(missing_ok=True)  # outputs being rewritten
         result.summary = _summary(sheet, list(files), specimens, rows, points, failures)
         result.summary.attrs[INPUT_KEY] = key
-        _write_summary(result.summary, output)
+        written = _write_summary(result.summary, output)
         try:  # the results are written: a failing report loses nothing but itself
             result.report = build_report(output)
+            written.append(layout.REPORT)
+        except OutputError:
+            raise
         except Exception as error:
             if debug and not isinstance(error, ChainbenchError):
                 raise
             result.report_error = RunFailure("report", error).message
+            (output / layout.REPORT).unlink(missing_ok=True)  # an old report is not current
+        _write_manifest(output, key, written)
     return result
+
+
+def _check_output_folder(output: Path, sheet: RunSheet) -> None:
+    """Refuse an output folder inside ``raw/`` or one that is a file, before writing."""
+    resolved = output.resolve()
+    if any(resolved.is_relative_to(folder) for folder in (
+            sheet.folder.resolve(), project_root(sheet.folder) / RAW_FOLDER)):
+        raise OutputError(
+            "outputs are never written inside raw/", file=output,
+            hint="leave out --output, or give a folder outside raw/")
+    if resolved.exists() and not resolved.is_dir():
+        raise OutputError("the output folder is a file", file=output,
+                          hint="move the file away or give another --output")
+    try:
+        resolved.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise OutputError(f"cannot create the output folder ({error.strerror})", file=output,
+                          hint="check that its parent folder is writable") from None
 
 
 def _invalid_run_id(error: ChainbenchError) -> str:

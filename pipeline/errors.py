@@ -108,3 +108,7 @@ class SignalError(ChainbenchError):
 
 class FitError(ChainbenchError):
     """A model could not be fitted to the data."""
+
+
+class OutputError(ChainbenchError):
+    """An output cannot be written (folder not writable, disk full, a file in the way)."""

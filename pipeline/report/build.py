@@ -41,15 +41,12 @@ from pipeline.errors import ChainbenchError
 from pipeline.fit import stiffness as stiffness_fit
 from pipeline.report import design_figures, impact_figures, stiffness_figures
 from pipeline.report.render import report_style, svg
+from pipeline.store import layout
 from pipeline.store.netcdf import read_dataset, write_text_atomic
 from pipeline.store.tensile import STRENGTH_VARIABLES
 from pipeline.theory.wheel_impact import RYABOV_MASS_SHARE
 from pipeline.units import from_si
 
-#: The campaign summary in a processed folder.
-SUMMARY_NAME = "summary.nc"
-#: The report written beside it.
-REPORT_NAME = "report.html"
 #: The jinja2 template (``pipeline/report/templates``).
 TEMPLATE_NAME = "report.html.j2"
 
@@ -630,7 +627,7 @@ def build_report(output_dir: str | Path, created: datetime | None = None) -> Pat
         When `output_dir` holds no ``summary.nc``.
     """
     output_dir = Path(output_dir)
-    summary_path = output_dir / SUMMARY_NAME
+    summary_path = output_dir / layout.SUMMARY
     if not summary_path.is_file():
         raise ChainbenchError(
             "no processed campaign here (summary.nc is missing)", file=summary_path,
@@ -639,4 +636,4 @@ def build_report(output_dir: str | Path, created: datetime | None = None) -> Pat
     runs = campaign_runs(output_dir, summary)
     context = report_context(summary, runs, created or datetime.now(UTC))
     html = environment().get_template(TEMPLATE_NAME).render(**context)
-    return write_text_atomic(html, output_dir / REPORT_NAME)
+    return write_text_atomic(html, output_dir / layout.REPORT)

@@ -16,6 +16,8 @@ SPECIMEN_TABLE = "specimens.csv"  #: one row per tensile specimen
 IMPACT_TABLE = "impact_summary.csv"  #: one row per engagement operating point
 REPORT = "report.html"  #: the campaign report
 LOCK = ".lock"  #: held while a process writes the folder
+#: The input key the campaign outputs were built from; written after the last of them.
+MANIFEST = ".outputs.json"
 
 #: Every campaign-level output of a processed folder.
 CAMPAIGN_OUTPUTS = (SUMMARY, CHAIN_TABLE, SPECIMEN_TABLE, IMPACT_TABLE, REPORT)

@@ -24,6 +24,7 @@ import netCDF4
 import xarray as xr
 
 from pipeline import __version__
+from pipeline.errors import OutputError
 
 CONVENTIONS = "CF-1.10"
 
@@ -90,16 +91,30 @@ def _atomic(path: Path) -> Iterator[Path]:
     The rename is atomic on one file system, so readers see the old file or
     the whole new one, never a part; on failure the temporary file is removed.
     """
-    path.parent.mkdir(parents=True, exist_ok=True)
-    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp",
+                                             dir=path.parent)
+    except OSError as error:
+        raise _output_error(path, error) from None
     os.close(handle)
     try:
         yield Path(temporary)
         os.chmod(temporary, FILE_MODE)
         os.replace(temporary, path)
-    except BaseException:
+    except BaseException as error:
         Path(temporary).unlink(missing_ok=True)
+        if isinstance(error, OSError):
+            raise _output_error(path, error) from None
         raise
+
+
+def _output_error(path: Path, error: OSError) -> OutputError:
+    """`error` of writing `path` as the typed error a technician sees."""
+    reason = error.strerror or str(error)
+    return OutputError(f"cannot write this output ({reason})", file=path,
+                       hint="check that the output folder is writable, is a folder, and that "
+                            "the disk has space; the previous outputs are unchanged")
 
 
 def write_atomic(dataset: xr.Dataset, path: str | Path) -> Path:
