@@ -35,10 +35,12 @@ import pandas as pd
 import xarray as xr
 
 from pipeline.acceptance import limits_si
+from pipeline.catalog import chain as catalog_chain
 from pipeline.compare import ChainInput, impact_summary, specimen_summary, stiffness_summary
 from pipeline.errors import ChainbenchError, FitError, IngestError, OutputError
 from pipeline.fit.impact_model import ImpactModelFit, fit_impact_model
 from pipeline.fit.stiffness import SpecimenStiffness
+from pipeline.plausibility import check_operating_points, check_specimens, excluded, flags_dataset
 from pipeline.report.build import build_report
 from pipeline.runs import (
     Progress,
@@ -47,7 +49,7 @@ from pipeline.runs import (
     process_engagement_run,
     process_tensile_run,
 )
-from pipeline.runsheet import RunDef, RunSheet, load_run_sheet
+from pipeline.runsheet import ChainDef, RunDef, RunSheet, load_run_sheet
 from pipeline.store import layout
 from pipeline.store.engagement import measured_point
 from pipeline.store.fingerprint import code_fingerprint
@@ -61,6 +63,7 @@ from pipeline.store.netcdf import (
     write_text_atomic,
 )
 from pipeline.store.tensile import specimen_from, strength_from
+from pipeline.units import to_si
 
 if TYPE_CHECKING:
     from distributed import Client
@@ -107,8 +110,16 @@ class CampaignResult:
     warnings: dict[str, list[str]] = field(default_factory=dict)  #: per run
 
     @property
+    def implausible(self) -> list[str]:
+        """The messages of the plausibility flags no run sheet entry accepts."""
+        if "flag_message" not in self.summary:
+            return []
+        open_flags = self.summary["flag_accepted"].values == 0
+        return [str(message) for message in self.summary["flag_message"].values[open_flags]]
+
+    @property
     def ok(self) -> bool:
-        return not self.failures and self.report_error is None
+        return not self.failures and self.report_error is None and not self.implausible
 
 
 @dataclass(frozen=True)
@@ -273,9 +284,9 @@ def _specimen_row(run: RunDef, scalars: dict[str, float], stiffness: SpecimenSti
 
 
 def _collect(sheet: RunSheet, plans: dict[str, _Plan], stored: dict[str, tuple]):
-    """Each stored run's result: specimen stiffness per chain, specimen rows, operating
-    points, warnings."""
-    specimens: dict[str, list[SpecimenStiffness]] = {}
+    """Each stored run's result: specimen stiffness and specimen row per tensile run,
+    operating point per engagement run, warnings."""
+    specimens: dict[str, SpecimenStiffness] = {}
     rows: dict[str, dict] = {}
     points: dict[str, dict[str, float]] = {}
     notes: dict[str, list[str]] = {}
@@ -284,15 +295,67 @@ def _collect(sheet: RunSheet, plans: dict[str, _Plan], stored: dict[str, tuple])
             continue
         scalars, attrs = stored[run.id]
         if run.kind == "tensile":
-            stiffness = specimen_from(scalars)
-            specimens.setdefault(run.chain, []).append(stiffness)
-            rows[run.id] = _specimen_row(run, scalars, stiffness)
+            specimens[run.id] = specimen_from(scalars)
+            rows[run.id] = _specimen_row(run, scalars, specimens[run.id])
         else:
             points[run.id] = {**operating_point(sheet, run, plans[run.id].E0),
                               **measured_point(scalars)}
         found = [attrs.get(name, "") for name in ("ingest_warnings", "warnings", "messages")]
         notes[run.id] = [text for joined in found for text in joined.split("; ") if text]
     return specimens, rows, points, {run_id: found for run_id, found in notes.items() if found}
+
+
+def _by_chain(sheet: RunSheet, specimens: dict[str, SpecimenStiffness], leave_out: set[str]
+              ) -> dict[str, list[SpecimenStiffness]]:
+    chains: dict[str, list[SpecimenStiffness]] = {}
+    for run in sheet.runs:
+        if run.id in specimens and run.id not in leave_out:
+            chains.setdefault(run.chain, []).append(specimens[run.id])
+    return chains
+
+
+def _breaking_force(chain: ChainDef) -> float | None:
+    """The chain's declared minimum breaking force, else its catalogue value [N]."""
+    declared = limits_si(chain.model_dump()).get("breaking_force")
+    if declared is None and chain.catalog:
+        return catalog_chain(chain.catalog).get("breaking_force")
+    return declared
+
+
+def _stiffness_parts(sheet: RunSheet, specimens, rows, accepted: set[str]):
+    """The chain and specimen tables, and the plausibility flags of the specimens.
+
+    A flagged specimen (not accepted in the run sheet) keeps its row in the
+    specimen table but is left out of its chain's E0.
+    """
+    chain_keys = sorted({run.chain for run in sheet.runs if run.kind == "tensile"})
+    chains = _chain_inputs(sheet, chain_keys)
+    band = tuple(value / 100 for value in sheet.campaign.discrepancy_band_pct)
+    stiffness = stiffness_summary(chains, _by_chain(sheet, specimens, set()), band)
+    capacity = sheet.campaign.machine_capacity_kN
+    flags = check_specimens(
+        rows, E0_theory={key: float(stiffness["E0_theory"].sel(chain=key)) for key in chain_keys},
+        breaking_force={key: _breaking_force(sheet.chains[key]) for key in chain_keys},
+        capacity=to_si(capacity, "kN") if capacity is not None else None, accepted=accepted)
+    if excluded(flags):
+        stiffness = stiffness_summary(chains, _by_chain(sheet, specimens, excluded(flags)), band)
+    limits = {key: limits_si(sheet.chains[key].model_dump()) for key in chain_keys}
+    return [stiffness, specimen_summary(rows, limits)], flags
+
+
+def _impact_parts(points: dict[str, dict], accepted: set[str]):
+    """The operating-point table and the plausibility flags of its runs, with notes.
+
+    A flagged run (not accepted) keeps its row but is left out of the fit of k.
+    """
+    table = pd.DataFrame.from_dict(points, orient="index")
+    fit, notes = _impact_fit(table)
+    impact = impact_summary(table, fit)
+    flags = check_operating_points(summary_table(impact, "operating_point"), accepted=accepted)
+    if excluded(flags):
+        fit, notes = _impact_fit(table.drop(index=sorted(excluded(flags))))
+        impact = impact_summary(table, fit)
+    return impact, flags, notes
 
 
 def _runs_dataset(sheet: RunSheet, stored: list[str]) -> xr.Dataset:
@@ -306,17 +369,16 @@ def _runs_dataset(sheet: RunSheet, stored: list[str]) -> xr.Dataset:
 
 def _summary(sheet: RunSheet, stored: list[str], specimens, rows, points,
              failures: list[RunFailure]) -> xr.Dataset:
-    parts, notes = [_runs_dataset(sheet, stored), _failures_dataset(failures)], []
-    chain_keys = sorted({run.chain for run in sheet.runs if run.kind == "tensile"})
-    if chain_keys:
-        band = tuple(value / 100 for value in sheet.campaign.discrepancy_band_pct)
-        parts.append(stiffness_summary(_chain_inputs(sheet, chain_keys), specimens, band))
-        limits = {key: limits_si(sheet.chains[key].model_dump()) for key in chain_keys}
-        parts.append(specimen_summary(rows, limits))
+    parts, notes, flags = [_runs_dataset(sheet, stored), _failures_dataset(failures)], [], []
+    accepted = {run.id for run in sheet.runs if run.accept_implausible}
+    if any(run.kind == "tensile" for run in sheet.runs):
+        tables, flags = _stiffness_parts(sheet, specimens, rows, accepted)
+        parts += tables
     if points:
-        table = pd.DataFrame.from_dict(points, orient="index")
-        fit, notes = _impact_fit(table)
-        parts.append(impact_summary(table, fit))
+        impact, impact_flags, notes = _impact_parts(points, accepted)
+        parts.append(impact)
+        flags += impact_flags
+    parts.append(flags_dataset(flags))
     summary = xr.merge(parts, combine_attrs="drop_conflicts")
     summary.attrs["notes"] = "\n".join(filter(None, [summary.attrs.get("notes", ""), *notes]))
     summary.attrs.update(provenance_attrs(

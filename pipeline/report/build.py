@@ -245,6 +245,22 @@ def _run_warnings(runs: Sequence[RunFile]) -> Iterable[dict[str, str]]:
                    "result": "warning", "status": "info", "detail": found}
 
 
+def _plausibility_checks(summary: xr.Dataset) -> Iterable[dict[str, str]]:
+    """One row per plausibility flag: a value far from what is known, and the slip it
+    suggests; an accepted flag is information, an open one a failure."""
+    if not _has(summary, "flag"):
+        yield {"check": "values plausible (against theory, breaking force, machine capacity, "
+                        "strain limit, the other specimens)", "result": "yes",
+               "status": "pass", "detail": "no value far from what is known"}
+        return
+    for run, quantity, accepted, message in zip(
+            summary["flag_run"].values, summary["flag_quantity"].values,
+            summary["flag_accepted"].values, summary["flag_message"].values, strict=True):
+        yield {"check": f"run {run}: {quantity} plausible",
+               "result": "accepted in the run sheet" if accepted else "implausible",
+               "status": "info" if accepted else "fail", "detail": str(message)}
+
+
 def _checks(summary: xr.Dataset, runs: Sequence[RunFile]) -> list[dict[str, str]]:
     """Every check of the campaign as rows: check, result, status, detail."""
     failures = _failures(summary)
@@ -259,6 +275,7 @@ def _checks(summary: xr.Dataset, runs: Sequence[RunFile]) -> list[dict[str, str]
         rows.extend(_run_warnings(runs))
     if _has(summary, "operating_point"):
         rows.extend(_impact_checks(summary))
+    rows.extend(_plausibility_checks(summary))
     rows.extend({"check": f"run {run_id}", "result": "failed", "status": "fail",
                  "detail": error} for run_id, error in failures)
     return rows
