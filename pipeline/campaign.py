@@ -140,7 +140,7 @@ def project_root(campaign_folder: Path) -> Path:
     """
     for folder in (Path(campaign_folder).resolve(), Path.cwd().resolve()):
         for parent in (folder, *folder.parents):
-            if parent.name == RAW_FOLDER:
+            if parent.name.casefold() == RAW_FOLDER:
                 return parent.parent
     return Path.cwd().resolve()
 
@@ -417,7 +417,7 @@ def csv_table(summary: xr.Dataset, dim: str) -> str:
     for column in table.columns:
         if table[column].dtype == object:
             table[column] = table[column].map(_inert)
-    return table.to_csv(float_format="%.6g")
+    return table.to_csv(float_format="%.6g", lineterminator="\n")
 
 
 def _inert(value):

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import pytest
@@ -34,3 +35,13 @@ def processed_demos(tmp_path_factory) -> Path:
         result = process_campaign(folder, root / name)
         assert result.ok, ([failure.message for failure in result.failures], result.report_error)
     return root
+
+
+def pytest_collection_modifyitems(config, items):
+    """Skip the tests marked ``posix_only`` on Windows."""
+    if sys.platform != "win32":
+        return
+    skip = pytest.mark.skip(reason="needs a POSIX system")
+    for item in items:
+        if item.get_closest_marker("posix_only"):
+            item.add_marker(skip)

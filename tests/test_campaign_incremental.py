@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import os
 import shutil
-import signal
 import subprocess
 import sys
 import time
@@ -16,6 +15,7 @@ from typer.testing import CliRunner
 
 from pipeline.campaign import process_campaign
 from pipeline.cli import app
+from pipeline.store.lock import PID_NAME
 from pipeline.store.netcdf import read_dataset
 
 runner = CliRunner()
@@ -99,7 +99,7 @@ def test_killed_mid_run_leaves_no_corrupt_file_and_rerun_completes(campaign, tmp
     process = subprocess.Popen([*CHAINBENCH, "run", str(campaign), "--output", str(out)],
                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     wait_for(lambda: (out / "c18" / "T18-1.nc").exists())
-    process.send_signal(signal.SIGKILL)
+    process.kill()
     process.wait()
     finished = [path for path in (out / "c18").glob("*.nc")]
     for path in finished:  # whatever was written is whole
@@ -115,7 +115,8 @@ def test_two_runs_at_once_never_interleave(campaign, tmp_path):
     out = tmp_path / "processed"
     first = subprocess.Popen([*CHAINBENCH, "run", str(campaign), "--output", str(out)],
                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    wait_for(lambda: (out / "c18" / ".lock").exists() and (out / "c18" / ".lock").read_text())
+    pid_file = out / "c18" / PID_NAME
+    wait_for(lambda: pid_file.exists() and pid_file.read_text())
     second = subprocess.run([*CHAINBENCH, "run", str(campaign), "--output", str(out)],
                             capture_output=True, text=True, env={**os.environ, "COLUMNS": "200"})
     first_output, _ = first.communicate(timeout=120)

@@ -114,7 +114,8 @@ def _output_error(path: Path, error: OSError) -> OutputError:
     reason = error.strerror or str(error)
     return OutputError(f"cannot write this output ({reason})", file=path,
                        hint="check that the output folder is writable, is a folder, and that "
-                            "the disk has space; the previous outputs are unchanged")
+                            "the disk has space, and close the file in other programs (a "
+                            "spreadsheet, a notebook); the previous outputs are unchanged")
 
 
 def write_atomic(dataset: xr.Dataset, path: str | Path) -> Path:

@@ -71,6 +71,7 @@ def test_sha256_of_matches_hashlib(tmp_path):
     assert sha256_of(path) == hashlib.sha256(data).hexdigest()
 
 
+@pytest.mark.posix_only  # Windows has no permission bits beyond read-only
 def test_outputs_are_readable_by_others(tmp_path):
     netcdf = write_atomic(sample(), tmp_path / "run.nc")
     text = write_text_atomic("a\n", tmp_path / "report.html")
