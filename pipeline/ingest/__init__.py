@@ -100,8 +100,12 @@ def read_table(
     -----
     Choices made for defects that could go either way:
 
-    * a half-written last row (no line end, too few fields) is dropped with a
-      warning; a short row that ends with a line end is an error;
+    * a half-written last row (no line end, and too few fields or a last
+      number with fewer decimals than its column always has) is dropped with
+      a warning; a short row that ends with a line end is an error;
+    * a truncated TDMS file is read up to the cut with a warning saying where
+      it stops (an error if nothing precedes the cut); npTDMS's own warnings
+      join the table's instead of being printed;
     * time stepping backwards and time gaps are reported (warnings,
       ``metadata.time_monotonic`` and ``metadata.time_gaps``), never raised nor
       repaired: the conditioning stage decides;

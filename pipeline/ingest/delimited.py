@@ -119,7 +119,8 @@ def read_contiguous(
     found = candidates(head, spec, columns)
     whole = Region(head.path, head.offsets[spec.data_index], head.size, spec.data_index + 1,
                    head.codec)
-    region, truncated = trim_truncated_tail(whole.read, whole, spec.width, spec.delimiter)
+    region, truncated = trim_truncated_tail(whole.read, whole, spec.width, spec.delimiter,
+                                            spec.decimal)
     names = header_columns(spec)[0]
     try:
         table = parse_body(

@@ -15,6 +15,12 @@ File defects handled
   (``0,5,1,25`` under ``time,force``), else an error with a hint;
 * a mixed decimal mark (a ``0.5`` in a decimal-comma file): error naming the
   line and column;
+* a half-written last line (no line end after it): too few fields, or a last
+  number that stops short of the decimals its column always has (``0,`` or
+  ``0,0`` where the column writes ``0,000``; ``12,`` where it always has
+  digits after the comma): dropped with a warning. A complete last line
+  without line end is kept, and so is ``12,`` in a column that also holds
+  integers;
 * German and Polish names (``Standardkraft``, ``Weg``, ``siła``, ``wydłużenie``);
 * everything :mod:`pipeline.ingest.plain_csv` handles.
 """

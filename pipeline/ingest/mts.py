@@ -72,7 +72,7 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
     del data
     kept, truncated = trim_truncated_tail(
         lambda begin, stop: body[begin:stop], Region(head.path, 0, len(body), 1, "utf-8"),
-        spec.width, spec.delimiter,
+        spec.width, spec.delimiter, spec.decimal,
     )
     region = Region(head.path, start, head.size, spec.data_index + 1, head.codec, _is_data)
     table = parse_body(

@@ -28,6 +28,11 @@ TAIL_BYTES = 1 << 16
 
 _LINE = re.compile(rb"([^\r\n]*)(\r\n|\r|\n|\Z)")
 _INVALID = re.compile(r"column #(\d+).*invalid value '(.*)'", re.DOTALL)
+#: A number without exponent; group 1 or 2 holds its decimals.
+_PLAIN_NUMBER = {
+    mark: re.compile(rf" *[+-]?(?:\d+(?:{re.escape(mark)}(\d*))?|{re.escape(mark)}(\d+)) *")
+    for mark in ".,"
+}
 
 
 def column_label(index: int) -> str:
@@ -124,14 +129,16 @@ class Region:
 
 
 def trim_truncated_tail(
-    read: Callable[[int, int], bytes], region: Region, width: int, delimiter: str
+    read: Callable[[int, int], bytes], region: Region, width: int, delimiter: str, decimal: str
 ) -> tuple[Region, bool]:
     """Cut a truncated last line off the region.
 
-    The last line is a half-written row if the file does not end with a line
-    end and the line has fewer fields than the data rows, or stops right after
-    a delimiter (last field empty where the line before has a value). A short
-    line that does end with a line end is left to the parser, which reports it.
+    A last line without a line end is a half-written row if it has fewer
+    fields than the data rows, if it stops right after a delimiter (last field
+    empty where the row before has a value), or if its last number stops short
+    of the decimals its column always has (``0,`` or ``0,0`` where the column
+    writes ``0,000``). A short line that does end with a line end is left to
+    the parser, which reports it.
 
     Parameters
     ----------
@@ -142,8 +149,8 @@ def trim_truncated_tail(
         The rows.
     width : int
         Fields per row.
-    delimiter : str
-        The field delimiter.
+    delimiter, decimal : str
+        The field delimiter and the decimal mark.
 
     Returns
     -------
@@ -159,22 +166,63 @@ def trim_truncated_tail(
     raw = read(start, region.end)
     text = raw.decode("latin-1" if single_byte else region.codec, errors="replace")
     body = text.rstrip("\r\n")
-    ends_with_newline = len(body) < len(text)
     lines = re.split(r"\r\n|\r|\n", body)
-    if len(lines) < 1 or not lines[-1]:
+    if len(body) < len(text) or not lines[-1]:
         return region, False
-    last = split_fields(lines[-1], delimiter)
-    before = split_fields(lines[-2], delimiter) if len(lines) > 1 else []
-    truncated = not ends_with_newline and (
-        len(last) < width
-        or (not last[-1].strip() and len(before) == len(last) and bool(before[-1].strip()))
-    )
-    if not truncated:
+    complete = lines[1 if start > region.start else 0 : -1]  # the first may start mid-line
+    rows = [split_fields(line, delimiter) for line in complete if line]
+    if not _is_half_written(split_fields(lines[-1], delimiter), rows, width, decimal):
         return region, False
     kept = body[: len(body) - len(lines[-1])]
     end = start + (len(kept) if single_byte else len(kept.encode(region.codec)))
     return Region(region.path, region.start, end, region.first_line, region.codec,
                   region.is_data), True
+
+
+def _is_half_written(last: list[str], rows: list[list[str]], width: int, decimal: str) -> bool:
+    """True if `last`, the fields of a last line without line end, is a cut row.
+
+    `rows` are the fields of the data rows above it, in order.
+    """
+    if len(last) < width:
+        return True
+    before = rows[-1] if rows else []
+    if not last[-1].strip():
+        return len(before) == len(last) and bool(before[-1].strip())
+    column = [row[-1] for row in rows if len(row) == len(last)]
+    return _is_cut_number(last[-1], column, decimal)
+
+
+def _is_cut_number(cell: str, column: list[str], decimal: str) -> bool:
+    """True if `cell` looks like a number cut short, by comparison with the rest of its column.
+
+    A plain number (no exponent) is cut if it has fewer decimals than every
+    other value of `column`, and either ends with the decimal mark (``12,``
+    where the column always has digits after its mark) or the column writes
+    a fixed number of decimals (``0,0`` or ``0`` where it always has three).
+    A column that writes as many decimals as needed (``99``, ``99,5``) leaves
+    ``12,`` and ``12`` as they are.
+
+    Parameters
+    ----------
+    cell : str
+        The last field of a file without a final line end.
+    column : list of str
+        The other values of its column (missing values and texts are ignored).
+    decimal : str
+        The decimal mark.
+    """
+    digits = _decimals(cell, decimal)
+    others = {_decimals(value, decimal) for value in column} - {None}
+    if digits is None or not others or digits >= min(others):
+        return False
+    return cell.rstrip().endswith(decimal) or len(others) == 1
+
+
+def _decimals(cell: str, decimal: str) -> int | None:
+    """Digits after the decimal mark of a plain number (0 without mark), None if not one."""
+    match = _PLAIN_NUMBER[decimal].fullmatch(cell)
+    return None if match is None else len(match.group(1) or match.group(2) or "")
 
 
 def parse_body(

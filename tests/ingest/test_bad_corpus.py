@@ -46,6 +46,9 @@ ERRORS = {
 #: file -> (rows kept, text in a warning): defects read with a warning, nothing lost silently
 WARNINGS = {
     "truncated_last_line.csv": (3, "line 5 is truncated"),
+    "european_truncated_last_field.csv": (3, "line 5 is truncated"),
+    "european_truncated_missing_field.csv": (3, "line 5 is truncated"),
+    "machine_export_european_truncated.csv": (3, "line 9 is truncated"),
     "nan_stretch.csv": (5, "3 missing values kept as NaN; longest run 3 rows from line 3"),
     "time_backwards.csv": (4, "steps back 1 times, first at line 4"),
     "time_gap.csv": (5, "1 gaps longer than 10 x the median step"),

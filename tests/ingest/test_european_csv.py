@@ -65,3 +65,32 @@ def test_mixed_decimal_mark(write):
         read_table(write("m.csv", POLISH.replace("1,784", "1.784")))
     assert (caught.value.row, caught.value.column) == (3, "siła")
     assert "decimal mark" in caught.value.hint
+
+
+FIXED = "czas [s];siła [kN];wydłużenie [mm]\n0,00;0,012;0,000\n0,10;0,020;0,010\n"
+
+
+@pytest.mark.parametrize(
+    "tail",
+    ["0,20;0,030;0,", "0,20;0,030;0,0", "0,20;0,030;0", "0,20;0,030;", "0,20;0,030", "0,2"],
+)
+def test_truncated_last_line_is_dropped(write, tail):
+    table, meta = read_table(write("t.csv", FIXED + tail))
+    np.testing.assert_allclose(table["force"], [12.0, 20.0])
+    np.testing.assert_allclose(table["gauge_1"], [0.0, 1e-5])
+    assert meta.warnings == ["line 4 is truncated (a half-written last row): dropped"]
+
+
+@pytest.mark.parametrize(
+    ("text", "last"),
+    [
+        (FIXED + "0,20;0,030;0,020", 2e-5),  # complete, no line end
+        (FIXED + "0,20;0,030;2,5e-3", 2.5e-6),
+        (FIXED.replace("0,010", "1") + "0,20;0,030;2,", 2e-3),  # the column also has integers
+        (FIXED.replace("0,010", "0,01") + "0,20;0,030;2", 2e-3),  # as many decimals as needed
+    ],
+)
+def test_complete_last_line_without_line_end_is_kept(write, text, last):
+    table, meta = read_table(write("t.csv", text))
+    assert len(table) == 3 and meta.warnings == []
+    assert table["gauge_1"].iloc[-1] == pytest.approx(last)

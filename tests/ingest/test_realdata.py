@@ -1,6 +1,7 @@
 """Real third-party exports (../shared/realdata, never copied here): roles and units."""
 
 import numpy as np
+import pandas as pd
 import pytest
 
 from pipeline.errors import UnitError
@@ -77,3 +78,18 @@ def test_mts_english(realdata):
     np.testing.assert_allclose(
         table.iloc[-1], [100.10043, -9.5635424 * STANDARD_GRAVITY, -0.36483389e-3, 1999.0],
         rtol=1e-12)
+
+
+def test_last_line_without_line_end_is_kept_and_a_cut_one_dropped(realdata, tmp_path):
+    options = {CCFATIGUE: {"units": {"force": "kN", "gauges": "mm"}}}
+    for path in sorted(path for path in realdata.iterdir() if path.suffix in (".csv", ".dat")):
+        whole, _ = read_table(path, **options.get(path.name, {}))
+        body = path.read_bytes().rstrip(b"\r\n")
+        last_line = body.rfind(b"\n") + 1
+        for end, rows in ((len(body), len(whole)), (last_line + 1, len(whole) - 1)):
+            copy = tmp_path / f"copy{path.suffix}"
+            copy.write_bytes(body[:end])
+            table, meta = read_table(copy, **options.get(path.name, {}))
+            pd.testing.assert_frame_equal(table, whole.iloc[:rows], obj=path.name)
+            cut = [warning for warning in meta.warnings if "is truncated" in warning]
+            assert len(cut) == len(whole) - rows, (path.name, meta.warnings)

@@ -1,6 +1,7 @@
-"""NI TDMS: channels by name or Group/Channel, time from waveform properties."""
+"""NI TDMS: channels by name or Group/Channel, time from waveform properties, truncation."""
 
 import numpy as np
+import pandas as pd
 import pytest
 from nptdms import ChannelObject, GroupObject, TdmsWriter
 
@@ -80,3 +81,77 @@ def test_not_tdms(write):
     for content in (b"TDSm\x00", b"TDSm" + bytes(range(60))):
         with pytest.raises(LayoutError, match="TDMS"):
             read_table(write("x.tdms", content))
+
+
+SEGMENTS = 3
+POINTS = 100  # per channel and segment
+
+
+@pytest.fixture
+def segmented(tmp_path):
+    """A 3-segment engagement log, its table as read whole and its segments' (start, end)."""
+    path = tmp_path / "whole.tdms"
+    with TdmsWriter(path) as writer:
+        for segment in range(SEGMENTS):
+            samples = np.arange(segment * POINTS, (segment + 1) * POINTS, dtype=float)
+            writer.write_segment([
+                ChannelObject("Rig", "Force", samples, properties=WAVE if segment == 0 else {}),
+                ChannelObject("Rig", "Angle", -samples,
+                              properties={"unit_string": "rad"} if segment == 0 else {}),
+            ])
+    content = path.read_bytes()
+    starts = [index for index in range(len(content)) if content.startswith(b"TDSm", index)]
+    bounds = list(zip(starts, [*starts[1:], len(content)], strict=True))
+    table, meta = read_table(path, kind="engagement")
+    assert len(table) == SEGMENTS * POINTS and meta.warnings == []
+    return content, table, bounds
+
+
+def cut_file(tmp_path, content: bytes, end: int):
+    path = tmp_path / "cut.tdms"
+    path.write_bytes(content[:end])
+    return path
+
+
+def assert_nothing_printed(capfd, caplog):
+    assert capfd.readouterr().err == ""
+    assert not [record for record in caplog.records if record.name.startswith("nptdms")]
+
+
+@pytest.mark.parametrize(
+    ("segment", "offset"),
+    [(0, -1), (1, 40), (1, 700), (1, -1), (2, 1000), (2, -1)],
+)
+def test_truncated_file_is_read_up_to_the_cut(segmented, tmp_path, capfd, caplog, segment,
+                                              offset):
+    content, whole, bounds = segmented
+    start, end = bounds[segment]
+    cut = (start if offset >= 0 else end) + offset
+    table, meta = read_table(cut_file(tmp_path, content, cut), kind="engagement")
+    assert 0 < len(table) < len(whole)
+    pd.testing.assert_frame_equal(table, whole.iloc[: len(table)])
+    assert (f"the file is truncated ({cut} of {end} bytes, segment {segment + 1} incomplete): "
+            f"the {len(table)} samples before the cut were read") in meta.warnings
+    assert any(warning.startswith("npTDMS: ") for warning in meta.warnings)
+    assert_nothing_printed(capfd, caplog)
+
+
+@pytest.mark.parametrize("cut", [3, 20, 28, 100, 1000])
+def test_truncated_file_with_nothing_before_the_cut(segmented, tmp_path, capfd, caplog, cut):
+    content, _, bounds = segmented
+    with pytest.raises(LayoutError, match=r"the TDMS file is truncated \(") as caught:
+        read_table(cut_file(tmp_path, content, cut), kind="engagement")
+    end = 28 if cut < 28 else bounds[0][1]
+    assert f"({cut} of {end} bytes, segment 1 incomplete)" in caught.value.message
+    assert "copy the file again" in caught.value.hint
+    assert_nothing_printed(capfd, caplog)
+
+
+def test_segment_whose_length_was_never_written(segmented, tmp_path):
+    content, whole, bounds = segmented
+    start = bounds[-1][0]
+    broken = content[: start + 12] + b"\xff" * 8 + content[start + 20 :]
+    table, meta = read_table(cut_file(tmp_path, broken, len(broken)), kind="engagement")
+    pd.testing.assert_frame_equal(table, whole)
+    assert any("truncated (segment 3 incomplete, its length never written)" in warning
+               for warning in meta.warnings)

@@ -32,15 +32,34 @@ def test_line_of_utf16(write):
 def test_trim_truncated_tail(write, tail, cut):
     path = write("t.csv", "h,h\n1,2\n3,4\n" + tail)
     region = region_of(path)
-    trimmed, truncated = trim_truncated_tail(region.read, region, 2, ",")
+    trimmed, truncated = trim_truncated_tail(region.read, region, 2, ",", ".")
     assert truncated is cut
     assert trimmed.end == (path.stat().st_size - len(tail) if cut else region.end)
+
+
+@pytest.mark.parametrize(
+    ("rows", "tail", "cut"),
+    [
+        ("1.5,2.25\n3.5,4.25\n", "7.5,8.25", False),  # complete, no line end
+        ("1.5,2.25\n3.5,4.25\n", "7.5,8.2", True),  # fixed decimals, one missing
+        ("1.5,2.25\n3.5,4.25\n", "7.5,8.", True),
+        ("1.5,2.25\n3.5,4.25\n", "7.5,8", True),
+        ("1.5,2.25\n3.5,4.25\n", "7.5,8.25e-3", False),  # an exponent is not compared
+        ("1.5,2.5\n3.5,4.25\n", "7.5,8.", True),  # the column always has decimals
+        ("1.5,2.5\n3.5,4.25\n", "7.5,8", False),  # as many decimals as needed: 8.0 as 8
+        ("1.5,2\n3.5,4.5\n", "7.5,8.", False),  # the column also has integers
+    ],
+)
+def test_trim_number_cut_short(write, rows, tail, cut):
+    path = write("t.csv", "h,h\n" + rows + tail)
+    region = region_of(path)
+    assert trim_truncated_tail(region.read, region, 2, ",", ".")[1] is cut
 
 
 def test_trailing_empty_column_without_line_end_is_kept(write):
     path = write("t.csv", "h,h,h\n1,2,\n3,4,")
     region = region_of(path, start=len("h,h,h\n"))
-    assert trim_truncated_tail(region.read, region, 3, ",")[1] is False
+    assert trim_truncated_tail(region.read, region, 3, ",", ".")[1] is False
 
 
 def test_join_comma_pairs(write):
