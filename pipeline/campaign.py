@@ -526,7 +526,7 @@ def process_campaign(
     _check_output_folder(output, sheet)
     with campaign_lock(output):
         remove_stale_temporaries(output)
-        failures = [RunFailure(_invalid_run_id(error), error) for error in sheet.invalid_runs]
+        failures = _sheet_failures(sheet)
         plans: dict[str, _Plan] = {}
         for run in sheet.runs:
             try:
@@ -599,6 +599,15 @@ def _check_output_folder(output: Path, sheet: RunSheet) -> None:
 def _invalid_run_id(error: ChainbenchError) -> str:
     """A label for a run-sheet entry that failed validation (``runs[3]``)."""
     return (error.column or "runs").split(".")[0]
+
+
+def _sheet_failures(sheet: RunSheet) -> list[RunFailure]:
+    """The run-sheet entries that failed validation: runs, and chain and wheel tables
+    (listed even when no run uses them)."""
+    failures = [RunFailure(_invalid_run_id(error), error) for error in sheet.invalid_runs]
+    for table, invalid in (("chains", sheet.invalid_chains), ("wheels", sheet.invalid_wheels)):
+        failures += [RunFailure(f"{table}.{key}", error) for key, error in invalid.items()]
+    return failures
 
 
 def run_campaign(path: str | Path, output: str | Path | None = None, *, force: bool = False,

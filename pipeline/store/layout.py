@@ -35,6 +35,21 @@ def run_output(output: Path, run_id: str) -> Path:
     return Path(output) / f"{run_id}.nc"
 
 
+def unportable_name_reason(name: str) -> str | None:
+    """Why `name` cannot name a file or folder on Windows, or None when it can.
+
+    >>> unportable_name_reason("CON")
+    "'CON' is a device name Windows refuses as a file name"
+    >>> unportable_name_reason("c18") is None
+    True
+    """
+    if name.split(".")[0].casefold() in WINDOWS_DEVICE_NAMES:
+        return f"{name!r} is a device name Windows refuses as a file name"
+    if name.endswith("."):
+        return f"{name!r} ends in '.', which Windows drops from file names"
+    return None
+
+
 def reserved_id_reason(run_id: str) -> str | None:
     """Why `run_id` cannot name a run's output file, or None when it can.
 
@@ -43,12 +58,7 @@ def reserved_id_reason(run_id: str) -> str | None:
     >>> reserved_id_reason("pull-01") is None
     True
     """
-    stem = run_id.split(".")[0].casefold()
     taken = [name for name in CAMPAIGN_OUTPUTS if name.split(".")[0] == run_id.casefold()]
     if taken:
         return f"{run_id!r} names a campaign output ({', '.join(taken)})"
-    if stem in WINDOWS_DEVICE_NAMES:
-        return f"{run_id!r} is a device name Windows refuses as a file name"
-    if run_id.endswith("."):
-        return f"{run_id!r} ends in '.', which Windows drops from file names"
-    return None
+    return unportable_name_reason(run_id)
