@@ -37,7 +37,7 @@ import xarray as xr
 from pipeline.acceptance import limits_si
 from pipeline.catalog import chain as catalog_chain
 from pipeline.compare import ChainInput, impact_summary, specimen_summary, stiffness_summary
-from pipeline.errors import ChainbenchError, FitError, IngestError, OutputError
+from pipeline.errors import ChainbenchError, FitError, OutputError
 from pipeline.fit.impact_model import ImpactModelFit, fit_impact_model
 from pipeline.fit.stiffness import SpecimenStiffness
 from pipeline.plausibility import check_operating_points, check_specimens, excluded, flags_dataset
@@ -45,6 +45,7 @@ from pipeline.report.build import build_report
 from pipeline.runs import (
     Progress,
     chain_stiffness_for,
+    existing_run_file,
     operating_point,
     process_engagement_run,
     process_tensile_run,
@@ -169,11 +170,7 @@ def _digest(document) -> str:
 
 
 def _plan(sheet: RunSheet, run: RunDef, output: Path) -> _Plan:
-    raw = sheet.run_file(run)
-    if not raw.is_file():
-        raise IngestError("file not found", file=raw,
-                          hint="check the run's file name in the run sheet")
-    raw_sha256 = sha256_of(raw)
+    raw_sha256 = sha256_of(existing_run_file(sheet, run))
     E0 = chain_stiffness_for(sheet, run, output) if run.kind == "engagement" else None
     key = _digest({
         "raw_sha256": raw_sha256, "entry": sheet.entries[run.id], "E0": E0,
@@ -211,9 +208,21 @@ def _failure(sheet: RunSheet, run: RunDef, error: Exception, debug: bool) -> Run
     of the run: it stops the campaign, before anything stored is touched."""
     if isinstance(error, OutputError) or (debug and not isinstance(error, ChainbenchError)):
         raise error
-    if isinstance(error, ChainbenchError) and error.file is None:
-        error.file = str(sheet.run_file(run))  # stages after ingest know no file
-    return RunFailure(run.id, error)
+    return run_failure(sheet, run, error)
+
+
+def run_failure(sheet: RunSheet, run: RunDef | None, error: Exception) -> RunFailure:
+    """`error` of `run` (None: of the run sheet) as the campaign lists it: with the file
+    it concerns (the run's file when the error names none), named inside the campaign
+    folder, so that no home path reaches the outputs."""
+    if isinstance(error, ChainbenchError):
+        if error.file is None and run is not None:
+            error.file = str(sheet.run_file(run))  # stages after ingest know no file
+        path, folder = Path(error.file or ""), sheet.folder.resolve()
+        if path.is_absolute() and path.is_relative_to(folder):
+            error.file = path.relative_to(folder).as_posix()
+    label = run.id if run is not None else _invalid_run_id(error)
+    return RunFailure(label, error)
 
 
 def _execute(sheet: RunSheet, plans: list[_Plan], output: Path, progress: Progress | None,
@@ -467,17 +476,6 @@ def _remove_stale_runs(output: Path, campaign_id: str, current: set[str]) -> lis
     return removed
 
 
-def _relative_to_campaign(failure: RunFailure, folder: Path) -> RunFailure:
-    """`failure` with its file named relative to the campaign folder (no home paths in
-    the outputs)."""
-    error = failure.error
-    if isinstance(error, ChainbenchError) and error.file is not None:
-        path = Path(error.file)
-        if path.is_absolute() and path.is_relative_to(folder.resolve()):
-            error.file = path.relative_to(folder.resolve()).as_posix()
-    return failure
-
-
 def process_campaign(
     path: str | Path,
     output: str | Path | None = None,
@@ -526,7 +524,7 @@ def process_campaign(
     _check_output_folder(output, sheet)
     with campaign_lock(output):
         remove_stale_temporaries(output)
-        failures = _sheet_failures(sheet)
+        failures = sheet_failures(sheet)
         plans: dict[str, _Plan] = {}
         for run in sheet.runs:
             try:
@@ -542,7 +540,7 @@ def process_campaign(
             if progress:
                 progress(run_id, "unchanged")
         done, failed = _execute(sheet, todo, output, progress, debug, client)
-        failures = [_relative_to_campaign(failure, sheet.folder) for failure in failures + failed]
+        failures += failed
         current.update({run_id: read_scalars(path) for run_id, path in done.items()})
         files = {run.id: layout.run_output(output, run.id) for run in sheet.runs
                  if run.id in current}
@@ -601,12 +599,13 @@ def _invalid_run_id(error: ChainbenchError) -> str:
     return (error.column or "runs").split(".")[0]
 
 
-def _sheet_failures(sheet: RunSheet) -> list[RunFailure]:
+def sheet_failures(sheet: RunSheet) -> list[RunFailure]:
     """The run-sheet entries that failed validation: runs, and chain and wheel tables
     (listed even when no run uses them)."""
-    failures = [RunFailure(_invalid_run_id(error), error) for error in sheet.invalid_runs]
+    failures = [run_failure(sheet, None, error) for error in sheet.invalid_runs]
     for table, invalid in (("chains", sheet.invalid_chains), ("wheels", sheet.invalid_wheels)):
-        failures += [RunFailure(f"{table}.{key}", error) for key, error in invalid.items()]
+        failures += [RunFailure(f"{table}.{key}", run_failure(sheet, None, error).error)
+                     for key, error in invalid.items()]
     return failures
 
 

@@ -20,7 +20,7 @@ import xarray as xr
 
 from pipeline.condition.engagement import SpeedMismatchWarning, detect_events
 from pipeline.condition.tensile import TensileRun, condition_tensile
-from pipeline.errors import RunSheetError, SignalError
+from pipeline.errors import IngestError, RunSheetError, SignalError
 from pipeline.fit.chunked import extract_impacts_chunked
 from pipeline.fit.impact import extract_impacts
 from pipeline.fit.stiffness import SpecimenStiffness, fit_stiffness, specimen_stiffness
@@ -45,12 +45,21 @@ def _quiet(run_id: str, stage: str) -> None:
     """The default progress callback: says nothing."""
 
 
+def existing_run_file(sheet: RunSheet, run: RunDef) -> Path:
+    """The run's raw file; an :class:`~pipeline.errors.IngestError` when it is missing."""
+    raw = sheet.run_file(run)
+    if not raw.is_file():
+        raise IngestError("file not found", file=raw,
+                          hint="check the run's file name in the run sheet")
+    return raw
+
+
 def read_run(sheet: RunSheet, run: RunDef):
     """Read a run's raw file into the canonical table, as its run-sheet entry says."""
     columns = run.columns.model_dump(exclude_none=True) if run.columns else None
     units = run.units.model_dump(exclude_none=True) if run.units else None
-    return read_table(sheet.run_file(run), kind=run.kind, columns=columns, units=units,
-                      format=run.format, sheet=run.sheet)
+    return read_table(existing_run_file(sheet, run), kind=run.kind, columns=columns,
+                      units=units, format=run.format, sheet=run.sheet)
 
 
 def _attrs(sheet: RunSheet, run: RunDef, title: str, raw_sha256: str) -> dict[str, str]:

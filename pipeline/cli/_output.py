@@ -1,4 +1,9 @@
-"""Printing tables for people (rich) or for programs (``--json``)."""
+"""Printing tables for people (rich) or for programs (``--json``).
+
+Every text that comes from the user's inputs (file names, run-sheet keys, error
+messages quoting them) may hold square brackets, which rich would read as
+markup: it is escaped before it is printed (:func:`say`, :func:`emit`).
+"""
 
 from __future__ import annotations
 
@@ -8,9 +13,31 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 console = Console()
+#: Messages of commands whose standard output is a JSON document go here.
+error_console = Console(stderr=True)
+
+
+def say(tag: str, style: str, text: str, *, stderr: bool = False) -> None:
+    """Print `text` after a coloured `tag` (``error``, ``warning``, ``note``...).
+
+    Parameters
+    ----------
+    tag : str
+        The word leading the line, printed in `style`.
+    style : str
+        A rich style (``"red"``, ``"yellow"``).
+    text : str
+        The message, printed verbatim (never read as markup) on one line, which
+        the terminal wraps.
+    stderr : bool
+        Print to standard error (beside a JSON document on standard output).
+    """
+    target = error_console if stderr else console
+    target.print(f"[{style}]{tag}[/{style}] {escape(text)}", highlight=False, soft_wrap=True)
 
 
 def _plain(value):
@@ -32,6 +59,18 @@ def _cell(value, digits: int) -> str:
     return str(value)
 
 
+def _heading(column: str, unit: str | None) -> str:
+    """A table heading: `column` over its unit (``"N_u1\\n[N]"``).
+
+    The unit goes on a line of its own, so that it does not widen the column. A
+    column without a unit, dimensionless (``"1"``) or whose name ends with its
+    unit (``psi_deg``) is left as it is.
+    """
+    if unit in (None, "", "1") or column.endswith(f"_{unit}"):
+        return column
+    return f"{column}\n[{unit}]"
+
+
 def emit(
     rows: Sequence[Mapping],
     *,
@@ -40,6 +79,7 @@ def emit(
     extra: Mapping | None = None,
     digits: int = 5,
     notes: Sequence[str] = (),
+    units: Mapping[str, str] | None = None,
 ) -> None:
     """Print `rows` (one mapping per table row) as a rich table or as JSON.
 
@@ -50,24 +90,29 @@ def emit(
     title : str
         Table title (also stored under ``"title"`` in the JSON).
     as_json : bool
-        Print ``{"title", "rows", **extra, "notes"}`` as JSON instead of a table.
+        Print ``{"title", "units", **extra, "rows", "notes"}`` as JSON instead of a
+        table.
     extra : mapping, optional
         Further top-level JSON members (inputs, scalars).
     digits : int
         Significant digits of floats in the table.
     notes : sequence of str
         Remarks printed under the table (warnings, non-reproduced values).
+    units : mapping, optional
+        Column -> unit, for columns whose name does not say it: shown in the
+        table headings (:func:`_heading`) and stored under ``"units"`` in the JSON.
     """
     if as_json:
-        document = {"title": title, **(extra or {}), "rows": list(rows), "notes": list(notes)}
+        document = {"title": title, **({"units": dict(units)} if units else {}),
+                    **(extra or {}), "rows": list(rows), "notes": list(notes)}
         print(json.dumps(_plain(document), indent=2))
         return
-    table = Table(title=title)
+    table = Table(title=escape(title))
     columns = list(rows[0]) if rows else []
     for column in columns:
-        table.add_column(column, justify="right")
+        table.add_column(escape(_heading(column, (units or {}).get(column))), justify="right")
     for row in rows:
-        table.add_row(*(_cell(row[column], digits) for column in columns))
+        table.add_row(*(escape(_cell(row[column], digits)) for column in columns))
     console.print(table)
     for note in notes:
-        console.print(f"[yellow]note:[/yellow] {note}")
+        say("note:", "yellow", note)

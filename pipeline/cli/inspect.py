@@ -89,7 +89,7 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
 
 def _show(report: dict) -> None:
     shown = {"\t": "tab", " ": "space"}
-    console.print(f"[bold]{report['file']}[/bold]")
+    console.print(f"[bold]{escape(str(report['file']))}[/bold]", highlight=False)
     for key in ("layout", "encoding", "delimiter", "decimal", "sheet", "rows", "cycles",
                 "machine_cycles"):
         value = report[key]

@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from pipeline.cli._output import console
+from pipeline.cli._output import say
 from pipeline.errors import ChainbenchError
 from pipeline.store.lock import campaign_lock
 
@@ -30,16 +30,18 @@ def processed_folder(target: Path) -> Path:
     ChainbenchError
         When neither `target` nor its processed folder holds a summary.
     """
-    from pipeline.campaign import default_output
-    from pipeline.report.build import SUMMARY_NAME
+    from pipeline.campaign import PROCESSED_FOLDER, default_output
+    from pipeline.runsheet import RUN_SHEET_NAME
+    from pipeline.store.layout import SUMMARY
 
-    if (target / SUMMARY_NAME).is_file():
+    if (target / SUMMARY).is_file():
         return target
-    processed = default_output(target)
-    if (processed / SUMMARY_NAME).is_file():
+    is_campaign = (target / RUN_SHEET_NAME).is_file() or target.name == RUN_SHEET_NAME
+    processed = default_output(target) if is_campaign else Path(PROCESSED_FOLDER) / target.name
+    if (processed / SUMMARY).is_file():
         return processed
     raise ChainbenchError(
-        f"no processed results for {target}", file=processed / SUMMARY_NAME,
+        f"no processed results for {target}", file=processed / SUMMARY,
         hint=f"process the campaign first (chainbench run raw/{target.name}), or name a "
              "processed/<campaign> folder")
 
@@ -60,6 +62,6 @@ def command(
     except ChainbenchError as error:
         if debug:
             raise
-        console.print(f"[red]error[/red] {error}", highlight=False)
+        say("error", "red", str(error))
         raise typer.Exit(1) from None
     print(report)

@@ -13,37 +13,105 @@ from rich.markup import escape
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
-from pipeline.cli._output import console
+from pipeline.cli._output import console, say
 from pipeline.errors import ChainbenchError
 from pipeline.runsheet import RUN_SHEET_NAME, load_run_sheet
 
 if TYPE_CHECKING:
+    import xarray as xr
+
     from pipeline.campaign import CampaignResult
+    from pipeline.runs import Progress as ProgressCallback
+    from pipeline.runsheet import RunDef, RunSheet
 
 # The stages (pipeline.campaign, pipeline.runs) are imported inside the commands that
 # run them, so that every other command starts without loading them.
 
 RAW = Path("raw")
-PROCESSED = Path("processed")
+#: Where a project keeps its campaigns, as said in messages.
+EXPECTED = f"{RAW}/<campaign>/{RUN_SHEET_NAME}"
+#: Where the summary tables and ``--json`` keep their numbers, as said in messages.
+SI_NOTE = ("numbers in SI units as in summary.csv (forces in N, lengths in m, ratios as "
+           "fractions): the unit of every column and scalar is under \"units\"; the console "
+           "tables show forces in kN")
 
 CampaignArgs = Annotated[
     list[Path] | None,
-    typer.Argument(help="Campaign folders (default: every campaign under raw/).",
-                   show_default=False),
+    typer.Argument(help=f"Campaign folders or their {RUN_SHEET_NAME} (default: every "
+                        f"{EXPECTED}).", show_default=False),
 ]
+OutputRoot = Annotated[Path | None, typer.Option(
+    "--output", help="Root of the outputs: a campaign goes to OUTPUT/<campaign id> "
+                     "(default: processed/<campaign id> beside raw/).", show_default=False)]
 
 
 def campaign_folders(given: list[Path] | None) -> list[Path]:
-    """The folders to process: those given, else every ``raw/*`` with a run sheet."""
+    """The campaigns to process: those given, else every ``raw/*`` with a run sheet.
+
+    Parameters
+    ----------
+    given : list of Path or None
+        Campaign folders, or run sheets (files named ``campaign.toml``).
+
+    Returns
+    -------
+    list of Path
+        The campaigns given, as given; else every ``raw/<campaign>`` folder of
+        the current folder that holds a run sheet, sorted.
+
+    Raises
+    ------
+    ChainbenchError
+        When a path given is not a campaign, or none was given and the current
+        folder has no campaign; the message names the absolute path looked at.
+    """
     if given:
-        return list(given)
+        return [_campaign(path) for path in given]
+    raw = RAW.resolve()
+    if not raw.is_dir():
+        raise ChainbenchError(
+            f"no campaign found: {raw} does not exist",
+            hint=f"run from a project folder holding {EXPECTED}, name a campaign folder, "
+                 "or draft a run sheet with chainbench init FOLDER")
     folders = sorted(path.parent for path in RAW.glob(f"*/{RUN_SHEET_NAME}"))
     if not folders:
         raise ChainbenchError(
-            "no campaign found", file=RAW,
-            hint=f"run from the project folder, or name a folder holding a {RUN_SHEET_NAME}",
-        )
+            f"no campaign found: no {EXPECTED} in {raw}",
+            hint=f"draft a run sheet with chainbench init {RAW}/<campaign>")
     return folders
+
+
+def _campaign(path: Path) -> Path:
+    """`path` when it is a campaign folder or its run sheet, else a ChainbenchError."""
+    if (path / RUN_SHEET_NAME).is_file() or (path.name == RUN_SHEET_NAME and path.is_file()):
+        return path
+    if not path.exists():
+        problem = "it does not exist"
+    elif path.is_dir():
+        problem = f"it holds no {RUN_SHEET_NAME}"
+    else:
+        problem = f"it is neither a campaign folder nor a {RUN_SHEET_NAME}"
+    draft = path if path.is_dir() else "FOLDER"
+    raise ChainbenchError(
+        f"no campaign at {path.resolve()}: {problem}",
+        hint=f"expected a folder holding a {RUN_SHEET_NAME} ({EXPECTED}), or that file; "
+             f"draft one with chainbench init {draft}")
+
+
+def _campaigns_or_exit(given: list[Path] | None, debug: bool, stderr: bool) -> list[Path]:
+    """The campaigns to work on; a one-line error and exit status 1 when there are none."""
+    try:
+        return campaign_folders(given)
+    except ChainbenchError as error:
+        if debug:
+            raise
+        say("error", "red", str(error), stderr=stderr)
+        raise typer.Exit(1) from None
+
+
+def _output_folder(sheet: RunSheet, output_root: Path | None) -> Path | None:
+    """``output_root/<campaign id>``, or None (the campaign's default) without a root."""
+    return None if output_root is None else Path(output_root) / sheet.campaign.id
 
 
 @contextmanager
@@ -62,7 +130,7 @@ def _progress_reporter(total_runs: int):
             if run_id not in seen and seen:
                 bar.advance(task)
             seen.add(run_id)
-            bar.update(task, description=f"{run_id}: {stage}")
+            bar.update(task, description=escape(f"{run_id}: {stage}"))
 
         yield step
 
@@ -73,8 +141,8 @@ def _fmt(value: float, scale: float = 1.0, digits: int = 4) -> str:
 
 def _chain_table(summary) -> Table:
     low, high = (100 * float(value) for value in summary.attrs["band"].split())
-    table = Table(title=f"chain stiffness E0 (lab band {low:g} to {high:g} %)")
-    for column in ("chain", "n", "E0_exp [kN]", "95 % interval", "E0_theory [kN]",
+    table = Table(title=f"chain stiffness E0 (forces in kN; lab band {low:g} to {high:g} %)")
+    for column in ("chain", "n", "E0_exp [kN]", "95 % interval [kN]", "E0_theory [kN]",
                    "d [%]", "in band"):
         table.add_column(escape(column), justify="right")
     for chain in summary["chain"].values:
@@ -82,7 +150,7 @@ def _chain_table(summary) -> Table:
         interval = (f"{_fmt(float(row['E0_exp_ci_low']), 1e3, 5)}.."
                     f"{_fmt(float(row['E0_exp_ci_high']), 1e3, 5)}")
         table.add_row(
-            str(chain), str(int(row["n_specimens"])), _fmt(float(row["E0_exp"]), 1e3, 5),
+            escape(str(chain)), str(int(row["n_specimens"])), _fmt(float(row["E0_exp"]), 1e3, 5),
             interval, _fmt(float(row["E0_theory"]), 1e3, 5),
             _fmt(100 * float(row["discrepancy"]), 1, 3),
             {1: "yes", 0: "NO", -1: "-"}[int(row["in_band"])],
@@ -91,13 +159,14 @@ def _chain_table(summary) -> Table:
 
 
 def _impact_table(summary) -> Table:
-    table = Table(title="impact tensions: measured (median) vs Paper 000 eq. (16), k = 2")
+    table = Table(title="impact tensions (forces in N): measured (median) vs Paper 000 "
+                  "eq. (16), k = 2")
     for column in ("run", "z", "psi [deg]", "omega [1/s]", "N_u1 meas [N]", "N_u1 theory [N]",
                    "N_u2 meas [N]", "N_u2 theory [N]"):
         table.add_column(escape(column), justify="right")
     for point in summary["operating_point"].values:
         row = summary.sel(operating_point=point)
-        table.add_row(str(point), *(_fmt(float(row[name])) for name in (
+        table.add_row(escape(str(point)), *(_fmt(float(row[name])) for name in (
             "teeth", "apex_angle", "omega", "N_u1_meas", "N_u1_theory", "N_u2_meas",
             "N_u2_theory")))
     return table
@@ -191,20 +260,32 @@ def _print_result(result: CampaignResult) -> None:
                 f"(95 % interval {float(summary['k_fit_ci_low']):.4g} .. "
                 f"{float(summary['k_fit_ci_high']):.4g}; Ryabov: k = 2)", highlight=False)
     for note in filter(None, summary.attrs.get("notes", "").split("\n")):
-        console.print(f"[yellow]note[/yellow] {escape(note)}", highlight=False)
+        say("note", "yellow", note)
     for run_id, found in result.warnings.items():
         for warning in found:
-            console.print(f"[yellow]warning[/yellow] {escape(run_id)}: {escape(warning)}",
-                          highlight=False)
+            say("warning", "yellow", f"{run_id}: {warning}")
     for failure in result.failures:
-        console.print(f"[red]failed[/red] {escape(failure.run_id)}: {escape(failure.message)}",
-                      highlight=False)
-    console.print(f"{len(result.redone)} run(s) processed, {len(result.reused)} unchanged; "
-                  f"results in {result.output}", highlight=False)
+        say("failed", "red", f"{failure.run_id}: {failure.message}")
+    for message in result.implausible:
+        say("implausible", "red", message)
+    console.print(f"{_counts(result)}; results in {result.output} (summary tables in SI "
+                  "units: forces in N)", markup=False, highlight=False, soft_wrap=True)
     if result.report is not None:
-        console.print(f"report: {result.report}", highlight=False)
+        console.print(f"report: {result.report}", markup=False, highlight=False)
     else:
-        console.print(f"[red]report not written[/red]: {result.report_error}", highlight=False)
+        say("report not written:", "red", str(result.report_error))
+
+
+def _counts(result: CampaignResult) -> str:
+    """What became of the runs: ``3 run(s) processed, 1 unchanged, 2 failed``."""
+    return (f"{len(result.redone)} run(s) processed, {len(result.reused)} unchanged, "
+            f"{len(result.failures)} failed")
+
+
+def _units(summary: xr.Dataset, names) -> dict[str, str | None]:
+    """The unit of each variable of `names` (its ``units`` attribute; None for text and
+    verdict codes)."""
+    return {name: summary[name].attrs.get("units") for name in names}
 
 
 def _result_json(result: CampaignResult) -> dict:
@@ -217,14 +298,21 @@ def _result_json(result: CampaignResult) -> dict:
     }
     scalars = {name: float(summary[name]) for name in summary.data_vars
                if summary[name].ndim == 0}
+    columns = [name for dim in tables for name in summary_table(summary, dim).columns]
     return {
         "campaign": result.campaign_id,
         "output": str(result.output),
+        "note": SI_NOTE,
+        "units": _units(summary, [*columns, *scalars]),
         "chains": tables.get("chain", []),
         "operating_points": tables.get("operating_point", []),
         **scalars,
         "failed_runs": [{"run": f.run_id, "error": f.message} for f in result.failures],
+        "implausible": result.implausible,
         "warnings": result.warnings,
+        "processed": len(result.redone),
+        "unchanged": len(result.reused),
+        "failed": len(result.failures),
         "redone": result.redone,
         "reused": result.reused,
         "report": str(result.report) if result.report else None,
@@ -252,7 +340,7 @@ def _dask_client(workers: int | None, scheduler: str | None):
 
 def run_command(
     campaigns: CampaignArgs = None,
-    output_root: Annotated[Path, typer.Option("--output", help="Root of the outputs.")] = PROCESSED,
+    output_root: OutputRoot = None,
     force: Annotated[bool, typer.Option("--force", help="Redo every run, changed or not.")] = False,
     workers: Annotated[int | None, typer.Option(
         "--workers", min=1, help="Process runs on a local dask cluster of N workers.")] = None,
@@ -268,21 +356,23 @@ def run_command(
     from pipeline.campaign import process_campaign
 
     all_ok, documents = True, []
+    folders = _campaigns_or_exit(campaigns, debug, stderr=as_json)
     with _dask_client(workers, scheduler) as client:
-        for folder in campaign_folders(campaigns):
+        for folder in folders:
             if not as_json:
-                console.print(f"[bold]campaign {folder}[/bold]", highlight=False)
+                console.print(f"[bold]campaign {escape(str(folder))}[/bold]", highlight=False)
             try:
-                total = len(load_run_sheet(folder).runs)
-                with _progress_reporter(total) as progress:
+                sheet = load_run_sheet(folder)
+                with _progress_reporter(len(sheet.runs)) as progress:
                     result = process_campaign(
-                        folder, output_root / folder.name, progress=None if as_json else progress,
-                        debug=debug, force=force, client=client)
+                        folder, _output_folder(sheet, output_root),
+                        progress=None if as_json else progress, debug=debug, force=force,
+                        client=client)
             except ChainbenchError as error:
                 if debug:
                     raise
                 all_ok = False
-                console.print(f"[red]error[/red] {error}", highlight=False)
+                say("error", "red", str(error), stderr=as_json)
                 documents.append({"campaign": str(folder), "error": str(error)})
                 continue
             all_ok &= result.ok
@@ -295,41 +385,77 @@ def run_command(
     raise typer.Exit(0 if all_ok else 1)
 
 
+def _dataset_warnings(dataset: xr.Dataset) -> list[str]:
+    """What the stages decided or repaired for a run, as its dataset records it."""
+    found = [dataset.attrs.get(name, "") for name in ("ingest_warnings", "warnings", "messages")]
+    return [text for joined in found for text in joined.split("; ") if text]
+
+
+def _check_run(sheet: RunSheet, run: RunDef, output: Path,
+               progress: ProgressCallback) -> list[str]:
+    """Process one run as `run` does, storing nothing; its warnings.
+
+    Raises the error that would make `run` list the run as failed.
+    """
+    from pipeline.runs import chain_stiffness_for, process_engagement_run, process_tensile_run
+
+    if run.kind == "tensile":
+        dataset = process_tensile_run(sheet, run, "", progress)
+    else:
+        E0 = chain_stiffness_for(sheet, run, output)
+        dataset = process_engagement_run(sheet, run, "", E0, progress)
+    return _dataset_warnings(dataset)
+
+
+def _sheet_problems(sheet: RunSheet) -> list[str]:
+    """The run-sheet entries `run` would set aside, as `run` lists them."""
+    from pipeline.campaign import sheet_failures
+
+    return [f"{failure.run_id}: {failure.message}" for failure in sheet_failures(sheet)]
+
+
+def _validate_campaign(folder: Path, output_root: Path | None) -> bool:
+    """Check one campaign as `run` would process it, print what is found; True when clean."""
+    from pipeline.campaign import default_output, run_failure
+
+    try:
+        sheet = load_run_sheet(folder)
+    except ChainbenchError as error:
+        say("error", "red", str(error))
+        return False
+    output = _output_folder(sheet, output_root) or default_output(sheet)
+    problems = _sheet_problems(sheet)
+    with _progress_reporter(len(sheet.runs)) as progress:
+        for run in sheet.runs:
+            try:
+                found = _check_run(sheet, run, output, progress)
+            except Exception as error:  # as `run` does: every run is checked
+                problems.append(f"{run.id}: {run_failure(sheet, run, error).message}")
+                continue
+            for warning in found:
+                say("warning", "yellow", f"{run.id}: {warning}")
+    for problem in problems:
+        say("error", "red", problem)
+    console.print(f"{folder}: {len(sheet.runs)} runs, {len(problems)} problems",
+                  markup=False, highlight=False)
+    return not problems
+
+
 def validate_command(
     campaigns: CampaignArgs = None,
+    output_root: Annotated[Path | None, typer.Option(
+        "--output", help="Root of the outputs `run` writes to, read for stiffness_from "
+                         "(default: processed/ beside raw/); nothing is written.",
+        show_default=False)] = None,
 ) -> None:
     """Check run sheets and their files as `run` would, writing nothing.
 
-    Every file is read; a tensile run is also conditioned and fitted, so that what
-    `run` would refuse (cycles found against asked, channels, gauge length) is found
-    here, and what it would decide (channels used, fracture) is shown as warnings.
+    Every run goes through the processing of `run` (read, condition and fit a
+    tensile run; read, detect the events and extract the impacts of an
+    engagement log), so that what `run` would refuse is found here, and what it
+    would decide (channels used, fracture) is shown as warnings.
     """
-    from pipeline.runs import analyse_tensile_run, read_run
-
     all_ok = True
-    for folder in campaign_folders(campaigns):
-        try:
-            sheet = load_run_sheet(folder)
-        except ChainbenchError as error:
-            console.print(f"[red]error[/red] {error}", highlight=False)
-            all_ok = False
-            continue
-        problems = [str(error) for error in sheet.invalid_runs]
-        for run in sheet.runs:
-            try:
-                if run.kind == "tensile":
-                    found = analyse_tensile_run(sheet, run).warnings
-                else:
-                    found = read_run(sheet, run)[1].warnings
-            except ChainbenchError as error:
-                problems.append(f"run {run.id}: {error}")
-                continue
-            for warning in found:
-                console.print(f"[yellow]warning[/yellow] {run.id}: {escape(warning)}",
-                              highlight=False)
-        for problem in problems:
-            console.print(f"[red]error[/red] {escape(problem)}", highlight=False)
-        all_ok &= not problems
-        summary = f"{folder}: {len(sheet.runs)} runs, {len(problems)} problems"
-        console.print(summary, highlight=False)
+    for folder in _campaigns_or_exit(campaigns, debug=False, stderr=False):
+        all_ok &= _validate_campaign(folder, output_root)
     raise typer.Exit(0 if all_ok else 1)

@@ -263,6 +263,10 @@ def _pull_language(layout: Layout, language: Language) -> str | None:
     return None
 
 
+#: Units of the simulated engagement table's columns whose names do not say them.
+TENSION_UNITS = {"N_u1": "N", "N_u2": "N"}
+
+
 class EngagementFormat(StrEnum):
     """File formats of the simulated engagement logs."""
 
@@ -374,6 +378,7 @@ def engagement(
         as_json=as_json,
         extra={"out": str(out), "run_sheet": str(sheet), "truth": str(out / "truth.json")},
         digits=6,
+        units=TENSION_UNITS,
     )
 
 

@@ -173,7 +173,8 @@ def command(
         rows,
         title=f"Paper 000: impact tensions, chain {chain}",
         as_json=as_json,
-        extra={"inputs": inputs, "units": UNITS},
+        extra={"inputs": inputs},
+        units=UNITS,
         notes=[
             "units: psi in deg, v in m/s, N in N, tau in s; "
             f"omega = {omega:g} 1/s, L = {branch_length:g} m, "

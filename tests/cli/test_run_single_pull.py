@@ -50,4 +50,4 @@ def test_validate_refuses_what_run_would_refuse(demo):
         'gauge_length_mm = 320\n', '', 1), encoding="utf-8")  # run B reads lengths only
     result = runner.invoke(app, ["validate", str(demo)], env={"COLUMNS": "200"})
     assert result.exit_code == 1
-    assert "run P18-B" in result.output and "gauge_length_mm" in result.output
+    assert "error P18-B: " in result.output and "gauge_length_mm" in result.output
