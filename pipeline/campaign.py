@@ -584,9 +584,12 @@ def _check_output_folder(output: Path, sheet: RunSheet) -> None:
         raise OutputError(
             "outputs are never written inside raw/", file=output,
             hint="leave out --output, or give a folder outside raw/")
-    if resolved.exists() and not resolved.is_dir():
-        raise OutputError("the output folder is a file", file=output,
-                          hint="move the file away or give another --output")
+    in_the_way = next((path for path in (resolved, *resolved.parents)
+                       if path.exists() and not path.is_dir()), None)
+    if in_the_way is not None:
+        raise OutputError("the output folder is a file" if in_the_way == resolved
+                          else f"the output folder lies under a file ({in_the_way})",
+                          file=output, hint="move the file away or give another --output")
     try:
         resolved.mkdir(parents=True, exist_ok=True)
     except OSError as error:

@@ -279,7 +279,8 @@ def probable_slip(ratio: float, quantity: str, *,
     -------
     str or None
         The cause and the factor (``"a force in N labelled kN (factor 1000)"``)
-        of the most common candidate in :data:`SLIPS`, or None.
+        of every candidate, the most common first (the order of :data:`SLIPS`),
+        or None: a value far off within a wide spread may fit more than one.
 
     Examples
     --------
@@ -296,12 +297,12 @@ def probable_slip(ratio: float, quantity: str, *,
     if not (math.isfinite(ratio) and ratio > 0):
         return None
     low, high = spread
-    for slip in SLIPS:
-        for factor, causes, shown in ((slip.factor, slip.up, _number(slip.factor)),
-                                      (1 / slip.factor, slip.down, f"1/{_number(slip.factor)}")):
-            if kind in causes and low <= ratio / factor <= high:
-                return f"{causes[kind]} (factor {shown})"
-    return None
+    found = [f"{causes[kind]} (factor {shown})" for slip in SLIPS
+             for factor, causes, shown in ((slip.factor, slip.up, _number(slip.factor)),
+                                           (1 / slip.factor, slip.down,
+                                            f"1/{_number(slip.factor)}"))
+             if kind in causes and low <= ratio / factor <= high]
+    return ", or ".join(found) or None
 
 
 def _outside(ratio: float, band: tuple[float, float]) -> bool:
