@@ -45,3 +45,25 @@ def pytest_collection_modifyitems(config, items):
     for item in items:
         if item.get_closest_marker("posix_only"):
             item.add_marker(skip)
+
+
+@pytest.fixture(scope="session")
+def simulated(tmp_path_factory):
+    """``simulated(kind, *options)``: the folder of a virtual-bench campaign written by
+    ``chainbench simulate KIND --out FOLDER *options``, once per session; copy it before
+    changing it."""
+    from typer.testing import CliRunner
+
+    from pipeline.cli import app
+
+    made: dict[tuple[str, ...], Path] = {}
+
+    def make(kind: str, *options: str) -> Path:
+        if (kind, *options) not in made:
+            folder = tmp_path_factory.mktemp(kind) / "campaign"
+            result = CliRunner().invoke(app, ["simulate", kind, "--out", str(folder), *options])
+            assert result.exit_code == 0, result.output
+            made[(kind, *options)] = folder
+        return made[(kind, *options)]
+
+    return make

@@ -34,7 +34,8 @@ HOSTILE_RUNS = {
     "cut": 'file = "cut.csv"\nchain = "c18x64"\ngauge_length_mm = 900',
     "missing": 'file = "gone.csv"\nchain = "c18x64"\ngauge_length_mm = 900',
 }
-CHAINS = '\n[chains.tiny]\ncatalog = "18x64"\nt_mm = 1e-9\n\n[chains."[/bold]"]\ncatalog = "18x64"\n'
+CHAINS = ('\n[chains.tiny]\ncatalog = "18x64"\nt_mm = 1e-9\n'
+          '\n[chains."[/bold]"]\ncatalog = "18x64"\n')
 
 
 @pytest.fixture

@@ -23,13 +23,9 @@ CHAINBENCH = [sys.executable, "-c", "from pipeline.cli import app; app()"]
 
 
 @pytest.fixture(scope="module")
-def source(tmp_path_factory) -> Path:
-    """A 4-specimen tensile campaign from the virtual bench (written once)."""
-    folder = tmp_path_factory.mktemp("src") / "c18"
-    result = runner.invoke(app, ["simulate", "tensile", "--out", str(folder), "--specimens", "4",
-                                 "--seed", "3", "--campaign", "c18"])
-    assert result.exit_code == 0, result.output
-    return folder
+def source(simulated) -> Path:
+    """A 4-specimen tensile campaign from the virtual bench."""
+    return simulated("tensile", "--specimens", "4", "--seed", "3", "--campaign", "c18")
 
 
 @pytest.fixture

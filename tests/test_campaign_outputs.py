@@ -18,7 +18,6 @@ import xarray as xr
 from typer.testing import CliRunner
 
 from pipeline.campaign import default_output, process_campaign
-from pipeline.cli import app
 from pipeline.errors import OutputError
 from pipeline.store import layout
 from pipeline.store.netcdf import read_dataset
@@ -27,13 +26,9 @@ runner = CliRunner()
 
 
 @pytest.fixture(scope="module")
-def source(tmp_path_factory) -> Path:
-    """A 2-specimen tensile campaign from the virtual bench (written once)."""
-    folder = tmp_path_factory.mktemp("src") / "c18"
-    result = runner.invoke(app, ["simulate", "tensile", "--out", str(folder), "--specimens", "2",
-                                 "--seed", "3", "--campaign", "c18"])
-    assert result.exit_code == 0, result.output
-    return folder
+def source(simulated) -> Path:
+    """A 2-specimen tensile campaign from the virtual bench."""
+    return simulated("tensile", "--specimens", "2", "--seed", "3", "--campaign", "c18")
 
 
 @pytest.fixture

@@ -20,22 +20,14 @@ from pipeline.cli import app
 runner = CliRunner()
 
 
-def simulate(tmp_path_factory, kind: str, *options: str) -> Path:
-    folder = tmp_path_factory.mktemp(kind) / "c"
-    result = runner.invoke(app, ["simulate", kind, "--out", str(folder), "--campaign", "c",
-                                 *options])
-    assert result.exit_code == 0, result.output
-    return folder
+@pytest.fixture(scope="module")
+def tensile_source(simulated) -> Path:
+    return simulated("tensile", "--specimens", "3", "--seed", "5", "--campaign", "c")
 
 
 @pytest.fixture(scope="module")
-def tensile_source(tmp_path_factory) -> Path:
-    return simulate(tmp_path_factory, "tensile", "--specimens", "3", "--seed", "5")
-
-
-@pytest.fixture(scope="module")
-def engagement_source(tmp_path_factory) -> Path:
-    return simulate(tmp_path_factory, "engagement", "--format", "csv", "--seed", "2")
+def engagement_source(simulated) -> Path:
+    return simulated("engagement", "--format", "csv", "--seed", "2", "--campaign", "c")
 
 
 def copy(source: Path, tmp_path: Path) -> Path:
