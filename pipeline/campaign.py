@@ -292,7 +292,7 @@ def _specimen_row(run: RunDef, scalars: dict[str, float], stiffness: SpecimenSti
             "single_pull": scalars["single_pull"], **strength_from(scalars)}
 
 
-def _collect(sheet: RunSheet, plans: dict[str, _Plan], stored: dict[str, tuple]):
+def _collect(sheet: RunSheet, E0s: dict[str, float | None], stored: dict[str, tuple]):
     """Each stored run's result: specimen stiffness and specimen row per tensile run,
     operating point per engagement run, warnings."""
     specimens: dict[str, SpecimenStiffness] = {}
@@ -307,7 +307,7 @@ def _collect(sheet: RunSheet, plans: dict[str, _Plan], stored: dict[str, tuple])
             specimens[run.id] = specimen_from(scalars)
             rows[run.id] = _specimen_row(run, scalars, specimens[run.id])
         else:
-            points[run.id] = {**operating_point(sheet, run, plans[run.id].E0),
+            points[run.id] = {**operating_point(sheet, run, E0s[run.id]),
                               **measured_point(scalars)}
         found = [attrs.get(name, "") for name in ("ingest_warnings", "warnings", "messages")]
         notes[run.id] = [text for joined in found for text in joined.split("; ") if text]
@@ -545,7 +545,8 @@ def process_campaign(
         files = {run.id: layout.run_output(output, run.id) for run in sheet.runs
                  if run.id in current}
         removed = _remove_stale_runs(output, sheet.campaign.id, set(files))
-        specimens, rows, points, run_warnings = _collect(sheet, plans, current)
+        E0s = {run_id: plan.E0 for run_id, plan in plans.items()}
+        specimens, rows, points, run_warnings = _collect(sheet, E0s, current)
         key = _digest({"runs": {run_id: plans[run_id].key for run_id in sorted(files)},
                        "failures": [failure.message for failure in failures],
                        "sheet": sheet.sha256, "code": code_fingerprint()})
@@ -574,6 +575,52 @@ def process_campaign(
             (output / layout.REPORT).unlink(missing_ok=True)  # an old report is not current
         _write_manifest(output, key, written)
     return result
+
+
+def check_campaign(path: str | Path, output: str | Path | None = None,
+                   progress: Progress | None = None) -> CampaignResult:
+    """Everything :func:`process_campaign` does, in memory, writing nothing.
+
+    Every run is read, conditioned and fitted, and the campaign summary with its
+    plausibility flags is built, so that what ``chainbench run`` would refuse or
+    flag is found before anything is written (``chainbench validate``).
+
+    Parameters
+    ----------
+    path : str or Path
+        The campaign folder or its run sheet.
+    output : str or Path, optional
+        Where ``run`` would write (read only: for ``stiffness_from``); default
+        ``<project>/processed/<campaign id>``.
+    progress : callable, optional
+        Called as ``progress(run_id, stage)`` at each stage.
+
+    Returns
+    -------
+    CampaignResult
+        The summary, the failures and the warnings; no run file, no report.
+    """
+    sheet = load_run_sheet(path)
+    output = Path(output) if output is not None else default_output(sheet)
+    progress = progress or (lambda run_id, stage: None)
+    failures, stored, E0s = sheet_failures(sheet), {}, {}
+    for run in sheet.runs:
+        try:
+            if run.kind == "tensile":
+                E0s[run.id], dataset = None, process_tensile_run(sheet, run, "", progress)
+            else:
+                E0s[run.id] = chain_stiffness_for(sheet, run, output)
+                dataset = process_engagement_run(sheet, run, "", E0s[run.id], progress)
+        except Exception as error:  # as process_campaign: every run is checked
+            failures.append(run_failure(sheet, run, error))
+            continue
+        stored[run.id] = ({name: variable.item() for name, variable in dataset.items()
+                           if variable.ndim == 0 and variable.dtype.kind in "fiu"},
+                          dataset.attrs)
+    specimens, rows, points, warnings = _collect(sheet, E0s, stored)
+    summary = _summary(sheet, list(stored), specimens, rows, points, failures)
+    return CampaignResult(sheet.campaign.id, output, summary, failures=failures,
+                          warnings=warnings)
 
 
 def _check_output_folder(output: Path, sheet: RunSheet) -> None:

@@ -392,7 +392,7 @@ def _error(sheet: Path, prefix: str, error: ValidationError, data: Any) -> RunSh
     first = found[0]
     if first["type"] not in _EXPECTED:
         return RunSheetError(
-            first["msg"], file=sheet, column=column,
+            first["msg"].removeprefix("Value error, "), file=sheet, column=column,
             hint=f"got {first.get('input')!r}" if "input" in first else None,
         )
     expected = " or ".join(dict.fromkeys(

@@ -101,3 +101,19 @@ def test_an_output_path_that_is_a_file_is_one_clear_error(project, monkeypatch):
     assert "lies under a file" in result.output
     assert "Traceback" not in result.output
     assert (project / "out").read_text(encoding="utf-8") == "in the way"
+
+
+def test_validate_finds_what_run_finds_and_writes_nothing(project, monkeypatch):
+    monkeypatch.chdir(project)
+    checked = runner.invoke(app, ["validate"], env=WIDE)
+    assert not (project / "processed").exists()
+    ran = runner.invoke(app, ["run"], env=WIDE)
+    assert checked.exit_code == ran.exit_code == 1
+    refused = sorted(line.removeprefix("failed ") for line in failed_lines(ran.output))
+    found = sorted(line.removeprefix("error ") for line in checked.output.splitlines()
+                   if line.startswith("error "))
+    assert found == refused
+    implausible = sorted(line for line in ran.output.splitlines()
+                         if line.startswith("implausible "))
+    assert implausible and implausible == sorted(
+        line for line in checked.output.splitlines() if line.startswith("implausible "))

@@ -21,8 +21,7 @@ if TYPE_CHECKING:
     import xarray as xr
 
     from pipeline.campaign import CampaignResult
-    from pipeline.runs import Progress as ProgressCallback
-    from pipeline.runsheet import RunDef, RunSheet
+    from pipeline.runsheet import RunSheet
 
 # The stages (pipeline.campaign, pipeline.runs) are imported inside the commands that
 # run them, so that every other command starts without loading them.
@@ -385,58 +384,26 @@ def run_command(
     raise typer.Exit(0 if all_ok else 1)
 
 
-def _dataset_warnings(dataset: xr.Dataset) -> list[str]:
-    """What the stages decided or repaired for a run, as its dataset records it."""
-    found = [dataset.attrs.get(name, "") for name in ("ingest_warnings", "warnings", "messages")]
-    return [text for joined in found for text in joined.split("; ") if text]
-
-
-def _check_run(sheet: RunSheet, run: RunDef, output: Path,
-               progress: ProgressCallback) -> list[str]:
-    """Process one run as `run` does, storing nothing; its warnings.
-
-    Raises the error that would make `run` list the run as failed.
-    """
-    from pipeline.runs import chain_stiffness_for, process_engagement_run, process_tensile_run
-
-    if run.kind == "tensile":
-        dataset = process_tensile_run(sheet, run, "", progress)
-    else:
-        E0 = chain_stiffness_for(sheet, run, output)
-        dataset = process_engagement_run(sheet, run, "", E0, progress)
-    return _dataset_warnings(dataset)
-
-
-def _sheet_problems(sheet: RunSheet) -> list[str]:
-    """The run-sheet entries `run` would set aside, as `run` lists them."""
-    from pipeline.campaign import sheet_failures
-
-    return [f"{failure.run_id}: {failure.message}" for failure in sheet_failures(sheet)]
-
-
 def _validate_campaign(folder: Path, output_root: Path | None) -> bool:
     """Check one campaign as `run` would process it, print what is found; True when clean."""
-    from pipeline.campaign import default_output, run_failure
+    from pipeline.campaign import check_campaign
 
     try:
         sheet = load_run_sheet(folder)
+        with _progress_reporter(len(sheet.runs)) as progress:
+            result = check_campaign(folder, _output_folder(sheet, output_root), progress)
     except ChainbenchError as error:
         say("error", "red", str(error))
         return False
-    output = _output_folder(sheet, output_root) or default_output(sheet)
-    problems = _sheet_problems(sheet)
-    with _progress_reporter(len(sheet.runs)) as progress:
-        for run in sheet.runs:
-            try:
-                found = _check_run(sheet, run, output, progress)
-            except Exception as error:  # as `run` does: every run is checked
-                problems.append(f"{run.id}: {run_failure(sheet, run, error).message}")
-                continue
-            for warning in found:
-                say("warning", "yellow", f"{run.id}: {warning}")
-    for problem in problems:
-        say("error", "red", problem)
-    console.print(f"{folder}: {len(sheet.runs)} runs, {len(problems)} problems",
+    for run_id, found in result.warnings.items():
+        for warning in found:
+            say("warning", "yellow", f"{run_id}: {warning}")
+    for failure in result.failures:
+        say("error", "red", f"{failure.run_id}: {failure.message}")
+    for message in result.implausible:
+        say("implausible", "red", message)
+    problems = len(result.failures) + len(result.implausible)
+    console.print(f"{folder}: {len(sheet.runs)} runs, {problems} problems",
                   markup=False, highlight=False)
     return not problems
 

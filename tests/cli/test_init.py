@@ -101,7 +101,15 @@ def test_realdata_draft_comments(realdata_campaign):
 def test_realdata_draft_validates_once_filled_in(realdata_campaign):
     assert init(str(realdata_campaign)).exit_code == 0
     assert runner.invoke(app, ["validate", str(realdata_campaign)]).exit_code == 1
-    fill_in(realdata_campaign / "campaign.toml")
+    sheet = realdata_campaign / "campaign.toml"
+    fill_in(sheet)
+    # coupons of a few kN are no 18x64 chain: each E0 is flagged against the chain's theory
+    flagged = runner.invoke(app, ["validate", str(realdata_campaign)], env={"COLUMNS": "300"})
+    assert flagged.exit_code == 1
+    lines = [line for line in flagged.output.splitlines() if line.startswith("implausible ")]
+    assert len(lines) == 5 and all("of the theory" in line for line in lines), flagged.output
+    sheet.write_text(sheet.read_text(encoding="utf-8").replace(
+        '[[runs]]\n', '[[runs]]\naccept_implausible = true\n'), encoding="utf-8")
     result = runner.invoke(app, ["validate", str(realdata_campaign)])
     assert result.exit_code == 0, result.output
     assert "5 runs, 0 problems" in " ".join(result.output.split())
