@@ -557,7 +557,7 @@ def command(
         document = {"campaign": folder.as_posix(), "run_sheet": target.as_posix(),
                     "runs": [run_json(run) for run in runs],
                     "skipped": [{"file": name, "reason": reason} for name, reason in skipped]}
-        print(json.dumps(_plain(document), indent=2, ensure_ascii=False))
+        print(json.dumps(_plain(document), indent=2))
         return
     _show(runs, skipped)
     console.print(f"wrote {escape(str(target))}", highlight=False)

@@ -136,6 +136,6 @@ def command(
         )
         raise typer.Exit(2) from error
     if as_json:
-        print(json.dumps(_plain(report), indent=2, ensure_ascii=False))
+        print(json.dumps(_plain(report), indent=2))
     else:
         _show(report)
