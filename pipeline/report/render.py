@@ -10,11 +10,10 @@ import io
 from contextlib import AbstractContextManager
 
 import matplotlib
+from matplotlib.figure import Figure
 
-matplotlib.use("Agg")  # no display: figures are only rendered to files
-
-import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.figure import Figure  # noqa: E402
+# Figures are built as bare matplotlib Figure objects, never through pyplot: no
+# backend is chosen and a user's interactive session (a notebook) is left as it is.
 
 #: Fixed salt of the SVG element ids, so that equal figures give equal files.
 SVG_HASH_SALT = "chainbench"
@@ -36,15 +35,14 @@ STYLE = {
 
 def report_style() -> AbstractContextManager:
     """Context in which figures are built and rendered in the report's style (:data:`STYLE`)."""
-    return plt.rc_context(STYLE)
+    return matplotlib.rc_context(STYLE)
 
 
 def svg(figure: Figure) -> str:
-    """The figure as an inline ``<svg>`` element (no XML prolog, no date); closes it."""
+    """The figure as an inline ``<svg>`` element (no XML prolog, no date)."""
     buffer = io.StringIO()
     with report_style():
         figure.savefig(buffer, format="svg", metadata={"Date": None, "Creator": None},
                        bbox_inches="tight")
-    plt.close(figure)
     text = buffer.getvalue()
     return text[text.index("<svg"):]

@@ -6,7 +6,6 @@ of models.md, never copied from the code's output.
 
 from __future__ import annotations
 
-import doctest
 import json
 import math
 
@@ -129,9 +128,3 @@ def test_bad_input_names_the_option(replace, option):
 )
 def test_spread_values(args, expected):
     assert _options.spread_values(args, {"--teeth", "--apex"}) == expected
-
-
-def test_options_docstring_examples():
-    result = doctest.testmod(_options)
-    assert result.attempted > 0
-    assert result.failed == 0

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import doctest
 import math
 
 import numpy as np
@@ -11,7 +10,6 @@ import pytest
 
 from pipeline.condition.engagement import detect_events
 from pipeline.errors import FitError
-from pipeline.fit import impact_model
 from pipeline.fit.impact import extract_impacts
 from pipeline.fit.impact_model import fit_impact_model, linearity, model_tensions
 from pipeline.simulate.engagement import EngagementSettings, simulate_engagement
@@ -163,7 +161,3 @@ def test_model_tensions_and_linearity_without_model():
     n_u1, n_u2 = model_tensions(points)
     assert np.allclose(n_u1, points["N_u1_meas"]) and np.allclose(n_u2, points["N_u2_meas"])
     assert linearity(points)["model_slope"].isna().all()
-
-
-def test_docstring_examples():
-    assert doctest.testmod(impact_model).failed == 0

@@ -6,7 +6,6 @@ Expectations are computed here independently: the closed forms of ``models.md``
 
 from __future__ import annotations
 
-import doctest
 import json
 import math
 import tomllib
@@ -18,7 +17,6 @@ from typer.testing import CliRunner
 from pipeline.cli import app
 from pipeline.ingest import read_table
 from pipeline.runsheet import load_run_sheet
-from pipeline.simulate import engagement
 from pipeline.simulate.engagement import (
     EngagementSettings,
     simulate_engagement,
@@ -167,7 +165,3 @@ def test_cli_writes_a_campaign_the_run_sheet_accepts(tmp_path):
     assert (truth["E8-40-20"]["N_u1"], truth["E8-40-20"]["N_u2"]) == pytest.approx(expected)
     back, _ = read_table(tmp_path / "E8-40-20.csv", kind="engagement")
     assert len(back) == 2001
-
-
-def test_docstring_examples():
-    assert doctest.testmod(engagement).failed == 0
