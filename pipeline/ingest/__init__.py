@@ -4,15 +4,18 @@
 layout and hands it to the reader of that layout, one module each:
 
 ==================  =========================================================
-layout              module
+layout              reader
 ==================  =========================================================
-``plain_csv``       :mod:`pipeline.ingest.plain_csv`
-``european_csv``    :mod:`pipeline.ingest.european_csv`
-``machine_export``  :mod:`pipeline.ingest.machine_export` (Instron Bluehill...)
 ``mts``             :mod:`pipeline.ingest.mts` (MTS TestWare cyclic acquisition)
+``machine_export``  :mod:`pipeline.ingest.delimited` (Instron Bluehill...)
+``european_csv``    :mod:`pipeline.ingest.delimited`
+``plain_csv``       :mod:`pipeline.ingest.delimited`
 ``xlsx``            :mod:`pipeline.ingest.xlsx`
 ``tdms``            :mod:`pipeline.ingest.tdms`
 ==================  =========================================================
+
+The three delimited layouts share one reader and differ only in how they are
+recognised (:data:`pipeline.ingest.delimited.LAYOUTS`).
 
 Nothing here knows physics: the table says what the file holds, in SI units,
 and the warnings say what looked odd; the conditioning stage decides.
@@ -26,15 +29,7 @@ from pathlib import Path
 import pandas as pd
 
 from pipeline.errors import IngestError, LayoutError
-from pipeline.ingest import (
-    canonical,
-    european_csv,
-    machine_export,
-    mts,
-    plain_csv,
-    tdms,
-    xlsx,
-)
+from pipeline.ingest import canonical, delimited, mts, tdms, xlsx
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.sniff import detect_dialect, find_table, read_head
 from pipeline.ingest.table import ROLES, ColumnInfo, TableMetadata
@@ -42,7 +37,7 @@ from pipeline.ingest.table import ROLES, ColumnInfo, TableMetadata
 __all__ = ["FORMATS", "ROLES", "ColumnInfo", "TableMetadata", "read_table"]
 
 #: Text layouts, in the order they are tried on a file.
-TEXT_LAYOUTS = {module.LAYOUT: module for module in (mts, machine_export, european_csv, plain_csv)}
+TEXT_LAYOUTS = {mts.LAYOUT: mts, **{layout.name: layout for layout in delimited.LAYOUTS}}
 
 #: Values of ``format``: auto-detection, a file format, or one text layout.
 FORMATS = ("auto", "csv", "xlsx", "tdms", *TEXT_LAYOUTS)
@@ -163,6 +158,6 @@ def _read_text(path: Path, layout: str, columns: Mapping | None) -> RawTable:
     delimiter, decimal, width = detect_dialect(head.lines, path)
     spec = find_table(head.lines, path, delimiter, decimal, width)
     if layout == "csv":
-        layout = next(name for name, module in TEXT_LAYOUTS.items()
-                      if module.matches(head, spec) or module is plain_csv)
+        layout = next(name for name, reader in TEXT_LAYOUTS.items()
+                      if reader.matches(head, spec))
     return TEXT_LAYOUTS[layout].read(head, spec, columns)

@@ -1,13 +1,66 @@
-"""Shared steps of the delimited-text readers: header, body parse, raw table."""
+"""Delimited text tables, in the layouts machines and lab PCs write, declared as data.
+
+One reader (:func:`read_contiguous`) reads every delimited layout; a layout
+(:class:`TextLayout`) only says how it is recognised from the sniffed head of
+the file and whether its preamble is kept. :data:`LAYOUTS` are tried in order.
+
+``machine_export``: a free-text preamble, a names row, a separate units row
+(Instron Bluehill ``RawData``)::
+
+    Text Inputs : Specimen label,"22L.3"
+    General : Start Date,13/11/2018 5:14 PM
+
+    Time,Extension,Load,Segment ID,Total Cycle Count
+    (sec),(mm),(N),,
+    0.00000,-2.04726,-4.31900,22476,0
+
+``european_csv``: ``;`` or tab delimiter and a decimal comma, as Polish and
+German lab PCs write (often cp1250)::
+
+    czas [s];siła [kN];wydłużenie [mm]
+    0,00;0,012;0,000
+
+``plain_csv``: one names row with units in brackets, ``,`` delimiter, ``.``
+decimal mark::
+
+    time [s],force [kN],gauge1 [mm],gauge2 [mm]
+    0.00,0.012,0.000,0.001
+
+File defects handled in every layout
+------------------------------------
+* units in ``[...]`` or ``(...)`` after the name, in their own row
+  (``(sec),(mm),(N),,``, ``Sec  mm  kgf``; empty for counters and IDs), or
+  none (then from the run sheet);
+* a UTF-8 BOM, UTF-16 with BOM, cp1250 or latin-1 text;
+* CRLF, LF or CR line ends; blank lines inside the table;
+* quoted cells (``"1.5"``, ``"0,892"``), blanks and ``NaN``/``N/A`` cells
+  (missing values); a trailing delimiter on data rows (an extra empty column,
+  dropped);
+* a decimal comma (``0,892``, parsed by pyarrow with ``decimal_point=","``),
+  also where the comma is the delimiter too: read if quoted, or if every value
+  splits unambiguously into an integer and a fraction field (``0,5,1,25``
+  under ``time,force``), else an error with a hint;
+* a mixed decimal mark (a ``0.5`` in a decimal-comma file), a non-numeric
+  cell, a row with too many or too few fields: an error naming line and column;
+* a half-written last line (no line end after it): too few fields, or a last
+  number that stops short of the decimals its column always has (``0,`` or
+  ``0,0`` where the column writes ``0,000``): dropped with a warning; a
+  complete last line without a line end is kept;
+* the machine's cycle counter (``Total Cycle Count``) kept as ``cycle_count``;
+  columns nobody maps (``Segment ID``) kept out of the table;
+* German, Polish, Spanish and English column names (:mod:`pipeline.ingest.names`).
+"""
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
 
 import pyarrow as pa
 
 from pipeline.errors import EmptyFileError, LayoutError
 from pipeline.ingest.names import split_name_unit
+from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.roles import Candidates, find_candidates
 from pipeline.ingest.sniff import Head, TableSpec
@@ -154,3 +207,29 @@ def read_contiguous(
             f"line {whole.line_of(parsed[1])} is truncated (a half-written last row): dropped"
         )
     return raw_table(parsed, region, spec, found, meta)
+
+
+@dataclass(frozen=True)
+class TextLayout:
+    """A delimited-text layout: its name, how it is recognised, whether it has a preamble."""
+
+    name: str
+    #: True when the sniffed head and table are of this layout
+    matches: Callable[[Head, TableSpec], bool]
+    #: the free-text lines above the table are parsed into the metadata's preamble
+    preamble: bool = False
+
+    def read(self, head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTable:
+        """Read a file sniffed as `head` / `spec` in this layout (see the module docstring)."""
+        found = parse_preamble(spec.preamble, spec.delimiter) if self.preamble else {}
+        return read_contiguous(head, spec, columns, metadata(head, spec, self.name, found))
+
+
+#: The delimited layouts, in the order they are tried; the last one matches any table.
+LAYOUTS = (
+    TextLayout("machine_export", preamble=True,
+               matches=lambda head, spec: bool(spec.preamble) or spec.units_index is not None),
+    TextLayout("european_csv",
+               matches=lambda head, spec: spec.decimal == "," or spec.delimiter == ";"),
+    TextLayout("plain_csv", matches=lambda head, spec: True),
+)

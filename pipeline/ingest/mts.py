@@ -36,7 +36,7 @@ import pyarrow as pa
 
 from pipeline.errors import LayoutError
 from pipeline.ingest.delimited import candidates, header_columns, metadata, raw_table
-from pipeline.ingest.machine_export import parse_preamble
+from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.sniff import Head, TableSpec, split_fields
 from pipeline.ingest.textbody import Region, parse_body, split_table, trim_truncated_tail

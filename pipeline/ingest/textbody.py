@@ -253,7 +253,8 @@ def parse_body(
     float_columns : set of int
         Fields parsed as float64; the others are left to pyarrow's inference.
     as_text : bool
-        Read every field as a string (see :mod:`pipeline.ingest.european_csv`).
+        Read every field as a string (a decimal comma that is also the delimiter;
+        see :mod:`pipeline.ingest.delimited`).
 
     Returns
     -------

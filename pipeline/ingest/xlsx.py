@@ -27,7 +27,7 @@ import pandas as pd
 
 from pipeline.errors import EmptyFileError, LayoutError, ValueParseError
 from pipeline.ingest.delimited import header_columns, units_line
-from pipeline.ingest.machine_export import parse_preamble
+from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.roles import display_name, find_candidates
 from pipeline.ingest.sniff import detect_dialect, find_table, is_missing, is_number

@@ -5,7 +5,7 @@ import pytest
 
 from pipeline.errors import ColumnError
 from pipeline.ingest import read_table
-from pipeline.ingest.machine_export import parse_preamble
+from pipeline.ingest.preamble import parse_preamble
 
 BLUEHILL = (
     'Text Inputs : Specimen label,"22L.3"\r\n'
