@@ -34,7 +34,7 @@ T = TypeVar("T")
 
 
 class CsvLayout(NamedTuple):
-    """A delimited text layout and its ingest target (quality.md)."""
+    """A delimited text layout and its ingest target (docs/quality.md)."""
 
     delimiter: str
     decimal: str
@@ -42,7 +42,7 @@ class CsvLayout(NamedTuple):
     target: float  #: largest read_table time over pyarrow.csv.read_csv on the same file
 
 
-#: The two CSV layouts of quality.md: a plain CSV, and a European lab PC's export
+#: The two CSV layouts of docs/quality.md: a plain CSV, and a European lab PC's export
 #: (semicolons, decimal comma, cp1250).
 CSV_LAYOUTS = {
     "plain": CsvLayout(",", ".", "utf-8", 1.5),

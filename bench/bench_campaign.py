@@ -1,4 +1,4 @@
-"""Benchmark: the campaign-level figures of quality.md on a generated campaign.
+"""Benchmark: the campaign-level figures of docs/quality.md on a generated campaign.
 
 On the campaign written by ``bench/large_campaign.py`` (a tensile and an
 engagement campaign folder), each figure against its baseline measured in the

@@ -15,7 +15,7 @@ Prints the best of ``--repeat`` CPU times and the throughput [samples/s] of
 each, the chunked throughput as a ratio of the baseline's, the peak memory
 each call allocates on top of the decoded log (tracemalloc, which numpy reports
 its arrays to; measured in a separate call, untimed) and its ratio, log plus
-that peak over the decoded arrays (quality.md: under 3x on a 10^7-sample log),
+that peak over the decoded arrays (docs/quality.md: under 3x on a 10^7-sample log),
 and how far the two results differ (events, largest relative N_u difference);
 ``--json`` prints the figures as one JSON line instead::
 
@@ -44,7 +44,7 @@ from pipeline.fit.chunked import extract_impacts_chunked  # noqa: E402
 from pipeline.fit.impact import ImpactResult, extract_impacts  # noqa: E402
 from pipeline.simulate.engagement import EngagementSettings, simulate_engagement  # noqa: E402
 
-#: Largest peak memory over the decoded arrays of a 10^7-sample log (quality.md).
+#: Largest peak memory over the decoded arrays of a 10^7-sample log (docs/quality.md).
 MEMORY_TARGET = 3.0
 
 

@@ -39,7 +39,7 @@ from pipeline.condition.engagement import detect_events  # noqa: E402
 from pipeline.fit.impact import extract_impacts  # noqa: E402
 from pipeline.simulate.engagement import EngagementSettings, simulate_engagement  # noqa: E402
 
-#: Target throughput of detection + extraction [samples/s] (quality.md).
+#: Target throughput of detection + extraction [samples/s] (docs/quality.md).
 TARGET = 2e7
 
 #: What the baseline is.

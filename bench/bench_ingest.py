@@ -10,10 +10,10 @@ format             baseline                                          target
 ``decimal_comma``  ``pyarrow.csv.read_csv`` (told delimiter and      <= 2x
                    decimal mark)
 ``tdms``           ``nptdms.TdmsFile.read`` and every channel's      reported
-                   array (``channel[:]``)                            (issue 4)
+                   array (``channel[:]``)                            (no target)
 =================  ================================================  ===========
 
-``--log engagement`` (default; quality.md's figure): time [s], force [N] and
+``--log engagement`` (default; the figure of docs/quality.md): time [s], force [N] and
 wheel angle [rad] from the virtual engagement bench (20 kHz, SNR 10), as plain
 CSV, as a European lab PC's export (semicolons, decimal comma, cp1250, Polish
 header) and as NI TDMS (time from the waveform properties). ``--log tensile``:

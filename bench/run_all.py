@@ -1,4 +1,4 @@
-"""Every figure of quality.md's performance table, in one command.
+"""Every figure of the performance table of docs/quality.md, in one command.
 
 Each figure against a baseline measured in the same run, with the absolute
 numbers and the peak memory beside, then the target and the verdict:

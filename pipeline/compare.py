@@ -35,7 +35,7 @@ from pipeline.acceptance import (
     chain_verdict,
     specimen_verdicts,
 )
-from pipeline.fit.impact_model import ImpactModelFit, model_tensions
+from pipeline.fit.impact_model import ImpactModelFit, linearity, model_tensions
 from pipeline.fit.stiffness import SpecimenStiffness, combine_specimens
 from pipeline.store.tensile import STRENGTH_VARIABLES
 from pipeline.theory import link_stiffness as ls
@@ -90,7 +90,7 @@ def _theory(chain: ChainInput) -> tuple[float, float, float, list[str]]:
 
 
 def _published(chain: ChainInput) -> tuple[float, float]:
-    row = ls.TABLE_1_PUBLISHED.get(chain.catalog or "")
+    row = ls.table_1().get(chain.catalog or "")
     if row is None:
         return np.nan, np.nan
     return to_si(row.E0_exp_kgf, "kgf"), to_si(row.E0_theor_kgf, "kgf")
@@ -139,7 +139,8 @@ def stiffness_summary(
 
     References
     ----------
-    Paper 001, eq. (20) and Table 1; ``spec/models.md`` 001 (discrepancy check).
+    Paper 001, eq. (20) and Table 1; discrepancy check in
+    ``docs/models/paper-001-link-stiffness.md``.
     """
     rows, notes = [], []
     for chain in chains:
@@ -207,7 +208,7 @@ def impact_summary(points: pd.DataFrame, fit: ImpactModelFit | None) -> xr.Datas
 
     References
     ----------
-    Paper 000, eqs. (1)-(2) and (16); ``spec/models.md`` 000.
+    Paper 000, eqs. (1)-(2) and (16); ``docs/models/paper-000-wheel-impact.md``.
     """
     table = points.copy()
     table["N_u1_theory"], table["N_u2_theory"] = model_tensions(table, k=RYABOV_MASS_SHARE)
@@ -228,7 +229,30 @@ def impact_summary(points: pd.DataFrame, fit: ImpactModelFit | None) -> xr.Datas
                             "k_fit_chi2_reduced"), values, strict=True):
         summary[name] = ((), float(value), {"units": "1", "long_name": name.replace("_", " ")})
     summary["k_fit"].attrs["long_name"] = "share k of link masses in the impact, fitted"
-    return summary
+    return xr.merge([summary, _speed_lines(points)])
+
+
+_LINE_VARIABLES = {
+    "teeth": ("1", "number of teeth of the wheel of the line"),
+    "apex_angle": ("degree", "tooth apex angle of the wheel of the line"),
+    "impact": ("1", "impact of the line: 1 (N_u1) or 2 (N_u2)"),
+    "n_speeds": ("1", "wheel speeds on the line"),
+    "slope": ("N s", "slope of the straight line of measured N_u against omega"),
+    "intercept": ("N", "intercept of that line (0 for N_u proportional to omega)"),
+    "r2": ("1", "R^2 of that line (NaN below 3 speeds)"),
+    "largest": ("N", "largest measured N_u on the line"),
+}
+
+
+def _speed_lines(points: pd.DataFrame) -> xr.Dataset:
+    """Per wheel and impact, the straight line of measured N_u against omega (eq. (16)
+    makes N_u proportional to omega), on dimension ``speed_line``, variables ``line_*``."""
+    lines = linearity(points)
+    lines["apex_angle"] = np.degrees(lines["apex_angle"])
+    return xr.Dataset({
+        f"line_{name}": ("speed_line", lines[name].to_numpy(dtype=float),
+                         {"units": units, "long_name": long_name})
+        for name, (units, long_name) in _LINE_VARIABLES.items()})
 
 
 _SPECIMEN_VARIABLES = {

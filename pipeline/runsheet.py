@@ -1,7 +1,7 @@
 """The run sheet (``campaign.toml``) validated into typed objects.
 
 A campaign folder holds the machine exports and one run sheet; see
-``formats.md``. Validation follows three rules that matter to a lab:
+``docs/run-sheet.md``. Validation follows three rules that matter to a lab:
 
 * every error names the file, the key path (``runs[3].gauge_length_mm``) and
   what was expected, as a :class:`~pipeline.errors.RunSheetError`;

@@ -10,6 +10,7 @@ import pytest
 
 from pipeline.compare import ChainInput, impact_summary, stiffness_summary
 from pipeline.fit.stiffness import SpecimenStiffness
+from pipeline.theory.link_stiffness import table_1
 from pipeline.units import to_si
 
 KGF = 9.80665
@@ -27,19 +28,22 @@ def specimen(E0: float, stderr: float = 0.0) -> SpecimenStiffness:
 
 
 def test_table_1_as_measured_gives_the_papers_rows():
-    # Specimens measuring exactly Table 1's experimental E0 (kgf) of each chain.
+    # Specimens measuring exactly Table 1's experimental E0 (kgf) of each chain, as packaged.
+    published = table_1()
+    exp = np.array([published[name].E0_exp_kgf for name in ("13x50", "18x64")])
     chains = [table1_chain("13x50", 13, 50, 15, 33), table1_chain("18x64", 18, 64, 20, 42)]
-    measured = {"13x50": [specimen(1.12e6 * KGF)] * 2, "18x64": [specimen(2.26e6 * KGF)] * 3}
+    measured = {"13x50": [specimen(exp[0] * KGF)] * 2, "18x64": [specimen(exp[1] * KGF)] * 3}
     summary = stiffness_summary(chains, measured)
-    # reference-values.md: eq. (20), printed coefficients: 1.0553e6 and 2.0430e6 kgf.
-    assert summary["E0_theory"].values / KGF == pytest.approx([1.0553e6, 2.0430e6], rel=1e-4)
-    expected = np.array([1.12e6 / 1.0553e6 - 1, 2.26e6 / 2.0430e6 - 1])
-    assert summary["discrepancy"].values == pytest.approx(expected, rel=1e-3)
-    assert summary["discrepancy_vs_exp"].values == pytest.approx(
-        [1 - 1.0553e6 / 1.12e6, 1 - 2.0430e6 / 2.26e6], rel=1e-3)
+    # docs/published-values.md: eq. (20), printed coefficients: 1.0553e6 and 2.0430e6 kgf.
+    theory = np.array([1.0553e6, 2.0430e6])
+    assert summary["E0_theory"].values / KGF == pytest.approx(theory, rel=1e-4)
+    assert summary["discrepancy"].values == pytest.approx(exp / theory - 1, rel=1e-3)
+    assert summary["discrepancy_vs_exp"].values == pytest.approx(1 - theory / exp, rel=1e-3)
     # 6.13 % and 10.6 %: both out of the 3-6 % band against this model's E0.
     assert summary["in_band"].values.tolist() == [0, 0]
-    assert summary["E0_theory_published"].values / KGF == pytest.approx([1.08e6, 2.09e6])
+    assert summary["E0_exp_published"].values / KGF == pytest.approx(exp)
+    assert summary["E0_theory_published"].values / KGF == pytest.approx(
+        [published[name].E0_theor_kgf for name in ("13x50", "18x64")])
     assert summary["n_specimens"].values.tolist() == [2, 3]
     assert summary.attrs["band"] == "0.03 0.06"
 
@@ -72,7 +76,7 @@ def test_geometry_warning_lands_in_notes():
 
 
 def test_impact_summary_theory_is_papers_grid():
-    # reference-values.md, 000 grid: N_u1 = 972 N (psi 40), N_u2 = 3423 N (z = 8, psi 40).
+    # docs/published-values.md, Paper 000 grid: N_u1 = 972 N (psi 40), N_u2 = 3423 N (z = 8).
     points = pd.DataFrame(
         {"teeth": [8], "apex_angle": [math.radians(40)], "omega": [20.0], "t": [0.064],
          "d": [0.018], "mass_per_length": [6.6], "E0": [2.26e7], "branch_length": [2.0],
@@ -86,3 +90,27 @@ def test_impact_summary_theory_is_papers_grid():
     assert float(summary["N_u2_theory"][0]) == pytest.approx(3423, abs=0.5)
     assert float(summary["apex_angle"][0]) == pytest.approx(40)
     assert np.isnan(float(summary["k_fit"]))
+
+
+def test_impact_summary_lines_in_omega_are_fitted_per_wheel_and_impact():
+    # N_u1 = 50 omega + 100 (exactly straight, intercept 100 N); N_u2 = 3 omega^2 (curved)
+    omega = np.array([10.0, 20.0, 30.0])
+    points = pd.DataFrame(
+        {"teeth": 8, "apex_angle": math.radians(40), "omega": omega, "t": 0.064, "d": 0.018,
+         "mass_per_length": 6.6, "E0": 2.26e7, "branch_length": 2.0, "omega_measured": omega,
+         "N_u1_meas": 50 * omega + 100, "N_u1_iqr": 1.0, "N_u1_stderr": 1.0, "N_u1_count": 9,
+         "N_u2_meas": 3 * omega**2, "N_u2_iqr": 1.0, "N_u2_stderr": 1.0, "N_u2_count": 9},
+        index=["a", "b", "c"])
+    summary = impact_summary(points, fit=None)
+    assert summary.sizes["speed_line"] == 2
+    first, second = (summary.isel(speed_line=i) for i in (0, 1))
+    assert (int(first["line_impact"]), int(first["line_n_speeds"])) == (1, 3)
+    assert float(first["line_slope"]) == pytest.approx(50)
+    assert float(first["line_intercept"]) == pytest.approx(100)
+    assert float(first["line_r2"]) == pytest.approx(1)
+    assert float(first["line_largest"]) == pytest.approx(1600)
+    # y = 300, 1200, 2700 on x = 10, 20, 30: slope 120, fitted 200, 1400, 2600, so
+    # residuals 100, -200, 100 and R^2 = 1 - 6e4 / 2.94e6
+    assert float(second["line_slope"]) == pytest.approx(120)
+    assert float(second["line_r2"]) == pytest.approx(1 - 6e4 / 2.94e6, rel=1e-9)
+    assert float(first["line_apex_angle"]) == pytest.approx(40)

@@ -48,7 +48,7 @@ simulate_app = typer.Typer(
 
 
 class Layout(StrEnum):
-    """File layouts of the written logs (formats.md)."""
+    """File layouts of the written logs (docs/file-formats.md)."""
 
     plain = "plain"
     european = "european"

@@ -8,6 +8,7 @@ Example (Paper 000's case)::
 
 from __future__ import annotations
 
+import math
 from typing import Annotated
 
 import numpy as np
@@ -69,22 +70,28 @@ def impact_rows(
     return [dict(zip(UNITS, (int(row[0]), *map(float, row[1:])), strict=True)) for row in columns]
 
 
-def _published_notes(chain_name: str) -> list[str]:
+def _is_paper_chain(spec: catalog.ChainSpec) -> bool:
+    """Whether `spec` has the pitch and bar diameter of Paper 000's example chain."""
+    example = wi.paper_example()
+    return all(math.isclose(spec[name], example[name]) for name in ("t", "d"))
+
+
+def _published_notes(spec: catalog.ChainSpec) -> list[str]:
     """Paper 000's published numbers and whether the model reproduces them (its chain only)."""
-    case = wi.PUBLISHED["case"]
-    if chain_name != case["chain"]:
+    if not _is_paper_chain(spec):
         return []
+    case = wi.paper_example()
     notes = [
-        f"{wi.PUBLISHED['source']} publishes, for q = {case['mass_per_length']:g} kg/m * g, "
+        f"Paper 000 (section 3) publishes, for q = {case['mass_per_length']:g} kg/m * g, "
         f"E0 = {case['E0']:g} N, L = {case['branch_length']:g} m, "
         f"omega = {case['omega']:g} 1/s, k = {case['k']:g}:"
     ]
-    for key in ("smallest_N_u2", "N_u2_over_N_u1"):
-        entry = wi.PUBLISHED[key]
-        status = "reproduced" if entry["reproduced"] else "NOT REPRODUCED by the model"
-        value = f"{entry['value']:g} {entry['unit']}".rstrip()
+    for row in wi.compare_published().itertuples():
+        unit = "" if row.unit == "-" else f" {row.unit}"
+        status = "reproduced" if row.reproduced else "NOT REPRODUCED by the model"
         notes.append(
-            f"  {key} = {value} at z = {entry['z']}, psi = {entry['psi_deg']:g} deg: {status}"
+            f"  {row.quantity} = {row.published:g}{unit}, model {row.model:.4g}{unit}: {status} "
+            f"(tolerance {100 * row.tolerance:g} %)"
         )
     return notes
 
@@ -100,17 +107,19 @@ def _mass_per_length(spec: catalog.ChainSpec, given: float | None) -> float:
     return mass
 
 
-def _stiffness(chain_name: str, given: float | None) -> float:
+def _stiffness(spec: catalog.ChainSpec, given: float | None) -> float:
     """E0 [N]: `given`, else Paper 000's value for its own chain."""
     if given is not None:
         return given
-    if chain_name != wi.PUBLISHED["case"]["chain"]:
+    example = wi.paper_example()
+    if not _is_paper_chain(spec):
         raise typer.BadParameter(
-            f"Paper 000 gives E0 for chain {wi.PUBLISHED['case']['chain']} only: "
-            f"give the stiffness of {chain_name} in N (e.g. from a tensile test)",
+            f"Paper 000 gives E0 for its example chain only (t = {1e3 * example['t']:g} mm, "
+            f"d = {1e3 * example['d']:g} mm): give the stiffness of {spec.name} in N "
+            "(e.g. from a tensile test)",
             param_hint="--E0",
         )
-    return wi.PUBLISHED["case"]["E0"]
+    return example["E0"]
 
 
 def command(
@@ -156,7 +165,7 @@ def command(
         "t": spec["t"],
         "d": spec["d"],
         "mass_per_length": _mass_per_length(spec, mass_per_m),
-        "E0": _stiffness(chain, e0),
+        "E0": _stiffness(spec, e0),
         "branch_length": branch_length,
         "omega": omega,
         "k": k,
@@ -179,6 +188,6 @@ def command(
             "units: psi in deg, v in m/s, N in N, tau in s; "
             f"omega = {omega:g} 1/s, L = {branch_length:g} m, "
             f"E0 = {inputs['E0']:.4g} N, q/g = {inputs['mass_per_length']:g} kg/m, k = {k:g}",
-            *_published_notes(chain),
+            *_published_notes(spec),
         ],
     )

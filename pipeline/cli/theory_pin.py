@@ -5,7 +5,7 @@ the allowed pitch growth delta_t1, the allowed pin wear delta_d, the critical
 pin diameter d_k, the required diameter d_k + delta_d and the verdict for the
 chain's pin.
 
-Example (the worked example of the spec)::
+Example (the hand-worked example of ``docs/models/paper-004-pin-criterion.md``)::
 
     chainbench theory pin --chain 16B --f-max-kn 12 --sigma-t-mpa 800 --teeth 40 --json
 """

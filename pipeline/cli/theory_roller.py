@@ -86,9 +86,9 @@ def _notes(xi: float | None, module_mm: float, profile_angle_deg: float) -> list
         "cannot be derived from Paper 002: read it off its Fig. 2 and give --xi"
     )
     constants = [
-        f"{row['source']}: {row['quantity']} published {row['published']:.4g}, "
-        f"derived {row['model']:.5g} {row['unit']}"
-        for row in ri.PUBLISHED
+        f"{row.source}: {row.quantity} published {row.published:.4g}, "
+        f"derived {row.model:.5g} {row.unit}" + ("" if row.reproduced else f"; {row.note}")
+        for row in ri.compare_published().itertuples()
     ]
     return [how, *constants]
 
@@ -195,7 +195,7 @@ def command(
                 "g_lim_J_per_mm2": g_lim,
                 "xi": xi,
             },
-            "published": list(ri.PUBLISHED),
+            "published": ri.compare_published().to_dict("records"),
         },
         notes=_notes(xi, from_si(module, "mm"), profile_angle_deg),
     )

@@ -17,11 +17,13 @@ from collections.abc import Mapping
 from typing import Annotated
 
 import numpy as np
+import pandas as pd
 import typer
 
 from pipeline.cli._catalog import chain_inputs
 from pipeline.cli._output import emit
 from pipeline.theory import tooth_segments as ts
+from pipeline.theory._published import parse_inputs
 from pipeline.units import from_si, to_si
 
 DEFAULT_CHAIN = "34x126"
@@ -62,30 +64,32 @@ def segment_rows(
     return [dict(zip(columns, row, strict=True)) for row in zip(*columns.values(), strict=True)]
 
 
-def _published_notes(chain: Mapping[str, float]) -> list[str]:
-    """Paper 003's values not reproduced, when the chain has the paper's r and d."""
-    rows = ts.compare_published()
-    paper = (to_si(rows[0]["r_mm"], "mm"), to_si(rows[0]["d_mm"], "mm"))
+def _published_notes(chain: Mapping[str, float], published: pd.DataFrame) -> list[str]:
+    """Paper 003's values not reproduced, when the chain has the paper's r and d.
+
+    `published` is :func:`pipeline.theory.tooth_segments.compare_published`.
+    """
+    paper = [parse_inputs(inputs) for inputs in published["inputs"]]
     if not all(
-        math.isclose(a, b) for a, b in zip((chain["r_outer"], chain["d"]), paper, strict=True)
+        math.isclose(chain["r_outer"], inputs["r_outer"]) and math.isclose(chain["d"], inputs["d"])
+        for inputs in paper
     ):
         return []
-    flagged = [row for row in rows if not row["reproduced"]]
+    flagged = published[~published["reproduced"]]
     summary = (
-        f"Paper 003 (r = {rows[0]['r_mm']:g} mm, d = {rows[0]['d_mm']:g} mm): "
-        f"{len(rows) - len(flagged)} of {len(rows)} published values reproduced within 0.1 %"
+        f"Paper 003 (r = {from_si(paper[0]['r_outer'], 'mm'):g} mm, "
+        f"d = {from_si(paper[0]['d'], 'mm'):g} mm): {len(published) - len(flagged)} of "
+        f"{len(published)} published values reproduced"
     )
-    return [summary, *(_flag(row) for row in flagged)]
+    return [summary, *(_flag(row) for row in flagged.itertuples())]
 
 
-def _flag(row: Mapping) -> str:
-    """One line for a published value the model does not reproduce."""
-    s = f", s {row['s_mm']:g} mm" if row["s_mm"] is not None else ""
+def _flag(row) -> str:
+    """One line for a published value the model does not reproduce (a row of the comparison)."""
     return (
-        f"{row['source']}: {row['quantity']} at beta {row['beta_deg']:g} deg, "
-        f"eps_n {row['eps_n_deg']:g} deg{s}: published {row['published']:g} {row['unit']}, "
-        f"model {row['model']:.5g} ({100 * row['rel_diff']:+.2f} %): NOT reproduced "
-        f"within {100 * row['rel_tol']:g} %"
+        f"{row.source}: {row.quantity} ({row.inputs}): published {row.published:g} {row.unit}, "
+        f"model {row.model:.5g} ({100 * row.rel_diff:+.2f} %): NOT reproduced "
+        f"within {100 * row.tolerance:g} %"
     )
 
 
@@ -135,13 +139,14 @@ def command(
         )
     except ValueError as error:
         raise typer.BadParameter(str(error)) from None
+    published = ts.compare_published()
     emit(
         rows,
         title=f"Paper 003: segmented tooth loads, chain {chain}",
         as_json=as_json,
         extra={
             "inputs": {"chain": chain, **{f"{q}_mm": from_si(v, "mm") for q, v in inputs.items()}},
-            "published": ts.compare_published(),
+            "published": published.to_dict("records"),
         },
-        notes=_published_notes(inputs),
+        notes=_published_notes(inputs, published),
     )

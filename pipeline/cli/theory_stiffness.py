@@ -14,22 +14,19 @@ import typer
 
 from pipeline.catalog import chain
 from pipeline.cli._output import emit
+from pipeline.theory._published import within_tolerance
 from pipeline.theory.link_stiffness import (
     LAB_BAND,
     PAPER_E_KGF_PER_CM2,
     PRINTED,
-    TABLE_1_PUBLISHED,
     PublishedStiffness,
     chain_stiffness,
     discrepancy,
     exact_coefficients,
     in_band,
+    table_1,
 )
 from pipeline.units import from_si, to_si
-
-#: Table 1 prints E0 to three significant digits: a model value further than
-#: this from it is flagged as not reproduced.
-_TABLE_1_ROUNDING = 0.005
 
 _DIMENSIONS = ("d", "t", "R0", "a")
 
@@ -82,7 +79,8 @@ def command(
 ) -> None:
     """Static stiffness E0 of round-link chains, eq. (20) of Paper 001, beside Table 1."""
     explicit = _explicit_link(d_mm=d_mm, t_mm=t_mm, R0_mm=R0_mm, a_mm=a_mm)
-    names = chains or ([] if explicit else list(TABLE_1_PUBLISHED))
+    published = table_1()
+    names = chains or ([] if explicit else list(published))
     links = [_catalogue_link(name) for name in names] + explicit
     band = (band_pct[0] / 100, band_pct[1] / 100)
     settings = dict(
@@ -92,10 +90,10 @@ def command(
     )
     rows, notes = [], []
     for name, lengths in links:
-        row, row_notes = _row(name, lengths, **settings)
+        row, row_notes = _row(name, lengths, published.get(name), **settings)
         rows.append(row)
         notes += row_notes
-    if any(name in TABLE_1_PUBLISHED for name, _ in links):
+    if any(name in published for name, _ in links):
         notes.append(_LEGEND)
     extra = {
         "E_kgf_per_cm2": E_kgf_per_cm2,
@@ -129,8 +127,14 @@ def _explicit_link(**dimensions_mm: float | None) -> list[tuple[str, tuple[float
     return [(f"{d:g}x{t:g} (given)", tuple(to_si([d, t, R0, a], "mm")))]
 
 
-def _row(name: str, lengths, *, E, coefficients, band) -> tuple[dict, list[str]]:
-    """One table row and its notes (geometry warnings, published values not reproduced)."""
+def _row(
+    name: str, lengths, published: PublishedStiffness | None, *, E, coefficients, band
+) -> tuple[dict, list[str]]:
+    """One table row and its notes (geometry warnings, published values not reproduced).
+
+    `published` is the chain's Table 1 row (:func:`~pipeline.theory.link_stiffness.table_1`),
+    None for other chains.
+    """
     try:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
@@ -142,7 +146,6 @@ def _row(name: str, lengths, *, E, coefficients, band) -> tuple[dict, list[str]]
     dimensions = zip(_DIMENSIONS, lengths, strict=True)
     row |= {f"{key}_mm": from_si(value, "mm") for key, value in dimensions}
     row |= {"E0_kgf": from_si(E0, "kgf"), "E0_kN": from_si(E0, "kN")}
-    published = TABLE_1_PUBLISHED.get(name)
     row |= _comparison(row["E0_kgf"], published, band)
     if published is not None:
         notes += _reproduction_notes(name, row["E0_kgf"], published)
@@ -164,9 +167,9 @@ def _comparison(E0_kgf: float, published: PublishedStiffness | None, band) -> di
 
 def _reproduction_notes(name: str, E0_kgf: float, published: PublishedStiffness) -> list[str]:
     """A note when eq. (20) misses Table 1's E0_theor by more than its rounding."""
-    gap = E0_kgf / published.E0_theor_kgf - 1
-    if abs(gap) <= _TABLE_1_ROUNDING:
+    if within_tolerance(E0_kgf, published.E0_theor_kgf, published.E0_theor_tolerance):
         return []
+    gap = E0_kgf / published.E0_theor_kgf - 1
     return [
         f"{name}: eq. (20) gives {E0_kgf:.5g} kgf, {100 * gap:+.1f} % from Table 1's "
         f"E0_theor = {published.E0_theor_kgf:.3g} kgf (not reproduced beyond its rounding)"

@@ -1,6 +1,6 @@
 """Engagement-event detection in a branch-tension log (condition stage).
 
-An engagement log (``formats.md``, "Engagement measurement logs") holds the
+An engagement log (``docs/file-formats.md``, "What the logs contain") holds the
 tension of the active chain branch, and optionally the wheel angle, at a fixed
 operating point. Every seating period ``P = 2 pi / (z omega)`` a horizontal link
 seats and strikes the wheel twice, ``tau = pi / (z omega) = P / 2`` apart
@@ -64,7 +64,7 @@ MIN_PERIODS = 5
 PERIOD_TOLERANCE = 0.02
 
 #: Damping ratio assumed by the onset filter [-]: chain branches ring with a few
-#: per cent (``formats.md``); the filter is insensitive to it.
+#: per cent (``docs/file-formats.md``); the filter is insensitive to it.
 ASSUMED_DAMPING = 0.03
 
 #: Samples per ringing period of the block-averaged signal used for the onsets.

@@ -1,6 +1,6 @@
 """Impact extraction of a long engagement log, chunk by chunk (the same result as in one piece).
 
-A log of 10^7 samples or more (``formats.md``) is processed in chunks of
+A log of 10^7 samples or more (``docs/file-formats.md``) is processed in chunks of
 `chunk_samples` samples, each read with `overlap` samples of its neighbours on
 either side. Every step that looks at samples is a pure function of one chunk
 (chunk data in, small results out: a dask task each); the steps that look at the

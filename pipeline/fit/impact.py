@@ -653,7 +653,7 @@ def extract_impacts(
     References
     ----------
     Paper 000, eq. (16): N_u is the peak tension of an undamped branch; its
-    measured counterpart is the strike amplitude A (``models.md``, section 000).
+    measured counterpart is the strike amplitude A (``docs/models/paper-000-wheel-impact.md``).
     """
     force = table["force"].to_numpy(dtype=float)
     geo = _Geometry.of(events)

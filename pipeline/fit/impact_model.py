@@ -178,8 +178,9 @@ def linearity(points: pd.DataFrame, model: tuple[np.ndarray, np.ndarray] | None 
     pandas.DataFrame
         One row per wheel (the :data:`POINT_COLUMNS` but omega) and impact:
         ``impact`` (1 or 2), ``n_speeds``, ``slope`` [N s], ``intercept`` [N],
-        ``r2`` [-] (NaN below 3 speeds) and ``model_slope`` [N s]. Eq. (16) is
-        proportional to omega: R^2 near 1 and an intercept near 0 support it.
+        ``r2`` [-] (NaN below 3 speeds), ``model_slope`` [N s] and ``largest``
+        [N] (the largest measured N_u of the line). Eq. (16) is proportional to
+        omega: R^2 near 1 and an intercept near 0 support it.
     """
     rows = []
     frame = points.reset_index(drop=True)
@@ -200,7 +201,8 @@ def linearity(points: pd.DataFrame, model: tuple[np.ndarray, np.ndarray] | None 
                            if model is not None else math.nan)
             rows.append(dict(zip(_WHEEL_COLUMNS, key, strict=True), impact=impact,
                              n_speeds=int(np.unique(x).size), slope=float(slope),
-                             intercept=float(intercept), r2=float(r2), model_slope=model_slope))
+                             intercept=float(intercept), r2=float(r2), model_slope=model_slope,
+                             largest=float(np.max(np.abs(y))) if y.size else math.nan))
     return pd.DataFrame(rows)
 
 

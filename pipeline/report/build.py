@@ -435,31 +435,18 @@ def _stiffness(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
 
 
 def _linearity_note(summary: xr.Dataset) -> str:
-    """How straight the measured N_u are in omega, per wheel (eq. (16): N_u ∝ omega)."""
-    keys = np.stack([summary[name].values for name in
-                     ("teeth", "apex_angle", "E0", "branch_length")], axis=1)
-    omega = summary["omega"].values
-    r2s, intercepts = [], []
-    for key in np.unique(keys, axis=0):
-        group = np.all(keys == key, axis=1)
-        for impact in ("N_u1_meas", "N_u2_meas"):
-            measured = summary[impact].values[group]
-            keep = np.isfinite(measured)
-            x, y = omega[group][keep], measured[keep]
-            if np.unique(x).size < 3:
-                continue
-            slope, intercept = np.polyfit(x, y, 1)
-            total = float(np.sum((y - y.mean()) ** 2))
-            if total > 0:
-                r2s.append(1 - float(np.sum((y - slope * x - intercept) ** 2)) / total)
-            intercepts.append(abs(intercept) / float(np.max(np.abs(y))))
-    if not r2s:
+    """How straight the measured N_u are in omega, per wheel (eq. (16): N_u ∝ omega), as
+    the summary's ``line_*`` variables say (lines of three speeds or more)."""
+    checked = summary["line_n_speeds"].values >= 3 if "line_n_speeds" in summary else []
+    if not np.any(checked):
         return ("Linearity in ω not checked: no wheel was run at three or more speeds "
                 "(eq. (16) makes N_u proportional to ω).")
+    r2 = summary["line_r2"].values[checked]
+    share = np.abs(summary["line_intercept"].values / summary["line_largest"].values)[checked]
     return (f"Eq. (16) makes N_u proportional to ω. Straight lines through each wheel's measured "
-            f"medians ({len(r2s)} lines: wheels × impacts) give R² ≥ {min(r2s):.4f}, and their "
-            f"intercepts are at most {percent(max(intercepts), 1)} of N_u at the highest speed "
-            "(proportional: R² = 1, intercept 0).")
+            f"medians ({int(np.sum(checked))} lines: wheels × impacts) give R² ≥ "
+            f"{np.nanmin(r2):.4f}, and their intercepts are at most {percent(np.max(share), 1)} "
+            "of N_u at the highest speed (proportional: R² = 1, intercept 0).")
 
 
 def _point_rows(summary: xr.Dataset) -> list[dict[str, str]]:

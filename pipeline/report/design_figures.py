@@ -18,17 +18,16 @@ roller-impact`` and ``chainbench theory pin`` compute them for a given chain.
 Published numbers not reproduced
 --------------------------------
 :func:`published_not_reproduced` lists every number a paper publishes that the
-corrected model (``spec/models.md``) misses by more than the rounding of the
-printed value, the model's value beside it. Some stay within the tolerance of
-their regression test (a reason such as the paper's uncertain inputs is given);
-the note of each row says which. The numbers come from the theory modules'
-``PUBLISHED`` constants, the model's values from their functions.
+corrected model does not reproduce, the model's value beside it: the rows each
+theory module's ``compare_published()`` declares not reproduced (the papers'
+numbers are in ``pipeline/data/published/``; see ``docs/published-values.md``).
+Some stay within the wider tolerance of their regression test (a reason such as
+the paper's uncertain inputs is given); the note of each row says which.
 """
 
 from __future__ import annotations
 
 import math
-import warnings
 
 import numpy as np
 import xarray as xr
@@ -38,8 +37,11 @@ from scipy.optimize import brentq
 
 from pipeline.catalog import chain as catalog_chain
 from pipeline.theory import link_stiffness as ls
+from pipeline.theory import pin_criterion as pc
+from pipeline.theory import roller_impact as ri
 from pipeline.theory import tooth_segments as ts
 from pipeline.theory import wheel_impact as wi
+from pipeline.theory._published import parse_inputs
 from pipeline.units import from_si
 
 #: Paper 003's chain, in the catalogue with its torus radius and groove width.
@@ -58,17 +60,11 @@ S_MAX_MM = 70.0
 #: Paper 003, section 4 (Figs. 8-9): the side force F_P exceeds 50 % of F "in the
 #: analysed range", and the friction increase exceeds 50 % at s = 70 mm, beta = 50 deg.
 CLAIMS = {"side_force_ratio": 0.5, "friction_increase": 0.5, "s_mm": 70.0, "beta_deg": 50.0}
-#: Relative rounding of a value printed to three significant figures (half a unit
-#: of the third figure, at most 0.5 %): Paper 001, Table 1 and Paper 000's numbers.
-THREE_FIGURES = 5e-3
 #: Points of every curve.
 GRID_POINTS = 200
+#: The theory module of each paper, for its published numbers.
+_PAPERS = {"000": wi, "001": ls, "002": ri, "003": ts, "004": pc}
 
-_QUANTITY_TEXT = {
-    "contact_radius": "contact radius k",
-    "opening_angle": "segment opening angle psi",
-    "contact_force_ratio": "segment force ratio F_K/F",
-}
 _PUBLISHED_STYLE = {"linestyle": "none", "marker": "o", "markersize": 7,
                     "markerfacecolor": "none", "markeredgecolor": "black"}
 _MISSED_STYLE = {"linestyle": "none", "marker": "X", "markersize": 8, "color": "C3"}
@@ -113,9 +109,24 @@ def _mark_published(ax: Axes, rows: list[dict], x_key: str) -> None:
 
 
 def _published(quantity: str, **where: float) -> list[dict]:
-    """Rows of :func:`pipeline.theory.tooth_segments.compare_published` for `quantity`."""
-    return [row for row in ts.compare_published() if row["quantity"] == quantity
-            and all(row[key] == value for key, value in where.items())]
+    """Paper 003's published values of `quantity`, selected by their inputs.
+
+    The rows of :func:`pipeline.theory.tooth_segments.compare_published` whose
+    quantity id begins with `quantity` (``"opening_angle"``), each with its
+    inputs ``beta_deg``, ``eps_n_deg`` and ``s_mm`` (None without s); `where`
+    keeps the rows whose inputs are close to the values given.
+    """
+    rows = []
+    for row in ts.compare_published().to_dict("records"):
+        inputs = parse_inputs(row["inputs"])
+        row |= {"beta_deg": from_si(inputs["beta"], "deg"),
+                "eps_n_deg": from_si(inputs["eps_n"], "deg"),
+                "s_mm": from_si(inputs["s"], "mm") if "s" in inputs else None}
+        if row["quantity"].startswith(f"{quantity}_") and all(
+                row[key] is not None and math.isclose(row[key], value, abs_tol=1e-9)
+                for key, value in where.items()):
+            rows.append(row)
+    return rows
 
 
 def _reference_text(summary: xr.Dataset) -> str:
@@ -328,99 +339,29 @@ def design_checks(summary: xr.Dataset) -> list[tuple[str, Figure]]:
     ]
 
 
-def _row(paper: str, quantity: str, inputs: str, published: float, model: float,
-         unit: str, note: str) -> dict:
-    return {"paper": paper, "quantity": quantity, "inputs": inputs, "published": published,
-            "model": model, "unit": unit, "difference": model / published - 1, "note": note}
-
-
-def _paper_000() -> list[dict]:
-    """Paper 000's published numbers (:data:`pipeline.theory.wheel_impact.PUBLISHED`)."""
-    case = wi.PUBLISHED["case"]
-    chain = catalog_chain(case["chain"])
-    rows = []
-    for key, quantity in (("smallest_N_u2", "smallest N_u2 (working flank)"),
-                          ("N_u2_over_N_u1", "N_u2 / N_u1")):
-        entry = wi.PUBLISHED[key]
-        n_u1, n_u2 = wi.impact_tensions(
-            chain["t"], chain["d"], entry["z"], math.radians(entry["psi_deg"]), case["omega"],
-            case["mass_per_length"], case["E0"], case["branch_length"], case["k"])
-        model = n_u2 if key == "smallest_N_u2" else n_u2 / n_u1
-        if entry["reproduced"] and abs(model / entry["value"] - 1) <= THREE_FIGURES:
-            continue
-        verdict = ("; reproduced within the tolerance of its regression test (4 %: the paper "
-                   "gives neither q nor E0 for the example), beyond the printed value's rounding"
-                   if entry["reproduced"] else "")
-        rows.append(_row(
-            "000", quantity,
-            f"chain {case['chain']}, z = {entry['z']}, psi = {entry['psi_deg']:g} deg, "
-            f"omega = {case['omega']:g} 1/s, q = {case['mass_per_length']:g} kg/m, "
-            f"E0 = {case['E0']:.3g} N, L = {case['branch_length']:g} m, k = {case['k']:g}",
-            entry["value"], float(model), entry["unit"] or "-",
-            f"{wi.PUBLISHED['source']}: {entry['note']}{verdict}"))
-    return rows
-
-
-def _paper_001() -> list[dict]:
-    """Paper 001, Table 1's theoretical E0 (``link_stiffness.TABLE_1_PUBLISHED``)."""
-    rows = []
-    for name, published in ls.TABLE_1_PUBLISHED.items():
-        spec = catalog_chain(name)
-        d, t, R0, a = (spec[key] for key in ("d", "t", "R0", "a"))
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", ls.GeometryWarning)  # named in the note instead
-            model = from_si(ls.chain_stiffness(d, t, R0, a), "kgf")
-        if abs(model / published.E0_theor_kgf - 1) <= THREE_FIGURES:
-            continue
-        mismatch = ls.geometry_mismatch(d, t, R0, a)
-        closure = (f"; the link does not close: a + 2 R0 - d = {(t - mismatch) * 1e3:g} mm, "
-                   f"not t = {t * 1e3:g} mm" if abs(mismatch) > ls.GEOMETRY_TOLERANCE else "")
-        rows.append(_row(
-            "001", f"theoretical E0 of chain {name} (Table 1)",
-            f"d = {d * 1e3:g} mm, t = {t * 1e3:g} mm, R0 = {R0 * 1e3:g} mm, a = {a * 1e3:g} mm, "
-            f"E = {ls.PAPER_E_KGF_PER_CM2:.3g} kgf/cm^2, printed coefficients of eq. (20)",
-            published.E0_theor_kgf, float(model), "kgf",
-            "Paper 001, Table 1 and eq. (20); within the 3 % tolerance of its regression test "
-            f"(with E = 2.25e6 kgf/cm^2 the model comes within 1 %){closure}"))
-    return rows
-
-
-def _paper_003() -> list[dict]:
-    """Paper 003's published values (:func:`pipeline.theory.tooth_segments.compare_published`)."""
-    rows = []
-    for row in ts.compare_published():
-        if row["reproduced"]:
-            continue
-        inputs = [f"chain {REFERENCE_CHAIN}: r = {row['r_mm']:g} mm, d = {row['d_mm']:g} mm",
-                  f"beta = {row['beta_deg']:g} deg", f"eps_n = {row['eps_n_deg']:g} deg"]
-        if row["s_mm"] is not None:
-            inputs.append(f"s = {row['s_mm']:g} mm")
-        rows.append(_row(
-            "003", _QUANTITY_TEXT[row["quantity"]], ", ".join(inputs), row["published"],
-            row["model"], row["unit"],
-            f"{row['source']}; beyond the rounding of the printed value "
-            f"({row['rel_tol']:.1%}), flagged"))
-    return rows
-
-
 def published_not_reproduced() -> list[dict]:
-    """Every published number the corrected models miss by more than its rounding.
+    """Every published number the corrected models do not reproduce.
 
     Returns
     -------
     list of dict
-        Rows in paper order with ``paper`` ("000", "001", "003"), ``quantity``,
-        ``inputs`` (text), ``published`` and ``model`` (in ``unit``: the
-        paper's), ``difference`` (model / published - 1) and ``note`` (source,
-        and whether the number stays within its regression test's tolerance).
+        The rows each theory module's ``compare_published()`` declares not
+        reproduced, in paper order: ``paper`` ("000" ... "004"), ``quantity``
+        (the stable id), ``inputs`` (text), ``published`` and ``model`` (in
+        ``unit``: the paper's), ``difference`` (model / published - 1) and
+        ``note`` (source, why, and whether the number stays within the wider
+        tolerance of its regression test).
 
     Notes
     -----
-    A number counts as not reproduced when the model differs from it by more
-    than the rounding of the printed value: :data:`THREE_FIGURES` for Papers
-    000 and 001, each row's ``rel_tol`` for Paper 003 (printed to four
-    figures); Paper 000's own verdict (``PUBLISHED[...]["reproduced"]``) is
-    kept in the note. Paper 003's claims about F_P/F and the friction increase
-    (statements, not numbers) are discussed in the caption of its Figs. 8-9.
+    Paper 003's claims about F_P/F and the friction increase (statements, not
+    numbers) are discussed in the caption of its Figs. 8-9.
     """
-    return [*_paper_000(), *_paper_001(), *_paper_003()]
+    rows = []
+    for paper, module in _PAPERS.items():
+        table = module.compare_published()
+        rows += [{"paper": paper, "quantity": row.quantity, "inputs": row.inputs,
+                  "published": row.published, "model": row.model, "unit": row.unit,
+                  "difference": row.rel_diff, "note": f"{row.source}: {row.note}"}
+                 for row in table[~table["reproduced"]].itertuples()]
+    return rows

@@ -29,9 +29,10 @@ import xarray as xr
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
-from pipeline.catalog import chain as catalog_chain
 from pipeline.fit.impact_model import POINT_COLUMNS, model_tensions
-from pipeline.theory.wheel_impact import PUBLISHED, RYABOV_MASS_SHARE
+from pipeline.theory._published import parse_inputs
+from pipeline.theory.wheel_impact import RYABOV_MASS_SHARE, compare_published
+from pipeline.units import from_si
 
 #: Most points drawn per line; longer signals are reduced to a min/max envelope.
 MAX_LINE_POINTS = 4000
@@ -276,13 +277,13 @@ def impact_vs_omega(summary: xr.Dataset) -> Figure:
     return figure
 
 
-def _published_case() -> dict[str, float]:
-    """Conditions of Paper 000's example in SI (:data:`~pipeline.theory.wheel_impact.PUBLISHED`)."""
-    case = PUBLISHED["case"]
-    chain = catalog_chain(case["chain"])
-    return {"omega": case["omega"], "t": chain["t"], "d": chain["d"],
-            "mass_per_length": case["mass_per_length"], "E0": case["E0"],
-            "branch_length": case["branch_length"]}
+def _published_smallest() -> tuple[dict[str, float], float]:
+    """Paper 000's published smallest N_u2: its inputs [SI] and its value [N].
+
+    The row ``N_u2_smallest`` of :func:`pipeline.theory.wheel_impact.compare_published`.
+    """
+    row = compare_published().set_index("quantity").loc["N_u2_smallest"]
+    return parse_inputs(row["inputs"]), float(row["published"])
 
 
 def impact_vs_apex(summary: xr.Dataset) -> Figure:
@@ -302,8 +303,8 @@ def impact_vs_apex(summary: xr.Dataset) -> Figure:
         campaign's wheels), N_u1 (the same for every z) and N_u2 for each z of
         the campaign, with the measured medians at that omega (standard errors
         as error bars). Where the panel's conditions are those of Paper 000's
-        example (:data:`pipeline.theory.wheel_impact.PUBLISHED`), its published
-        smallest N_u2 is marked.
+        example (:func:`pipeline.theory.wheel_impact.compare_published`), its
+        published smallest N_u2 is marked.
     """
     points = _operating_points(summary)
     psi_deg = np.degrees(points["apex_angle"])
@@ -314,7 +315,8 @@ def impact_vs_apex(summary: xr.Dataset) -> Figure:
     several = points[list(_CONDITIONS[1:])].drop_duplicates().shape[0] > 1
     teeth = sorted(points["teeth"].unique())
     colors = {z: f"C{number}" for number, z in enumerate(teeth)}
-    case, smallest = _published_case(), PUBLISHED["smallest_N_u2"]
+    published, smallest = _published_smallest()
+    case = {name: published[name] for name in _CONDITIONS}
     figure, axes = _panels(len(panels), (3.4, 3.2))
     for ax, panel in zip(axes, panels, strict=True):
         first = panel.iloc[0]
@@ -331,10 +333,11 @@ def impact_vs_apex(summary: xr.Dataset) -> Figure:
             _errorbar(ax, x, measured, "N_u1", "o", colors[z], f"N_u1 measured, z = {z:g}")
             _errorbar(ax, x, measured, "N_u2", "s", colors[z], f"N_u2 measured, z = {z:g}")
         if all(np.isclose(first[name], value) for name, value in case.items()):
-            ax.plot(smallest["psi_deg"], smallest["value"], linestyle="none", marker="*",
+            psi = from_si(published["psi"], "deg")
+            ax.plot(psi, smallest, linestyle="none", marker="*",
                     markersize=12, markerfacecolor="none", markeredgecolor="black",
-                    label=f"Paper 000 published: smallest N_u2 = {smallest['value']:g} N "
-                          f"(z = {smallest['z']}, ψ = {smallest['psi_deg']:g}°)")
+                    label=f"Paper 000 published: smallest N_u2 = {smallest:g} N "
+                          f"(z = {published['z']:g}, ψ = {psi:g}°)")
         title = f"ω = {first['omega']:g} 1/s"
         ax.set_title(title + (f"\n{_conditions_text(first)}" if several else ""), fontsize=9)
         ax.set_xlabel("tooth apex angle ψ [°]")

@@ -1,6 +1,6 @@
 """Deterministic rendering of matplotlib figures for the self-contained report.
 
-The same data must give the same report, byte for byte (``quality.md``): SVG
+The same data must give the same report, byte for byte (``docs/quality.md``): SVG
 ids come from a fixed hash salt and no date is embedded.
 """
 

@@ -1,6 +1,6 @@
 """Write a canonical table as a raw log in any layout the readers accept.
 
-Layouts (``formats.md``, "Tensile-test logs"):
+Layouts (``docs/file-formats.md``):
 
 ``plain``
     CSV, ``,`` delimiter, UTF-8, one header row with units in brackets:
@@ -53,7 +53,7 @@ LAYOUTS = ("plain", "european", "machine", "xlsx")
 #: File name suffix of each layout.
 SUFFIXES = {"plain": ".csv", "european": ".csv", "machine": ".csv", "xlsx": ".xlsx"}
 
-#: Force and length units the readers accept (formats.md).
+#: Force and length units the readers accept (docs/file-formats.md).
 FORCE_UNITS = ("N", "kN", "daN", "kgf", "tf", "lbf")
 LENGTH_UNITS = ("mm", "um", "m", "in")
 

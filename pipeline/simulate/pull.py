@@ -65,7 +65,7 @@ from scipy.optimize import brentq
 
 from pipeline.catalog import chain
 from pipeline.simulate.tensile import check_fields, measured, toe_slack
-from pipeline.theory.link_stiffness import TABLE_1_PUBLISHED
+from pipeline.theory.link_stiffness import table_1
 from pipeline.units import to_si
 
 #: How a removed extensometer misbehaves: it jumps by :data:`REMOVAL_JUMP` and reads
@@ -282,9 +282,10 @@ class PullTruth:
         """
         spec = chain(name)
         if E0 is None:
-            if name not in TABLE_1_PUBLISHED:
+            published = table_1().get(name)
+            if published is None:
                 raise ValueError(f"no default E0 for chain {name!r} (not in Table 1): give E0")
-            E0 = to_si(TABLE_1_PUBLISHED[name].E0_exp_kgf, "kgf")
+            E0 = to_si(published.E0_exp_kgf, "kgf")
         if "max_force" not in settings:
             breaking = spec.get("breaking_force")
             if breaking is None and name not in MIN_BREAKING_FORCE_KN:

@@ -55,7 +55,7 @@ import numpy as np
 import pandas as pd
 
 from pipeline.catalog import chain
-from pipeline.theory.link_stiffness import TABLE_1_PUBLISHED
+from pipeline.theory.link_stiffness import table_1
 from pipeline.units import to_si
 
 
@@ -197,9 +197,10 @@ class TensileTruth:
         """
         spec = chain(name)
         if E0 is None:
-            if name not in TABLE_1_PUBLISHED:
+            published = table_1().get(name)
+            if published is None:
                 raise ValueError(f"no default E0 for chain {name!r} (not in Table 1): give E0")
-            E0 = to_si(TABLE_1_PUBLISHED[name].E0_exp_kgf, "kgf")
+            E0 = to_si(published.E0_exp_kgf, "kgf")
         settings.setdefault("preload", spec["preload"])
         settings.setdefault("upper_force", spec["upper_load"])
         return cls(E0=E0, **settings)

@@ -1,6 +1,6 @@
 """The dataset of one engagement run, built from the stages' outputs.
 
-Layout (``formats.md``): the conditioned signal ``time(sample)``,
+Layout (``docs/outputs.md``): the conditioned signal ``time(sample)``,
 ``force(sample)`` [N] (full rate up to :data:`MAX_STORED_SAMPLES`, else
 decimated by an integer stride recorded in the ``signal_decimation``
 attribute); per detected engagement event ``event_time``, ``impact2_time``,

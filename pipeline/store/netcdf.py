@@ -1,7 +1,7 @@
 """Writing and reading result datasets as netCDF4, atomically, with provenance.
 
 Every dataset chainbench writes carries CF-1.10 global attributes and the
-provenance of its inputs (``formats.md``): ``Conventions``, ``title``,
+provenance of its inputs (``docs/outputs.md``): ``Conventions``, ``title``,
 ``history``, ``source``, ``chainbench_version``, ``raw_file``, ``raw_sha256``,
 ``run_sheet_sha256``, ``created`` and the run's run-sheet entry (as JSON).
 A file is written to a temporary name in the target folder and renamed into

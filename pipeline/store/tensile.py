@@ -1,6 +1,6 @@
 """The dataset of one tensile run, built from the stages' outputs.
 
-Layout (``formats.md``): per sample ``time``, ``force`` [N], ``elongation``
+Layout (``docs/outputs.md``): per sample ``time``, ``force`` [N], ``elongation``
 [m] (mean of the gauges), ``gauge_elongation(sample, gauge)`` [m], ``strain``,
 ``sample_cycle`` and ``sample_branch`` (CF flags; named apart from the
 ``cycle`` and ``branch`` dimensions of the fits); per fit on ``(cycle, branch)`` the stiffness

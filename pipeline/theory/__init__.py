@@ -10,5 +10,8 @@ module                 paper   what it computes
 ``pin_criterion``      004     pin criterion for roller chains of open drives
 =====================  ======  ==================================================
 
-Nothing here reads files; inputs are SI unless a name carries its unit.
+The models read no files; inputs are SI unless a name carries its unit. Each
+module's ``compare_published()`` reads its paper's published numbers from
+``pipeline/data/published/paper_<paper>.csv`` and sets the model's value
+beside each, by the one tolerance rule of ``_published``.
 """

@@ -17,8 +17,9 @@ SI values; E0 is a force [N].
 References
 ----------
 Paper 001: J. Rynik, "Analityczno-empiryczne okreslenie statycznej sztywnosci
-lancuchow ogniwowych" (seed ``001_d0c67c6e87c0d4e3.txt``); corrected formulas
-in ``spec/models.md``, section 001.
+lancuchow ogniwowych", Zeszyty Naukowe Politechniki Slaskiej, seria Gornictwo,
+nr 36, 1969 (as cited in Paper 000, ref. [3]); no DOI found. Corrected formulas
+in ``docs/models/paper-001-link-stiffness.md``.
 """
 
 from __future__ import annotations
@@ -27,10 +28,12 @@ import warnings
 from typing import NamedTuple
 
 import numpy as np
+import pandas as pd
 from scipy.integrate import quad
 
 from pipeline.theory._checks import non_negative, positive, scalar_or_array
-from pipeline.units import to_si
+from pipeline.theory._published import compare, read_published
+from pipeline.units import from_si, to_si
 
 #: Young's modulus of the chain steel used for Table 1 [kgf/cm^2]
 #: (Paper 001, text below eq. (20): "E = 2,2 * 10^6 kg/cm^2").
@@ -70,22 +73,11 @@ PRINTED = StiffnessCoefficients(1.46, 0.355, 1.58, 0.03, 0.2)
 
 
 class PublishedStiffness(NamedTuple):
-    """One row of Paper 001, Table 1, in the paper's units (E = 2.2e6 kgf/cm^2)."""
+    """One chain of Paper 001, Table 1, in the paper's units (E = 2.2e6 kgf/cm^2)."""
 
-    eps_exp_per_kgf: float  #: measured relative elongation under 1 kgf [1/kgf]
-    eps_theor_per_kgf: float  #: theoretical relative elongation under 1 kgf [1/kgf]
     E0_exp_kgf: float  #: measured stiffness [kgf]
     E0_theor_kgf: float  #: stiffness from eq. (20) as published [kgf]
-
-
-#: Paper 001, Table 1, keyed by the catalogue name of the chain (d x t in mm); the
-#: link geometry (d, t, R0, a) of these rows is in the chain catalogue.
-TABLE_1_PUBLISHED = {
-    "13x50": PublishedStiffness(0.892e-6, 0.925e-6, 1.12e6, 1.08e6),
-    "14x50": PublishedStiffness(0.806e-6, 0.833e-6, 1.24e6, 1.20e6),
-    "18x64": PublishedStiffness(0.442e-6, 0.478e-6, 2.26e6, 2.09e6),
-    "22x86": PublishedStiffness(0.272e-6, 0.289e-6, 3.68e6, 3.46e6),
-}
+    E0_theor_tolerance: float  #: relative tolerance of E0_theor, its printed rounding [-]
 
 
 class GeometryWarning(UserWarning):
@@ -360,7 +352,7 @@ def discrepancy(E0_exp, E0_theory):
 
     References
     ----------
-    Paper 001, section 3 and Table 1; ``spec/models.md`` 001 (discrepancy check).
+    Paper 001, section 3 and Table 1; ``docs/models/paper-001-link-stiffness.md``.
 
     Examples
     --------
@@ -419,6 +411,62 @@ def in_band(discrepancy, band: tuple[float, float] = LAB_BAND) -> np.ndarray:
         raise ValueError(f"band must be (lower, upper) with lower <= upper, got {band!r}")
     values = np.asarray(discrepancy, dtype=float)
     return (values >= lower) & (values <= upper)
+
+
+def table_1() -> dict[str, PublishedStiffness]:
+    """Paper 001, Table 1: the published E0 of each chain, from ``paper_001.csv``.
+
+    Returns
+    -------
+    dict
+        Catalogue name of the chain (d x t in mm) -> :class:`PublishedStiffness`
+        [kgf], in the paper's order; the link geometry (d, t, R0, a) of these
+        chains is in the chain catalogue.
+    """
+    table = read_published("001").set_index("quantity")
+    chains = [name.removeprefix("E0_theory_") for name in table.index
+              if name.startswith("E0_theory_")]  # fmt: skip
+    return {
+        chain: PublishedStiffness(
+            float(table.at[f"E0_exp_{chain}", "published"]),
+            float(table.at[f"E0_theory_{chain}", "published"]),
+            float(table.at[f"E0_theory_{chain}", "tolerance"]),
+        )
+        for chain in chains
+    }
+
+
+def compare_published() -> pd.DataFrame:
+    """Paper 001's published numbers (Table 1) beside eq. (20).
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per number of ``pipeline/data/published/paper_001.csv``: the
+        theoretical and the experimental E0 of each chain [kgf], each beside
+        :func:`chain_stiffness` with the printed coefficients and the row's
+        d, t, R0, a and E; columns as
+        :func:`pipeline.theory._published.compare`.
+
+    Notes
+    -----
+    The 22x86 link does not close (t = 86 mm, a + 2 R0 - d = 84 mm); its
+    GeometryWarning is not raised here, the rows' notes say it.
+
+    Examples
+    --------
+    >>> table = compare_published().set_index("quantity")
+    >>> round(float(table.at["E0_theory_18x64", "model"]) / 1e6, 4)
+    2.043
+    """
+    return compare("001", {"E0_theory": _stiffness_kgf, "E0_exp": _stiffness_kgf})
+
+
+def _stiffness_kgf(inputs: dict) -> float:
+    """eq. (20) with the printed coefficients for a row's d, t, R0, a, E [kgf]."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", GeometryWarning)
+        return from_si(chain_stiffness(**inputs), "kgf")
 
 
 def _link(d, R0, a):

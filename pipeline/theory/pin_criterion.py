@@ -10,12 +10,16 @@ moments in N m). The paper works in mm, N and MPa; being homogeneous, its
 formulas hold in either system.
 
 The paper publishes no numbers: the tests use the identity
-M_max / W(d_k) = [sigma_T] and a hand-worked example (``reference-values.md``).
+M_max / W(d_k) = [sigma_T] and a hand-worked example
+(``docs/models/paper-004-pin-criterion.md``).
 
 References
 ----------
-Paper 004: Kravchenko M.I., Bogdanovych S.A., Criterion of choice and
-durability of drive bush-roller chains of open drives (seed 004).
+Paper 004: Kravchenko M.I., Bogdanovych S.A. (State Biotechnological
+University), "Kryterii vyboru i dovhovichnist pryvidnykh vtulochno-rolykovykh
+lantsiuhiv vidkrytykh peredach" (criterion of choice and durability of drive
+bush-roller chains of open drives); journal and year not printed in the OCR'd
+copy; no DOI found.
 """
 
 from __future__ import annotations
@@ -23,10 +27,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import pandas as pd
 from numpy.typing import ArrayLike
 
 from pipeline.theory._checks import positive, scalar_or_array
 from pipeline.theory._checks import teeth as whole_teeth
+from pipeline.theory._published import compare
 
 #: Safety factor psi of the allowed pitch growth (Paper 004, eq. (3), after
 #: Vorobiev [1]).
@@ -257,6 +263,18 @@ def check_pin(
         pin_diameter=scalar_or_array(d),
         passes=bool(passes) if np.ndim(passes) == 0 else passes,
     )
+
+
+def compare_published() -> pd.DataFrame:
+    """Paper 004's published numbers beside the model's: none, the paper prints none.
+
+    Returns
+    -------
+    pandas.DataFrame
+        The rows of ``pipeline/data/published/paper_004.csv`` (none) with the
+        columns of :func:`pipeline.theory._published.compare`.
+    """
+    return compare("004", {})
 
 
 def _lever(plate_span: ArrayLike, bush_length: ArrayLike) -> np.ndarray:

@@ -25,26 +25,31 @@ What the paper does not let us derive
 * The module m and tool profile angle alpha behind the involute curves of
   Figs. 2-4 are not stated, nor the worn pitch of Fig. 4, so none of the
   plotted xi or n_max values can be reproduced. Only the constants of eqs. (6)
-  and (8) are checkable (see :data:`PUBLISHED`).
+  and (8) are checkable (see :func:`compare_published`).
 
-Corrections to the printed text (see ``models.md``): eq. (6) prints
+Corrections to the printed text (see ``docs/models/paper-002-roller-impact.md``): eq. (6) prints
 ``5,48 10^12`` for 5.48e-12; eq. (7) prints ``1,8 10^12`` and "J/mm" where
 (6) and (8) require 1.82e11 and J/mm^2, and calls n a speed in 1/s where the
 constants require rpm.
 
 References
 ----------
-Paper 002: Berezhnoy S.B., Voina A.A., Kurapov G.V., Analysis of impact
-resistance of chain according to sprocket lug profile (seed 002).
+Paper 002: Berezhnoy S.B., Voina A.A., Kurapov G.V. (Kuban State Technological
+University), "Analysis of impact resistance of chain according to sprocket lug
+profile" (Russian: "Analiz udarnoi stoikosti tsepi v zavisimosti ot profilya
+zuba zvezdochki"); journal and year not printed in the OCR'd copy; no DOI found.
 """
 
 from __future__ import annotations
 
 import numpy as np
+import pandas as pd
 from numpy.typing import ArrayLike
 
 from pipeline.theory._checks import non_negative, positive, scalar_or_array
 from pipeline.theory._checks import teeth as whole_teeth
+from pipeline.theory._published import compare
+from pipeline.units import from_si
 
 #: Constant of eq. (6) [J per (kg/m * rpm^2 * mm^3)]: (1/2) (2 pi / 60)^2 * 1e-9,
 #: i.e. E = (1/2) (q t) (omega t xi)^2 with omega = 2 pi n / 60 and t in mm.
@@ -58,33 +63,6 @@ G_LIM = (300.0, 400.0)
 
 #: Relative rounding tolerated at the admissible limit of the base radius.
 _ROUNDING = 1e-12
-
-#: The numbers Paper 002 prints, as printed, each beside the value the
-#: corrected model gives (``models.md``).
-PUBLISHED = (
-    {
-        "quantity": "energy constant",
-        "published": 5.48e-12,
-        "model": ENERGY_CONSTANT,
-        "unit": "J/(kg/m rpm^2 mm^3)",
-        "source": "Paper 002, eq. (6)",
-    },
-    {
-        "quantity": "specific energy denominator",
-        "published": 1.8e12,
-        "model": 1.0 / ENERGY_CONSTANT,
-        "unit": "kg/m rpm^2 mm^3 / J",
-        "source": "Paper 002, eq. (7) (printed 1.8e12: a misprint for 1.82e11)",
-    },
-    {
-        "quantity": "speed-limit constant at G_lim = 3e-4 J/mm^2",
-        "published": 7400.0,
-        "model": float(np.sqrt(3e-4 / ENERGY_CONSTANT)),
-        "unit": "rpm mm",
-        "source": "Paper 002, eq. (8)",
-    },
-)
-
 
 def base_radius(
     module: ArrayLike, teeth: ArrayLike, profile_angle: ArrayLike
@@ -206,7 +184,7 @@ def impact_velocity_coefficient_bounds(
 
     References
     ----------
-    Paper 002, eq. (3); ``models.md``, section 002.
+    Paper 002, eq. (3); ``docs/models/paper-002-roller-impact.md``.
     """
     z = whole_teeth("teeth", teeth, minimum=4)
     return scalar_or_array(np.sin(np.pi / z)), scalar_or_array(np.cos(np.pi / z))
@@ -267,7 +245,7 @@ def impact_energy(
 
     References
     ----------
-    Paper 002, eq. (6) (corrected exponent, ``models.md``).
+    Paper 002, eq. (6) (corrected exponent, ``docs/models/paper-002-roller-impact.md``).
     """
     q = positive("mass_per_length", mass_per_length)
     t = positive("pitch", pitch)
@@ -333,7 +311,8 @@ def specific_impact_energy(
 
     References
     ----------
-    Paper 002, eq. (7) (corrected constant and unit, ``models.md``).
+    Paper 002, eq. (7) (corrected constant and unit,
+    ``docs/models/paper-002-roller-impact.md``).
     """
     e = non_negative("energy", energy)
     diameter = positive("roller_diameter", roller_diameter)
@@ -385,3 +364,31 @@ def max_angular_velocity(
     area = positive("roller_diameter", roller_diameter) * positive("roller_length", roller_length)
     limit = positive("g_lim", g_lim)
     return scalar_or_array(np.sqrt(2.0 * limit * area / (q * t)) / (x * t))
+
+
+def compare_published() -> pd.DataFrame:
+    """Paper 002's printed constants beside the model's.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per number of ``pipeline/data/published/paper_002.csv``: the
+        constant of eq. (6) (:func:`impact_energy` for unit inputs), its
+        reciprocal printed in eq. (7), and the constant of eq. (8)
+        (:func:`max_angular_velocity` for unit inputs, in rpm); columns as
+        :func:`pipeline.theory._published.compare`.
+
+    Examples
+    --------
+    >>> table = compare_published().set_index("quantity")
+    >>> round(float(table.at["speed_limit_constant", "model"]))
+    7397
+    """
+    return compare(
+        "002",
+        {
+            "energy_constant": lambda inputs: impact_energy(**inputs),
+            "specific_energy_denominator": lambda inputs: 1.0 / impact_energy(**inputs),
+            "speed_limit_constant": lambda inputs: from_si(max_angular_velocity(**inputs), "rpm"),
+        },
+    )

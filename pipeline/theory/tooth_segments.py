@@ -6,12 +6,13 @@ torus of the horizontal link exerts on the two tooth segments either side of
 the groove, at the contact points K a distance s apart.
 
 Units: lengths in m and angles in rad at the interface (SI), except where a
-name ends in ``_mm`` or ``_deg`` (the paper's units, used by :data:`PUBLISHED`).
+name ends in ``_mm`` or ``_deg``.
 
 Notes
 -----
 The seed's eq. (3) is OCR-garbled (it prints k where s belongs and would
-always give 0.577); :func:`contact_force_ratio` uses the form of ``models.md``,
+always give 0.577); :func:`contact_force_ratio` uses the corrected form of
+``docs/models/paper-003-tooth-segments.md``,
 F_K / F = 1 / (2 sin(psi / 2)), which reproduces every published ratio.
 
 Against the paper's claims the model gives (chain 34x126):
@@ -25,50 +26,21 @@ Against the paper's claims the model gives (chain 34x126):
 
 References
 ----------
-Paper 003: Dolipski M., Remiorz E., Sobota P., Osadnik J., Wyznaczenie
-obciazenia segmentow zebow bebna lancuchowego (seed 003).
+Paper 003: Dolipski M., Remiorz E., Sobota P., Osadnik J., "Wyznaczenie
+obciazenia segmentow zebow bebna lancuchowego" (determination of the load on
+the tooth segments of a chain drum); journal and year not printed in the OCR'd
+copy (its references run to 2011); no DOI found.
 """
 
 from __future__ import annotations
 
 import numpy as np
+import pandas as pd
 from numpy.typing import ArrayLike
 
 from pipeline.theory._checks import arccos, non_negative, positive, scalar_or_array
-
-#: The values Paper 003 prints for chain 34x126 (r = 52 mm, d = 34 mm,
-#: section 3), in the paper's units. ``quantity`` names the function giving the
-#: model value: ``contact_radius`` [mm], ``opening_angle`` [deg],
-#: ``contact_force_ratio`` [-]. The printed values are rounded to the last
-#: digit shown, so ``rel_tol`` 0.1 % separates rounding from a real difference.
-PUBLISHED = tuple(
-    {
-        "quantity": quantity,
-        "r_mm": 52.0,
-        "d_mm": 34.0,
-        "beta_deg": beta_deg,
-        "eps_n_deg": eps_n_deg,
-        "s_mm": s_mm,
-        "published": value,
-        "unit": unit,
-        "rel_tol": 1e-3,
-        "source": f"Paper 003, {source}",
-    }
-    for quantity, beta_deg, eps_n_deg, s_mm, value, unit, source in (
-        ("contact_radius", 50.0, 0.0, None, 48.0, "mm", "section 3, Fig. 3"),
-        ("contact_radius", 50.0, 6.0, None, 46.8, "mm", "section 3, Fig. 3"),
-        ("opening_angle", 50.0, 0.0, 45.0, 124.1, "deg", "section 3, Fig. 4"),
-        ("opening_angle", 50.0, 6.0, 45.0, 122.5, "deg", "section 3, Fig. 4"),
-        ("contact_force_ratio", 50.0, 0.0, 45.0, 0.566, "-", "section 3, Fig. 5"),
-        ("contact_force_ratio", 50.0, 6.0, 45.0, 0.570, "-", "section 3, Fig. 5"),
-        ("opening_angle", 50.0, 0.0, 70.0, 86.4, "deg", "section 4, Fig. 6"),
-        ("opening_angle", 80.0, 0.0, 45.0, 128.7, "deg", "section 4, Fig. 6"),
-        ("opening_angle", 80.0, 0.0, 70.0, 94.9, "deg", "section 4, Fig. 6"),
-        ("contact_force_ratio", 50.0, 0.0, 70.0, 0.730, "-", "section 4, Fig. 7"),
-        ("contact_force_ratio", 80.0, 0.0, 45.0, 0.555, "-", "section 4, Fig. 7"),
-        ("contact_force_ratio", 80.0, 0.0, 70.0, 0.679, "-", "section 4, Fig. 7"),
-    )
-)
+from pipeline.theory._published import compare
+from pipeline.units import from_si
 
 
 def contact_radius(
@@ -163,7 +135,7 @@ def contact_force_ratio(psi: ArrayLike) -> float | np.ndarray:
 
     References
     ----------
-    Paper 003, eq. (3) (corrected form, ``models.md``).
+    Paper 003, eq. (3) (corrected form, ``docs/models/paper-003-tooth-segments.md``).
     """
     return scalar_or_array(1.0 / (2.0 * np.sin(_half_angle(psi))))
 
@@ -217,40 +189,38 @@ def _half_angle(psi: ArrayLike) -> np.ndarray:
     return angle / 2.0
 
 
-def compare_published() -> list[dict]:
-    """The :data:`PUBLISHED` rows with the model's value beside each.
+def compare_published() -> pd.DataFrame:
+    """Paper 003's published values for chain 34x126 beside the model's.
 
     Returns
     -------
-    list of dict
-        Each row of :data:`PUBLISHED` plus ``model`` (same unit), ``rel_diff``
-        (model / published - 1) and ``reproduced`` (``abs(rel_diff) <= rel_tol``).
+    pandas.DataFrame
+        One row per number of ``pipeline/data/published/paper_003.csv``: the
+        contact radius k [mm] (eq. (1)), the opening angle psi [deg] (eq. (2))
+        and F_K / F [-] (eq. (3)), each with the row's r_outer, d, beta, eps_n
+        and s; columns as :func:`pipeline.theory._published.compare`.
 
-    References
-    ----------
-    Paper 003, eqs. (1)-(3).
+    Examples
+    --------
+    >>> table = compare_published().set_index("quantity")
+    >>> round(float(table.at["opening_angle_s45_beta80_eps0", "model"]), 2)
+    128.45
     """
-    return [_compare(row) for row in PUBLISHED]
-
-
-def _compare(row: dict) -> dict:
-    """One :data:`PUBLISHED` row with its model value (see :func:`compare_published`)."""
-    mm = 1e-3
-    k = contact_radius(
-        row["r_mm"] * mm,
-        row["d_mm"] * mm,
-        np.radians(row["beta_deg"]),
-        np.radians(row["eps_n_deg"]),
+    return compare(
+        "003",
+        {
+            "contact_radius": lambda inputs: from_si(_contact_radius_of(inputs), "mm"),
+            "opening_angle": lambda inputs: np.degrees(_opening_angle_of(inputs)),
+            "contact_force_ratio": lambda inputs: contact_force_ratio(_opening_angle_of(inputs)),
+        },
     )
-    if row["quantity"] == "contact_radius":
-        model = k / mm
-    else:
-        psi = opening_angle(row["s_mm"] * mm, k)
-        model = np.degrees(psi) if row["quantity"] == "opening_angle" else contact_force_ratio(psi)
-    rel_diff = float(model) / row["published"] - 1.0
-    return {
-        **row,
-        "model": float(model),
-        "rel_diff": rel_diff,
-        "reproduced": abs(rel_diff) <= row["rel_tol"],
-    }
+
+
+def _contact_radius_of(inputs: dict) -> float:
+    """k [m] for a row's r_outer, d, beta, eps_n (eq. (1))."""
+    return contact_radius(inputs["r_outer"], inputs["d"], inputs["beta"], inputs["eps_n"])
+
+
+def _opening_angle_of(inputs: dict) -> float:
+    """psi [rad] for a row's r_outer, d, beta, eps_n and s (eqs. (1)-(2))."""
+    return opening_angle(inputs["s"], _contact_radius_of(inputs))

@@ -2,7 +2,9 @@
 
 Rynik J., Dolipski M.: *Napięcia udarowe łańcucha ogniwowego współpracującego
 z kołem gniazdowym* (impact tension of a link chain engaging a pocket wheel).
-Seed ``000_38d59aa952fe30fe.txt``; formulas as corrected in ``models.md``.
+Journal, year and pages are not printed in the OCR'd copy (its references run
+to 1978); no DOI found. Formulas as corrected in
+``docs/models/paper-000-wheel-impact.md``.
 
 A horizontal link seating in its pocket strikes the wheel twice: first the idle
 flank of one tooth (point C, velocity ``v_u1``), then, a time ``tau = pi/(z
@@ -27,45 +29,16 @@ from __future__ import annotations
 from typing import Final, NamedTuple, TypeAlias
 
 import numpy as np
+import pandas as pd
 from numpy.typing import ArrayLike
 
 from pipeline.theory import _checks
+from pipeline.theory._published import compare, parse_inputs, read_published
 
 #: Share of link masses taking part in the impact, k [-]: the reduced mass of the
 #: branch equals twice the mass of one link. Ryabov G.K., Vestnik
 #: Mashinostroeniya 8/1968 (Paper 000, ref. [1]); used in Paper 000, eq. (11).
 RYABOV_MASS_SHARE: Final = 2.0
-
-#: The numbers Paper 000 publishes for its example (section 3, text under eq. (18)
-#: and Figs. 3-4), with the case they belong to. The corrected model reproduces
-#: the first (the paper's q and E0 are uncertain: within 4 %) but not the second.
-PUBLISHED: Final = {
-    "source": "Paper 000 (Rynik & Dolipski), section 3 and Figs. 3-4",
-    "case": {
-        "chain": "18x64",
-        "mass_per_length": 6.6,  # [kg/m], DIN 22252 nominal (not printed in the paper)
-        "E0": 2.26e7,  # [N], Paper 000 citing Rynik 1969 (its ref. [3])
-        "branch_length": 2.0,  # [m]
-        "omega": 20.0,  # [1/s]
-        "k": RYABOV_MASS_SHARE,
-    },
-    "smallest_N_u2": {
-        "value": 2300.0,
-        "unit": "N",
-        "z": 10,
-        "psi_deg": 20.0,
-        "reproduced": True,
-        "note": "smallest N_u2 over z in {6, 8, 10}, psi in 20..60 deg (Fig. 3)",
-    },
-    "N_u2_over_N_u1": {
-        "value": 2.54,
-        "unit": "",  # dimensionless
-        "z": 8,
-        "psi_deg": 40.0,
-        "reproduced": False,
-        "note": "ratio of Figs. 3 and 4 at psi = 40 deg; eqs. (1)-(2), (16) do not give it",
-    },
-}
 
 #: A float or an array of floats (0-d results come back as float).
 ScalarOrArray: TypeAlias = float | np.ndarray
@@ -294,7 +267,7 @@ def impact_velocities(
                  - R \cos(\tfrac{\pi}{z} + \tfrac{\psi}{2} + \tfrac{\delta_1}{2})]
 
     They reduce to v_u1 = omega (t - d) sin(psi/2), independent of z, and
-    v_u2 = omega (t + d) sin(pi/z + psi/2) (``models.md``).
+    v_u2 = omega (t + d) sin(pi/z + psi/2) (``docs/models/paper-000-wheel-impact.md``).
 
     References
     ----------
@@ -552,3 +525,63 @@ def seating_period(z: ArrayLike, omega: ArrayLike) -> ScalarOrArray:
     z = _checks.teeth("z", z)
     omega = _checks.positive("omega", omega)
     return _checks.scalar_or_array(2 * np.pi / (z * omega))
+
+
+def paper_example() -> dict[str, float]:
+    """The conditions of Paper 000's example (section 3), from ``paper_000.csv``.
+
+    Returns
+    -------
+    dict
+        ``t``, ``d`` [m], ``omega`` [1/s], ``mass_per_length`` [kg/m], ``E0``
+        [N], ``branch_length`` [m] and ``k`` [-]: the inputs of the published
+        smallest N_u2 without the wheel (z, psi). The paper prints neither q
+        nor the chain's E0 for it: q = 6.6 kg/m is the DIN 22252 nominal mass
+        of chain 18x64, E0 = 2.26e7 N the paper's citation of its ref. [3].
+    """
+    table = read_published("000").set_index("quantity")
+    inputs = parse_inputs(table.at["N_u2_smallest", "inputs"])
+    return {name: value for name, value in inputs.items() if name not in ("z", "psi")}
+
+
+def compare_published() -> pd.DataFrame:
+    """Paper 000's published numbers beside the model's.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per number of ``pipeline/data/published/paper_000.csv`` (the
+        smallest N_u2 [N] and where it lies, z [-] and psi [deg], over the
+        grid of the row's inputs, and N_u2 / N_u1 [-]), each beside
+        :func:`impact_tensions` with the row's inputs; columns as
+        :func:`pipeline.theory._published.compare`.
+
+    Examples
+    --------
+    >>> table = compare_published().set_index("quantity")
+    >>> round(float(table.at["N_u2_over_N_u1_z8_psi40", "model"]), 3)
+    3.521
+    """
+    return compare(
+        "000",
+        {
+            "N_u2_smallest": lambda inputs: impact_tensions(**inputs)[1],
+            "z_of_smallest_N_u2": lambda inputs: _smallest_N_u2_at(inputs)[0],
+            "psi_of_smallest_N_u2": lambda inputs: np.degrees(_smallest_N_u2_at(inputs)[1]),
+            "N_u2_over_N_u1": _tension_ratio,
+        },
+    )
+
+
+def _tension_ratio(inputs: dict) -> float:
+    """N_u2 / N_u1 [-] of one operating point."""
+    n_u1, n_u2 = impact_tensions(**inputs)
+    return n_u2 / n_u1
+
+
+def _smallest_N_u2_at(inputs: dict) -> tuple[float, float]:
+    """(z [-], psi [rad]) of the smallest N_u2 over the grid of the inputs' z and psi."""
+    z, psi = np.atleast_1d(inputs["z"]), np.atleast_1d(inputs["psi"])
+    _, n_u2 = impact_tensions(**{**inputs, "z": z[:, None], "psi": psi[None, :]})
+    row, column = np.unravel_index(np.argmin(n_u2), n_u2.shape)
+    return float(z[row]), float(psi[column])

@@ -1,7 +1,8 @@
-"""``chainbench theory impact`` against Paper 000's example (reference-values.md, 000).
+"""``chainbench theory impact`` against Paper 000's example (docs/published-values.md).
 
-Expectations are typed here from the paper and the spec, or from the closed forms
-of models.md, never copied from the code's output.
+Expectations are typed here from the paper and docs/published-values.md, or from the
+closed forms of docs/models/paper-000-wheel-impact.md, never copied from the code's
+output.
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ import pytest
 from typer.testing import CliRunner
 
 from pipeline.cli import _options, app
+from pipeline.theory import wheel_impact as wi
 
 runner = CliRunner()
 
@@ -22,7 +24,7 @@ COMMAND = (
 TEETH = [6, 8, 10]
 APEX_DEG = [20, 30, 40, 50, 60]
 T, D, OMEGA = 0.064, 0.018, 20.0  # [m], [m], [1/s]
-# reference-values.md, 000, "Grid the model gives (N, q = 6.6 kg/m)".
+# docs/published-values.md, Paper 000: the model's grid (N, q = 6.6 kg/m).
 GRID_N_U1 = [494, 736, 972, 1201, 1421]
 GRID_N_U2 = {
     6: [3257, 3583, 3882, 4151, 4388],
@@ -50,7 +52,7 @@ def test_paper_case_grid():
         assert row["N_u1"] == pytest.approx(GRID_N_U1[column], abs=0.5)
         assert row["N_u2"] == pytest.approx(GRID_N_U2[z][column], abs=0.5)
         assert row["N_u2/N_u1"] == pytest.approx(row["N_u2"] / row["N_u1"], rel=1e-12)
-        # closed forms of models.md and tau = pi / (z omega), exact up to round-off
+        # closed forms of Paper 000 and tau = pi / (z omega), exact up to round-off
         assert row["v_u1"] == pytest.approx(OMEGA * (T - D) * math.sin(psi / 2), rel=1e-12)
         v_u2 = OMEGA * (T + D) * math.sin(math.pi / z + psi / 2)
         assert row["v_u2"] == pytest.approx(v_u2, rel=1e-12)
@@ -66,9 +68,12 @@ def test_paper_case_inputs_and_published_numbers():
     assert inputs["k"] == 2
     ratio_row = next(row for row in document["rows"] if (row["z"], row["psi_deg"]) == (8, 40))
     assert ratio_row["N_u2/N_u1"] == pytest.approx(3.521, abs=0.005)
-    notes = " ".join(document["notes"])
-    assert "2300 N at z = 10, psi = 20 deg: reproduced" in notes
-    assert "2.54 at z = 8, psi = 40 deg: NOT REPRODUCED" in notes
+    notes = document["notes"]
+    for row in wi.compare_published().itertuples():
+        (line,) = [note for note in notes if note.strip().startswith(f"{row.quantity} = ")]
+        assert f"= {row.published:g}" in line
+        assert ("NOT REPRODUCED" in line) is not row.reproduced
+    assert "N_u2_over_N_u1_z8_psi40 = 2.54, model 3.521: NOT REPRODUCED" in " ".join(notes)
 
 
 @pytest.mark.parametrize(

@@ -1,4 +1,7 @@
-"""``chainbench theory pin`` against the hand-worked 16B example of reference-values.md, 004."""
+"""``chainbench theory pin`` against the hand-worked 16B example.
+
+See docs/models/paper-004-pin-criterion.md.
+"""
 
 from __future__ import annotations
 
@@ -30,7 +33,7 @@ def test_16b_example():
     assert rows["pinned"]["K"] == 1 and rows["clamped"]["K"] == 3
     assert rows["pinned"]["d_k_mm"] == pytest.approx(8.67, abs=5e-3)
     assert rows["clamped"]["d_k_mm"] == pytest.approx(6.01, abs=5e-3)
-    # Required = d_k + delta_d; the spec's 9.25 and 6.60 add rounded terms: 0.01 mm.
+    # Required = d_k + delta_d; the example's 9.25 and 6.60 add rounded terms: 0.01 mm.
     assert rows["pinned"]["required_mm"] == pytest.approx(9.25, abs=1e-2)
     assert rows["clamped"]["required_mm"] == pytest.approx(6.60, abs=1e-2)
     assert rows["pinned"]["passes"] is False

@@ -9,10 +9,11 @@ import pytest
 from typer.testing import CliRunner
 
 from pipeline.cli import app
+from pipeline.theory import roller_impact as ri
 
 runner = CliRunner()
 
-# The spec's example (reference-values.md, 002) with 20B-like rollers [mm].
+# The hand-worked example of docs/published-values.md (Paper 002) with 20B-like rollers [mm].
 EXAMPLE = ["--pitch-mm", "31.75", "--mass-per-m", "3.8", "--xi", "0.8", "--rpm", "500",
            "--roller-diameter-mm", "19.05", "--inner-width-mm", "19.56"]  # fmt: skip
 
@@ -66,10 +67,13 @@ def test_g_lim_4e_4_raises_n_max_by_sqrt_4_over_3():
     assert high / low == pytest.approx(math.sqrt(4 / 3), rel=1e-12)
 
 
-def test_published_constants_in_json():
-    published = {row["source"]: row["published"] for row in run_json(*EXAMPLE)["published"]}
-    assert published["Paper 002, eq. (6)"] == 5.48e-12
-    assert published["Paper 002, eq. (8)"] == 7400
+def test_published_constants_in_json_and_notes():
+    document = run_json(*EXAMPLE)
+    assert document["published"] == ri.compare_published().to_dict("records")
+    notes = [note for note in document["notes"] if note.startswith("Paper 002, eq. (")]
+    assert len(notes) == len(document["published"])
+    (misprint,) = [note for note in notes if "not reproduced" in note]
+    assert misprint.startswith("Paper 002, eq. (7)") and "1.8e+12" in misprint
 
 
 def test_missing_chain_data_names_the_option():

@@ -13,7 +13,7 @@ from pipeline.errors import FitError
 from pipeline.fit.impact import EXCLUSIONS, Ringing, clipping_levels, extract_impacts
 from pipeline.simulate.engagement import EngagementSettings, simulate_engagement
 
-#: The accuracy asked of a run's medians at SNR >= 10 (issue 4).
+#: The accuracy asked of a run's medians at SNR >= 10 (docs/quality.md).
 MEDIAN_TOLERANCE = 0.03
 SEEDS = range(20)
 

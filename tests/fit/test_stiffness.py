@@ -34,7 +34,7 @@ def specimen_fits(truth: TensileTruth, seed: int, **fit_settings) -> pd.DataFram
 
 
 def test_recovery_and_coverage_over_20_seeds():
-    """Done-when of issue 3: within 0.5 % of the truth, 95 % interval covers it in >= 90 %."""
+    """Within 0.5 % of the truth, 95 % interval covers it in >= 90 % (docs/quality.md)."""
     errors, covered = [], []
     for seed in range(20):
         result = specimen_stiffness(specimen_fits(SPECIMEN, seed))

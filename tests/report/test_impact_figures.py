@@ -1,8 +1,8 @@
 """The impact figures of the report: built from small datasets made here.
 
-The expected model values are typed from spec/reference-values.md (paper 000's
-grid) or computed with the closed forms of models.md, never read back from the
-code under test.
+The expected model values are typed from docs/published-values.md (paper 000's
+grid) or computed with the closed forms of docs/models/paper-000-wheel-impact.md,
+never read back from the code under test.
 """
 
 from __future__ import annotations
@@ -20,6 +20,7 @@ from matplotlib.figure import Figure
 from pipeline.fit.impact_model import model_tensions
 from pipeline.report import impact_figures as figs
 from pipeline.report.render import report_style, svg
+from pipeline.theory.wheel_impact import compare_published
 
 # Paper 000's example: chain 18x64, 6.6 kg/m, E0 = 2.26e7 N, L = 2 m (SI).
 T, D, Q, E0, L = 0.064, 0.018, 6.6, 2.26e7, 2.0
@@ -27,7 +28,7 @@ UNIT = re.compile(r"\[[^\]]+\]$")
 
 
 def closed_form(z: float, psi_deg: float, omega: float, k: float) -> tuple[float, float]:
-    """N_u1, N_u2 [N] from models.md's closed forms of v_u1, v_u2 and eq. (16)."""
+    """N_u1, N_u2 [N] from Paper 000's closed forms of v_u1, v_u2 and eq. (16)."""
     psi = math.radians(psi_deg)
     scale = math.sqrt(k * Q * T * E0 / L)
     return (omega * (T - D) * math.sin(psi / 2) * scale,
@@ -243,7 +244,7 @@ def test_apex_figure_curves_are_paper_000_figs_3_and_4():
     n_u1 = line(ax, "N_u1 model, any z (k = 2)")
     psi = n_u1.get_xdata()
     assert psi[0] <= 20 and psi[-1] >= 60
-    # reference-values.md, paper 000's grid at omega = 20 1/s [N]
+    # docs/published-values.md, paper 000's grid at omega = 20 1/s [N]
     for psi_deg, expected in ((20, 494), (40, 972), (60, 1421)):
         assert np.interp(psi_deg, psi, n_u1.get_ydata()) == pytest.approx(expected, abs=1)
     for z, grid in ((6, (3257, 3882, 4388)), (10, (2379, 3120, 3766))):
@@ -267,7 +268,8 @@ def test_apex_figure_overlays_the_measured_points_of_its_omega():
 
 def test_apex_figure_marks_the_published_smallest_N_u2_only_at_the_papers_conditions():
     figure = build(figs.impact_vs_apex, impact_summary())
-    label = "Paper 000 published: smallest N_u2 = 2300 N (z = 10, ψ = 20°)"
+    published = compare_published().set_index("quantity").at["N_u2_smallest", "published"]
+    label = f"Paper 000 published: smallest N_u2 = {published:g} N (z = 10, ψ = 20°)"
     marked = line(panel(figure, "ω = 20 1/s"), label)
-    assert (marked.get_xdata()[0], marked.get_ydata()[0]) == (20.0, 2300.0)
+    assert (marked.get_xdata()[0], marked.get_ydata()[0]) == (20.0, published)
     assert label not in [item.get_label() for item in panel(figure, "ω = 10 1/s").get_lines()]

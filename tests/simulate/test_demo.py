@@ -54,7 +54,7 @@ def test_cli_writes_both_demos(tmp_path):
     assert all((tmp_path / name / "campaign.toml").is_file() for name in DEMOS)
 
 
-#: reference-values.md, 001: eq. (20) with the printed coefficients [kgf].
+#: docs/published-values.md, Paper 001: eq. (20) with the printed coefficients [kgf].
 EQ_20_KGF = {"c13x50": 1.0553e6, "c14x50": 1.1845e6, "c18x64": 2.0430e6, "c22x86": 3.3705e6}
 
 

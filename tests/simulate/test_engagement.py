@@ -1,7 +1,8 @@
 """The virtual engagement bench: its truth is what its docstring says it is.
 
-Expectations are computed here independently: the closed forms of ``models.md``
-(section 000) for N_u, and an explicit sum over every strike for the signal.
+Expectations are computed here independently: the closed forms of Paper 000
+(``docs/models/paper-000-wheel-impact.md``) for N_u, and an explicit sum over
+every strike for the signal.
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ QUIET = {"snr": math.inf, "jitter": 0.0}
 
 
 def closed_form_tensions(s: EngagementSettings) -> tuple[float, float]:
-    """models.md, 000: v_u1 = w (t-d) sin(psi/2), v_u2 = w (t+d) sin(pi/z + psi/2), eq. (16)."""
+    """Paper 000: v_u1 = w (t-d) sin(psi/2), v_u2 = w (t+d) sin(pi/z + psi/2), eq. (16)."""
     root = math.sqrt(s.k * s.mass_per_length * s.t * s.E0 / s.branch_length)
     v_u1 = s.omega * (s.t - s.d) * math.sin(s.psi / 2)
     v_u2 = s.omega * (s.t + s.d) * math.sin(math.pi / s.z + s.psi / 2)
@@ -48,9 +49,9 @@ def test_defaults_are_paper_000_example():
     s = EngagementSettings()
     n_u1, n_u2 = s.impact_tensions()
     assert (n_u1, n_u2) == pytest.approx(closed_form_tensions(s), rel=1e-12)
-    # reference-values.md, 000 grid (q = 6.6 kg/m, z = 8, psi = 40 deg): 972 N and 3423 N
+    # docs/published-values.md, Paper 000 grid (q = 6.6 kg/m, z = 8, psi = 40 deg): 972 N, 3423 N
     assert round(n_u1) == 972 and round(n_u2) == 3423
-    # formats.md: "some 150 Hz for an 18x64 chain on a 2 m branch"
+    # docs/file-formats.md: "some 150 Hz for an 18x64 chain on a 2 m branch"
     assert s.omega_n / (2 * math.pi) == pytest.approx(math.sqrt(2.26e7 / (2.0 * 6.6 * 2.0))
                                                       / (2 * math.pi))
     assert 140 < s.omega_n / (2 * math.pi) < 160

@@ -1,7 +1,7 @@
 """Paper 004 (Kravchenko & Bogdanovych): pin criterion for roller chains of open drives.
 
-The paper publishes no numbers: expectations are the identities of models.md and the
-hand-worked 16B example of spec/reference-values.md (section 004), typed here.
+The paper publishes no numbers: expectations are the identities and the hand-worked
+16B example of docs/models/paper-004-pin-criterion.md, typed here.
 """
 
 from __future__ import annotations
@@ -15,11 +15,18 @@ from hypothesis import strategies as st
 
 from pipeline.theory import pin_criterion as pc
 
-# ISO 606 16B worked example (reference-values.md, 004), SI.
+# ISO 606 16B worked example (docs/models/paper-004-pin-criterion.md), SI.
 T, PIN, L, L1 = 25.4e-3, 8.28e-3, 25.45e-3, 29.78e-3  # m
 F_MAX, SIGMA_T, K_E, Z = 12e3, 800e6, 1.0, 40  # N, Pa, -, -
 HAND_MM = 5e-6  # the hand values are rounded to 0.01 mm: half a unit, in m
 HAND_UM = 5e-7  # ... or to 0.001 mm
+
+
+def test_no_published_numbers():
+    # Paper 004 prints no numbers: its paper_004.csv has no rows.
+    table = pc.compare_published()
+    assert table.empty
+    assert "within_tolerance" in table.columns
 
 
 def test_named_defaults():
@@ -55,7 +62,7 @@ def test_hand_example_16b(support, d_k_mm, required_mm, passes):
     check = pc.check_pin(PIN, T, Z, F_MAX, L1, L, SIGMA_T, K_E, support)
     assert check.critical_diameter == pytest.approx(d_k_mm * 1e-3, abs=HAND_MM)
     assert check.wear_allowance == pytest.approx(0.584e-3, abs=HAND_UM)
-    # The spec's required diameters add rounded terms (6.01 + 0.584 -> 6.60; exact 6.595):
+    # The example's required diameters add rounded terms (6.01 + 0.584 -> 6.60; exact 6.595):
     # 0.01 mm covers the two roundings. The sum itself is exact.
     assert check.required_diameter == pytest.approx(required_mm * 1e-3, abs=1e-5)
     assert check.required_diameter == check.critical_diameter + check.wear_allowance
@@ -79,7 +86,7 @@ def test_max_bending_moment_hand_value():
 def test_bending_stress_at_critical_diameter_is_the_allowable_stress(
     force, span, bush_fraction, stress, support
 ):
-    # sigma = M_max / W with W = pi d^3 / 32 (models.md, 004): an identity.
+    # sigma = M_max / W with W = pi d^3 / 32 (Paper 004, eq. (5)): an identity.
     bush = bush_fraction * span
     d_k = pc.critical_pin_diameter(force, span, bush, stress, support)
     moment = pc.max_bending_moment(force, span, bush, support)
