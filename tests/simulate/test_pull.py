@@ -14,6 +14,7 @@ from pipeline.simulate.pull import (
     pull_curve,
     simulate_pull,
 )
+from pipeline.theory.link_stiffness import table_1
 from pipeline.units import to_si
 
 #: Noise-free and unquantised: the log shows the model itself.
@@ -35,7 +36,7 @@ def dense(truth: PullTruth, rate: float = 200.0):
 
 def test_for_chain_takes_documented_defaults():
     truth = bench()
-    assert truth.E0 == pytest.approx(2.26e6 * 9.80665)  # Paper 001, Table 1
+    assert truth.E0 == pytest.approx(table_1()["18x64"].E0_exp_kgf * 9.80665)  # Table 1
     assert truth.max_force == pytest.approx(1.1 * 410 * KN)
     assert truth.yield_force == pytest.approx(0.65 * truth.max_force)
     assert truth.preload == pytest.approx(to_si(1000, "kgf"))
