@@ -260,13 +260,7 @@ def _print_result(result: CampaignResult) -> None:
                 f"{float(summary['k_fit_ci_high']):.4g}; Ryabov: k = 2)", highlight=False)
     for note in filter(None, summary.attrs.get("notes", "").split("\n")):
         say("note", "yellow", note)
-    for run_id, found in result.warnings.items():
-        for warning in found:
-            say("warning", "yellow", f"{run_id}: {warning}")
-    for failure in result.failures:
-        say("failed", "red", f"{failure.run_id}: {failure.message}")
-    for message in result.implausible:
-        say("implausible", "red", message)
+    _print_findings(result, failure_tag="failed")
     console.print(f"{_counts(result)}; results in {result.output} (summary tables in SI "
                   "units: forces in N)", markup=False, highlight=False, soft_wrap=True)
     if result.report is not None:
@@ -384,6 +378,18 @@ def run_command(
     raise typer.Exit(0 if all_ok else 1)
 
 
+def _print_findings(result: CampaignResult, failure_tag: str) -> None:
+    """The runs' warnings, the failures (tagged `failure_tag`) and the open plausibility
+    flags of a processed or checked campaign."""
+    for run_id, found in result.warnings.items():
+        for warning in found:
+            say("warning", "yellow", f"{run_id}: {warning}")
+    for failure in result.failures:
+        say(failure_tag, "red", f"{failure.run_id}: {failure.message}")
+    for message in result.implausible:
+        say("implausible", "red", message)
+
+
 def _validate_campaign(folder: Path, output_root: Path | None) -> bool:
     """Check one campaign as `run` would process it, print what is found; True when clean."""
     from pipeline.campaign import check_campaign
@@ -395,13 +401,7 @@ def _validate_campaign(folder: Path, output_root: Path | None) -> bool:
     except ChainbenchError as error:
         say("error", "red", str(error))
         return False
-    for run_id, found in result.warnings.items():
-        for warning in found:
-            say("warning", "yellow", f"{run_id}: {warning}")
-    for failure in result.failures:
-        say("error", "red", f"{failure.run_id}: {failure.message}")
-    for message in result.implausible:
-        say("implausible", "red", message)
+    _print_findings(result, failure_tag="error")
     problems = len(result.failures) + len(result.implausible)
     console.print(f"{folder}: {len(sheet.runs)} runs, {problems} problems",
                   markup=False, highlight=False)
