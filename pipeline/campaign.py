@@ -192,13 +192,18 @@ def _stored(path: Path) -> tuple[dict[str, float], dict[str, str]] | None:
         return None
 
 
+def _run_dataset(sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float | None,
+                 progress: Progress | None) -> xr.Dataset:
+    """The dataset of one run, processed by the stages of its kind (nothing written)."""
+    progress = progress or (lambda run_id, stage: None)
+    if run.kind == "tensile":
+        return process_tensile_run(sheet, run, raw_sha256, progress)
+    return process_engagement_run(sheet, run, raw_sha256, E0, progress)
+
+
 def _process(sheet: RunSheet, plan: _Plan, output: Path, progress: Progress | None) -> Path:
     """Process one run and store its dataset (a dask task when a client is given)."""
-    progress = progress or (lambda run_id, stage: None)
-    if plan.run.kind == "tensile":
-        dataset = process_tensile_run(sheet, plan.run, plan.raw_sha256, progress)
-    else:
-        dataset = process_engagement_run(sheet, plan.run, plan.raw_sha256, plan.E0, progress)
+    dataset = _run_dataset(sheet, plan.run, plan.raw_sha256, plan.E0, progress)
     dataset.attrs[INPUT_KEY] = plan.key
     return write_atomic(dataset, layout.run_output(output, plan.run.id))
 
@@ -602,15 +607,12 @@ def check_campaign(path: str | Path, output: str | Path | None = None,
     """
     sheet = load_run_sheet(path)
     output = Path(output) if output is not None else default_output(sheet)
-    progress = progress or (lambda run_id, stage: None)
     failures, stored, E0s = sheet_failures(sheet), {}, {}
     for run in sheet.runs:
         try:
-            if run.kind == "tensile":
-                E0s[run.id], dataset = None, process_tensile_run(sheet, run, "", progress)
-            else:
-                E0s[run.id] = chain_stiffness_for(sheet, run, output)
-                dataset = process_engagement_run(sheet, run, "", E0s[run.id], progress)
+            E0s[run.id] = (chain_stiffness_for(sheet, run, output)
+                           if run.kind == "engagement" else None)
+            dataset = _run_dataset(sheet, run, "", E0s[run.id], progress)
         except Exception as error:  # as process_campaign: every run is checked
             failures.append(run_failure(sheet, run, error))
             continue
