@@ -6,10 +6,8 @@ then, for the log with and without its angle channel, on one core (BLAS
 limited to one thread):
 
 * the baseline, measured in the same run on the same table:
-  :func:`pipeline.condition.engagement.detect_events` followed by
-  :func:`pipeline.fit.impact.extract_impacts` on the whole log;
-* :func:`pipeline.fit.chunked.extract_impacts_chunked` with chunks of
-  ``--chunk`` samples.
+  :func:`pipeline.engagement_log.analyse_log` with the whole log as one chunk;
+* the same with chunks of ``--chunk`` samples.
 
 Prints the best of ``--repeat`` CPU times and the throughput [samples/s] of
 each, the chunked throughput as a ratio of the baseline's, the peak memory
@@ -39,9 +37,8 @@ from typing import Any  # noqa: E402
 import numpy as np  # noqa: E402
 from _common import KIB, best_cpu_time, peak_kib  # noqa: E402
 
-from pipeline.condition.engagement import detect_events  # noqa: E402
-from pipeline.fit.chunked import extract_impacts_chunked  # noqa: E402
-from pipeline.fit.impact import ImpactResult, extract_impacts  # noqa: E402
+from pipeline.engagement_log import TableSource, analyse_log  # noqa: E402
+from pipeline.fit.impact import ImpactResult  # noqa: E402
 from pipeline.simulate.engagement import EngagementSettings, simulate_engagement  # noqa: E402
 
 #: Largest peak memory over the decoded arrays of a 10^7-sample log (docs/quality.md).
@@ -84,9 +81,9 @@ def measure(samples: float, rate: float, snr: float, chunk: int, repeat: int) ->
                             ("without_angle", ["time", "force"])):
         log = table[channels]
         paths: dict[str, Callable[[], ImpactResult]] = {
-            "whole": lambda log=log: extract_impacts(log, detect_events(log, z=z, omega=omega)),
-            "chunked": lambda log=log: extract_impacts_chunked(
-                log, z=z, omega=omega, chunk_samples=chunk)[1],
+            "whole": lambda log=log: analyse_log(TableSource(log), z=z, omega=omega).impacts,
+            "chunked": lambda log=log: analyse_log(TableSource(log), z=z, omega=omega,
+                                                   chunk_samples=chunk).impacts,
         }
         run: dict[str, Any] = {"decoded_mib": log.memory_usage(index=False).sum() / KIB**2}
         results = {}

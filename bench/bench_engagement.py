@@ -35,8 +35,7 @@ from typing import Any  # noqa: E402
 import numpy as np  # noqa: E402
 from _common import KIB, best_cpu_time, peak_kib  # noqa: E402
 
-from pipeline.condition.engagement import detect_events  # noqa: E402
-from pipeline.fit.impact import extract_impacts  # noqa: E402
+from pipeline.engagement_log import detect_events, extract_impacts  # noqa: E402
 from pipeline.simulate.engagement import EngagementSettings, simulate_engagement  # noqa: E402
 
 #: Target throughput of detection + extraction [samples/s] (docs/quality.md).

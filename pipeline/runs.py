@@ -18,11 +18,10 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from pipeline.condition.engagement import SpeedMismatchWarning, detect_events
+from pipeline.condition.engagement import SpeedMismatchWarning
 from pipeline.condition.tensile import TensileRun, condition_tensile
+from pipeline.engagement_log import TableSource, analyse_log
 from pipeline.errors import IngestError, RunSheetError, SignalError
-from pipeline.fit.chunked import extract_impacts_chunked
-from pipeline.fit.impact import extract_impacts
 from pipeline.fit.stiffness import SpecimenStiffness, fit_stiffness, specimen_stiffness
 from pipeline.fit.strength import Strength, specimen_strength
 from pipeline.ingest import TableMetadata, read_table
@@ -33,7 +32,7 @@ from pipeline.store.tensile import tensile_dataset
 from pipeline.units import to_si
 
 #: Engagement logs longer than this are processed in chunks of this many samples
-#: (with overlap; :mod:`pipeline.fit.chunked`): the same events and values, with
+#: (with overlap; :mod:`pipeline.engagement_log`): the same events and values, with
 #: a fifth of the working memory on a 10^7-sample log.
 CHUNK_SAMPLES = 1_000_000
 
@@ -234,14 +233,11 @@ def process_engagement_run(
     progress(run.id, "detect and extract impacts")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", SpeedMismatchWarning)  # kept in events.messages
-        if len(table) > CHUNK_SAMPLES:  # large log: bounded memory, same result
-            events, result = extract_impacts_chunked(
-                table, z=point["teeth"], omega=run.omega, chunk_samples=CHUNK_SAMPLES,
-                natural_frequency=natural, clip_level=clip, file=raw)
-        else:
-            events = detect_events(table, z=point["teeth"], omega=run.omega,
-                                   natural_frequency=natural, file=raw)
-            result = extract_impacts(table, events, clip_level=clip, file=raw)
+        analysis = analyse_log(
+            TableSource(table), z=point["teeth"], omega=run.omega,
+            chunk_samples=CHUNK_SAMPLES if len(table) > CHUNK_SAMPLES else None,
+            natural_frequency=natural, clip_level=clip, file=raw)
+    events, result = analysis.events, analysis.impacts
     attrs = _attrs(sheet, run, f"Engagement log {run.id} of campaign {sheet.campaign.id}",
                    raw_sha256)
     attrs.update(wheel=run.wheel, layout=metadata.layout,

@@ -40,12 +40,12 @@ def say(tag: str, style: str, text: str, *, stderr: bool = False) -> None:
     target.print(f"[{style}]{tag}[/{style}] {escape(text)}", highlight=False, soft_wrap=True)
 
 
-def _plain(value):
+def json_ready(value):
     """A JSON-friendly copy of `value` (numpy scalars and arrays become Python)."""
     if isinstance(value, Mapping):
-        return {str(key): _plain(item) for key, item in value.items()}
+        return {str(key): json_ready(item) for key, item in value.items()}
     if isinstance(value, (list, tuple, np.ndarray)):
-        return [_plain(item) for item in value]
+        return [json_ready(item) for item in value]
     if isinstance(value, np.generic):
         return value.item()
     if isinstance(value, float) and not math.isfinite(value):
@@ -105,7 +105,7 @@ def emit(
     if as_json:
         document = {"title": title, **({"units": dict(units)} if units else {}),
                     **(extra or {}), "rows": list(rows), "notes": list(notes)}
-        print(json.dumps(_plain(document), indent=2))
+        print(json.dumps(json_ready(document), indent=2))
         return
     table = Table(title=escape(title))
     columns = list(rows[0]) if rows else []

@@ -31,7 +31,7 @@ import typer
 from rich.markup import escape
 from rich.table import Table
 
-from pipeline.cli._output import _plain, console
+from pipeline.cli._output import console, json_ready
 from pipeline.errors import ChainbenchError, ColumnError
 from pipeline.runsheet import RUN_SHEET_NAME, resolve_inside
 
@@ -557,7 +557,7 @@ def command(
         document = {"campaign": folder.as_posix(), "run_sheet": target.as_posix(),
                     "runs": [run_json(run) for run in runs],
                     "skipped": [{"file": name, "reason": reason} for name, reason in skipped]}
-        print(json.dumps(_plain(document), indent=2))
+        print(json.dumps(json_ready(document), indent=2))
         return
     _show(runs, skipped)
     console.print(f"wrote {escape(str(target))}", highlight=False)

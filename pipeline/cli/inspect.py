@@ -23,7 +23,7 @@ import typer
 from rich.markup import escape
 from rich.table import Table
 
-from pipeline.cli._output import _plain, console
+from pipeline.cli._output import console, json_ready
 from pipeline.errors import ChainbenchError
 
 if TYPE_CHECKING:
@@ -136,6 +136,6 @@ def command(
         )
         raise typer.Exit(2) from error
     if as_json:
-        print(json.dumps(_plain(report), indent=2))
+        print(json.dumps(json_ready(report), indent=2))
     else:
         _show(report)

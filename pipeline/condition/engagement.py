@@ -5,9 +5,11 @@ tension of the active chain branch, and optionally the wheel angle, at a fixed
 operating point. Every seating period ``P = 2 pi / (z omega)`` a horizontal link
 seats and strikes the wheel twice, ``tau = pi / (z omega) = P / 2`` apart
 (Paper 000): the idle flank (impact 1), then the working flank of the next
-tooth (impact 2). :func:`detect_events` locates both strikes of every seating
-in the log, to about a millisecond; :mod:`pipeline.fit.impact` refines the
-times to a fraction of a sample and extracts the impact tensions.
+tooth (impact 2). This module holds the signal steps that locate both strikes
+of every seating, to about a millisecond, and the :class:`EngagementEvents`
+they give; :mod:`pipeline.condition.scan` composes them chunk by chunk (set-up,
+scan, merge) and :mod:`pipeline.fit.impact` refines the times to a fraction of
+a sample and extracts the impact tensions.
 
 How
 ---
@@ -105,6 +107,8 @@ class EngagementEvents:
         Sampling rate of the log [Hz].
     start_time : float
         Time of the first sample [s].
+    n_samples : int
+        Samples in the log.
     natural_frequency : float
         First estimate of the branch's natural angular frequency [rad/s].
     source : str
@@ -124,6 +128,7 @@ class EngagementEvents:
     z: int
     sample_rate: float
     start_time: float
+    n_samples: int
     natural_frequency: float
     source: str
     onset_resolution: float
@@ -388,15 +393,6 @@ def period_from_onsets(onsets: np.ndarray, guess: float) -> float:
     return float(np.dot(centred, onsets - onsets.mean()) / np.dot(centred, centred))
 
 
-def _seatings_from_force(strength: np.ndarray, block_time: np.ndarray, dt: float,
-                         stated: float) -> tuple[np.ndarray, float]:
-    """Impact-2 onsets [s] (the strongest onset of every period) and the mean period [s]."""
-    guess = period_from_autocorrelation(strength, dt, stated)
-    peaks, heights = onset_peaks(strength, dt, guess)
-    onsets = block_time[peaks[strong_peaks(heights)]]
-    return onsets, period_from_onsets(onsets, guess)
-
-
 def _strongest_near(strength: np.ndarray, block_time: np.ndarray, expected: np.ndarray,
                     half_width: float) -> np.ndarray:
     """Time [s] of the block with the strongest onset within `half_width` [s] of each expected."""
@@ -486,121 +482,6 @@ def seatings_on_track(strength: np.ndarray, t: np.ndarray, track: np.ndarray,
     return impact2 - (expected2 - expected1), impact2
 
 
-def _seatings_from_angle(strength: np.ndarray, angle: np.ndarray, angle_time: np.ndarray,
-                         block_time: np.ndarray, z: int, impact_angle: float | None,
-                         file: str | Path | None) -> tuple[np.ndarray, np.ndarray, float]:
-    """Impact-1 and impact-2 onsets [s] and the mean speed [1/s] from the angle channel.
-
-    `angle` is sampled at `angle_time`, often enough to unwrap; the phase of the
-    strikes is folded from the onsets (:func:`impact_phase`) unless `impact_angle`
-    is given.
-    """
-    t, theta = unwrapped_angle(angle, angle_time, file)
-    slope = angle_slope(t, theta)
-    track = angle_track(t, theta, slope, z, file)
-    period = 2 * np.pi / z / abs(slope)
-    phase1 = (impact_phase(strength, t, track, block_time, period, z) if impact_angle is None
-              else np.sign(slope) * impact_angle)
-    impact1, impact2 = seatings_on_track(strength, t, track, block_time, z, phase1, period)
-    return impact1, impact2, abs(slope)
-
-
-def detect_events(
-    table: pd.DataFrame,
-    *,
-    z: int,
-    omega: float,
-    natural_frequency: float | None = None,
-    impact_angle: float | None = None,
-    use_angle: bool = True,
-    period_tolerance: float = PERIOD_TOLERANCE,
-    file: str | Path | None = None,
-) -> EngagementEvents:
-    """Locate the two strikes of every seating in an engagement log.
-
-    Parameters
-    ----------
-    table : pandas.DataFrame
-        Canonical table (:mod:`pipeline.ingest.table`): ``time`` [s], ``force``
-        (branch tension) [N], optional ``angle`` [rad].
-    z : int
-        Number of teeth of the wheel [-] (run sheet).
-    omega : float
-        Wheel speed stated in the run sheet [1/s].
-    natural_frequency : float, optional
-        Expected natural angular frequency of the branch [rad/s], e.g.
-        ``sqrt(E0 / (L m_branch))``: narrows the search for the ringing.
-    impact_angle : float, optional
-        Wheel angle at impact 1, modulo ``2 pi / z`` [rad]; by default found
-        from the force.
-    use_angle : bool, optional
-        Use the angle channel when the table has one (default True).
-    period_tolerance : float, optional
-        Relative disagreement between measured and stated seating period that
-        gives a :class:`SpeedMismatchWarning` (default :data:`PERIOD_TOLERANCE`).
-    file : str or Path, optional
-        The log's file, named in errors and warnings.
-
-    Returns
-    -------
-    EngagementEvents
-        Onsets of impact 1 and 2 per seating, measured period and speed, and
-        the messages given.
-
-    Raises
-    ------
-    SignalError
-        When the log is not uniformly sampled, holds no force data or fewer than
-        :data:`MIN_PERIODS` seating periods, or no seating is found.
-
-    Warns
-    -----
-    SpeedMismatchWarning
-        When the measured seating period differs from ``2 pi / (z omega)`` by
-        more than `period_tolerance`.
-
-    References
-    ----------
-    Paper 000: seating period from eq. (9), tau = pi / (z omega), v_u2 > v_u1
-    from eqs. (1)-(2).
-    """
-    start, rate = sampling(table, file)
-    force = force_channel(table, file)
-    stated = float(seating_period(z, omega))
-    duration = force.size / rate
-    check_duration(duration, stated, z, omega, file)
-    force = fill_missing(force, file=file)
-
-    omega_n = natural_frequency_estimate(force, rate, stated, natural_frequency, file)
-    block = block_size(rate, omega_n)
-    dt = block / rate
-    strength = onset_strength(force, block, rate, omega_n)
-    block_time = start + dt * np.arange(strength.size)
-    # The strike starts within the peak block or the one before it (strength sums two).
-    lead = 0.5 * dt
-
-    has_angle = use_angle and "angle" in table and bool(np.isfinite(table["angle"]).any())
-    if has_angle:
-        # The angle once per ringing period: enough to unwrap and interpolate.
-        stride = block * SAMPLES_PER_RINGING
-        angle = table["angle"].to_numpy(dtype=float)[::stride]
-        impact1, impact2, measured_omega = _seatings_from_angle(
-            strength, angle, start + np.arange(angle.size) * stride / rate, block_time, z,
-            impact_angle, file)
-        period = 2 * np.pi / (z * measured_omega)
-        impact1, impact2 = impact1 + lead, impact2 + lead
-    else:
-        impact2, period = _seatings_from_force(strength, block_time, dt, stated)
-        impact2 = impact2 + lead
-        impact1 = impact2 - period / 2
-        measured_omega = 2 * np.pi / (z * period)
-    return collect_events(
-        impact1, impact2, period, measured_omega, z=z, omega=omega, duration=duration,
-        sample_rate=rate, start_time=start, natural_frequency=omega_n,
-        source="angle" if has_angle else "force", onset_resolution=dt,
-        period_tolerance=period_tolerance, file=file)
-
-
 def force_channel(table: pd.DataFrame, file: str | Path | None = None) -> np.ndarray:
     """The branch tension of a canonical table [N], as float64.
 
@@ -666,7 +547,7 @@ def fill_missing(force: np.ndarray, value: float | None = None,
 
 
 def collect_events(impact1: np.ndarray, impact2: np.ndarray, period: float,
-                   measured_omega: float, *, z: int, omega: float, duration: float,
+                   measured_omega: float, *, z: int, omega: float, n_samples: int,
                    sample_rate: float, start_time: float, natural_frequency: float, source: str,
                    onset_resolution: float, period_tolerance: float = PERIOD_TOLERANCE,
                    file: str | Path | None = None) -> EngagementEvents:
@@ -680,11 +561,11 @@ def collect_events(impact1: np.ndarray, impact2: np.ndarray, period: float,
         Measured seating period [s].
     measured_omega : float
         Measured wheel speed ``2 pi / (z period)`` [1/s].
-    z, omega, duration, sample_rate, start_time, natural_frequency, source, onset_resolution
-        As in :class:`EngagementEvents` (`omega` the stated speed [1/s], `duration`
-        the log's [s]).
+    z, omega, n_samples, sample_rate, start_time, natural_frequency, source, onset_resolution
+        As in :class:`EngagementEvents` (`omega` the stated speed [1/s]).
     period_tolerance : float, optional
-        See :func:`detect_events`.
+        Relative disagreement between measured and stated seating period that
+        gives a :class:`SpeedMismatchWarning` (default :data:`PERIOD_TOLERANCE`).
     file : str or Path, optional
         The log's file, named in errors and warnings.
 
@@ -696,9 +577,11 @@ def collect_events(impact1: np.ndarray, impact2: np.ndarray, period: float,
     Warns
     -----
     SpeedMismatchWarning
-        See :func:`detect_events`.
+        When the measured seating period differs from ``2 pi / (z omega)`` by
+        more than `period_tolerance` (also kept in :attr:`EngagementEvents.messages`).
     """
     stated = float(seating_period(z, omega))
+    duration = n_samples / sample_rate
     messages = []
     mismatch = period / stated - 1
     if abs(mismatch) > period_tolerance:
@@ -722,5 +605,6 @@ def collect_events(impact1: np.ndarray, impact2: np.ndarray, period: float,
     return EngagementEvents(
         impact1_time=impact1, impact2_time=impact2, seating_period=float(period),
         stated_period=stated, omega=float(measured_omega), stated_omega=float(omega), z=int(z),
-        sample_rate=sample_rate, start_time=start_time, natural_frequency=natural_frequency,
+        sample_rate=sample_rate, start_time=start_time, n_samples=int(n_samples),
+        natural_frequency=natural_frequency,
         source=source, onset_resolution=onset_resolution, messages=tuple(messages))

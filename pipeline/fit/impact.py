@@ -5,10 +5,17 @@ Each seating of a link strikes the wheel twice, ``tau = P / 2`` apart (Paper
 ``omega_d = omega_n sqrt(1 - zeta^2)``, on top of the slowly varying tension,
 and the ringing of earlier strikes goes on underneath. The amplitude ``A`` of a
 strike's response is the measured counterpart of the model's N_u (Paper 000,
-eq. (16)): this module extracts ``A`` for both strikes of every event found by
-:func:`pipeline.condition.engagement.detect_events`. It lives in ``fit/``
-because it is a model fit (the stage that also fits the campaign's impact
-model, :mod:`pipeline.fit.impact_model`).
+eq. (16)): this module extracts ``A`` for both strikes of every event the
+detection found (:mod:`pipeline.condition.scan`). It lives in ``fit/`` because
+it is a model fit (the stage that also fits the campaign's impact model,
+:mod:`pipeline.fit.impact_model`).
+
+Its steps, in map-reduce shape like the detection's (composed, for a table or
+a file read chunk by chunk, by :mod:`pipeline.engagement_log`):
+:func:`plan_extraction` (the events' windows and statuses, once per run) ->
+:func:`fit_ringing` (on the windows of up to :data:`RINGING_EVENTS` events) ->
+:func:`fit_chunk` (per chunk: the events whose impact 1 lies in it) ->
+:func:`impact_result` (merge, failed-fit and overlap rules, statistics).
 
 The model of one event
 ----------------------
@@ -71,6 +78,7 @@ import pandas as pd
 from numpy.lib.stride_tricks import sliding_window_view
 
 from pipeline.condition.engagement import ASSUMED_DAMPING, EngagementEvents
+from pipeline.condition.samples import LogSamples
 from pipeline.errors import FitError
 
 #: Window start before impact 1, as a fraction of tau.
@@ -248,7 +256,7 @@ class ImpactResult:
 
 
 @dataclass(frozen=True)
-class _Geometry:
+class WindowGeometry:
     """Sampling of a log and the shared window of its events."""
 
     start: float  # time of sample 0 [s]
@@ -259,7 +267,7 @@ class _Geometry:
     origin: int = 0  # sample of the log at index 0 of the array the windows are cut from
 
     @classmethod
-    def of(cls, events: EngagementEvents) -> _Geometry:
+    def of(cls, events: EngagementEvents) -> WindowGeometry:
         """The window of `events`' seatings (:data:`WINDOW_PRE`, :data:`WINDOW_GUARD`)."""
         tau, rate = events.tau, events.sample_rate
         pre = max(2, int(round(WINDOW_PRE * tau * rate)))
@@ -304,7 +312,7 @@ class _Windows:
     """
 
     def __init__(self, y: np.ndarray, start: np.ndarray, range1: tuple[int, int],
-                 range2: tuple[int, int], geo: _Geometry, pole: complex) -> None:
+                 range2: tuple[int, int], geo: WindowGeometry, pole: complex) -> None:
         basis = geo.basis(pole)
         self.basis, self.range1, self.range2 = basis, range1, range2
         self.total = basis.T @ basis
@@ -398,7 +406,7 @@ class _Fits:
 
 
 def _settle(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, margin: float,
-            geo: _Geometry, ringing: Ringing, passes: int = 4) -> _Fits:
+            geo: WindowGeometry, ringing: Ringing, passes: int = 4) -> _Fits:
     """Refine the onsets until every mask starts at the first sample after its onset.
 
     The windows are placed once, ``geo.pre`` samples before the first sample
@@ -472,7 +480,7 @@ def _amplitudes(fits: _Fits, ringing: Ringing, width: int
 
 
 def _free_phase_residuals(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray,
-                          geo: _Geometry, ringing: Ringing) -> np.ndarray:
+                          geo: WindowGeometry, ringing: Ringing) -> np.ndarray:
     """Residuals of the free-phase model on a few events (for the ringing fit)."""
     start = geo.first_sample(onset1) - geo.pre
     j1 = np.full(onset1.size, geo.pre)
@@ -495,7 +503,7 @@ def _require_ringing_events(onset1: np.ndarray) -> None:
                             "channel, or record a longer log")
 
 
-def _fit_ringing(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: _Geometry,
+def _fit_ringing(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: WindowGeometry,
                 omega_n: float, margin: float) -> tuple[Ringing, np.ndarray, np.ndarray]:
     """Fit omega_n and zeta of the branch on a few events.
 
@@ -544,7 +552,7 @@ def _fit_ringing(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: _Ge
     return ringing, onset1, onset2
 
 
-def _ringing_errors(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: _Geometry,
+def _ringing_errors(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: WindowGeometry,
                     ringing: Ringing) -> dict[str, float]:
     """Relative standard errors of the median N_u1, N_u2, peak1, peak2 due to omega_n, zeta.
 
@@ -583,137 +591,14 @@ def _ringing_errors(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: 
     return dict(zip(("N_u1", "N_u2", "peak1", "peak2"), relative.tolist(), strict=True))
 
 
-def clipping_levels(force: np.ndarray, run: int = 3) -> tuple[float | None, float | None]:
-    """Lower and upper clipping levels of a channel, detected from flat extremes.
-
-    Parameters
-    ----------
-    force : numpy.ndarray
-        The channel [N].
-    run : int, optional
-        Consecutive samples at the channel's extreme value that mark clipping.
-
-    Returns
-    -------
-    low, high : float or None
-        The minimum / maximum when it is held for `run` samples in a row (a
-        saturated amplifier or converter), else None.
-    """
-    levels: list[float | None] = []
-    for extreme in (np.fmin.reduce(force), np.fmax.reduce(force)):  # NaN ignored
-        at = np.flatnonzero(force == extreme)
-        consecutive = np.diff(at) == 1
-        flat = at.size >= run and bool(
-            np.any(np.convolve(consecutive, np.ones(run - 1), mode="valid") >= run - 1))
-        levels.append(float(extreme) if flat else None)
-    return levels[0], levels[1]
-
-
-def _hits(flags: np.ndarray, start: np.ndarray, width: int) -> np.ndarray:
-    """Whether each window ``[start, start + width)`` holds a sample with `flags` set."""
-    where = np.flatnonzero(flags)
-    return np.searchsorted(where, start + width) > np.searchsorted(where, start)
-
-
-def extract_impacts(
-    table: pd.DataFrame,
-    events: EngagementEvents,
-    *,
-    ringing: Ringing | None = None,
-    clip_level: float | None = None,
-    file: str | Path | None = None,
-) -> ImpactResult:
-    """Impact amplitudes N_u1, N_u2 of every event of an engagement log, and run statistics.
-
-    Parameters
-    ----------
-    table : pandas.DataFrame
-        Canonical table with ``force`` (branch tension) [N], sampled as in `events`.
-    events : EngagementEvents
-        Seatings found by :func:`pipeline.condition.engagement.detect_events`.
-    ringing : Ringing, optional
-        Natural frequency and damping of the branch; by default fitted on up to
-        :data:`RINGING_EVENTS` events of the log.
-    clip_level : float, optional
-        Upper saturation level of the force channel [N]; by default detected
-        from flat tops (and bottoms) with :func:`clipping_levels`.
-    file : str or Path, optional
-        The log's file, named in errors.
-
-    Returns
-    -------
-    ImpactResult
-        Per-event amplitudes and run statistics (see the module notes).
-
-    Raises
-    ------
-    FitError
-        When no event can be fitted.
-
-    References
-    ----------
-    Paper 000, eq. (16): N_u is the peak tension of an undamped branch; its
-    measured counterpart is the strike amplitude A (``docs/models/paper-000-wheel-impact.md``).
-    """
-    force = table["force"].to_numpy(dtype=float)
-    geo = _Geometry.of(events)
+def _relative(force: np.ndarray, offset: float) -> np.ndarray:
+    """``force - offset`` [N], 0 at the missing samples (windows holding them are excluded)."""
     missing = ~np.isfinite(force)
-    offset = _offset_of(force[:: _offset_stride(force.size)])
-    y = _relative(force, offset, missing)
-
-    prior1, prior2 = events.impact1_time, events.impact2_time
-    margin = 0.5 * events.onset_resolution  # masks after the onsets in the first pass
-    slack = _slack(events, geo, file)
-    start = geo.first_sample(prior1) - geo.pre - slack
-    span = geo.width + 2 * slack
-    low, high = _levels(clipping_levels(force), clip_level)
-    clipped = None
-    if low is not None or high is not None:
-        flags = np.zeros(force.size, dtype=bool)
-        if high is not None:
-            flags |= force >= high
-        if low is not None:
-            flags |= force <= low
-        clipped = _hits(flags, start, span)
-    status = _window_status(start, span, force.size, _hits(missing, start, span), clipped)
-    usable = _usable(status, file)
-
-    pick = _ringing_pick(usable)
-    ringing, relative_errors = _run_ringing(y, prior1[pick], prior2[pick], geo,
-                                            events.natural_frequency, margin, ringing)
-    fits = _fit_events(y, prior1[usable], prior2[usable], margin, geo, ringing, offset)
-    frame = _event_table(prior1, prior2, status, usable, fits, geo, ringing)
-    statistics, excluded = _run_statistics(frame, relative_errors, file)
-    return ImpactResult(frame, ringing, statistics, excluded, (low, high),
-                        messages=events.messages)
-
-
-#: Samples of a log that its median offset is taken from (every n-th, :func:`_offset_stride`).
-_OFFSET_SAMPLES = 100_000
-
-
-def _offset_stride(size: int) -> int:
-    """Stride of the samples of a `size`-sample log that its offset is taken from."""
-    return max(1, size // _OFFSET_SAMPLES)
-
-
-def _offset_of(sample: np.ndarray) -> float:
-    """Median of the finite values of `sample` [N] (0 without any): subtracted before the fits.
-
-    Only conditions the fits (the slow tension has a constant column): every
-    result but the rounding is the same whatever the offset.
-    """
-    sample = sample[np.isfinite(sample)]
-    return float(np.median(sample)) if sample.size else 0.0
-
-
-def _relative(force: np.ndarray, offset: float, missing: np.ndarray) -> np.ndarray:
-    """``force - offset`` [N], 0 at the `missing` samples."""
     return np.where(missing, 0.0, force - offset) if missing.any() else force - offset
 
 
-def _slack(events: EngagementEvents, geo: _Geometry, file: str | Path | None) -> int:
-    """Samples the windows may move by in the fits, on each side (see :func:`extract_impacts`).
+def _slack(events: EngagementEvents, geo: WindowGeometry, file: str | Path | None) -> int:
+    """Samples the windows may move by in the fits, on each side.
 
     Room for the onsets to move (the largest accepted shift, :data:`MAX_ONSET_SHIFT`,
     with the natural frequency possibly 30 % below its first estimate) plus the
@@ -728,15 +613,6 @@ def _slack(events: EngagementEvents, geo: _Geometry, file: str | Path | None) ->
             hint="the extraction needs tau = pi / (z omega) above about one ringing period of "
                  "the branch; check the speed and teeth in the run sheet")
     return int(math.ceil((reach + events.onset_resolution) * geo.rate)) + 1
-
-
-def _levels(detected: tuple[float | None, float | None], clip_level: float | None
-            ) -> tuple[float | None, float | None]:
-    """Clipping levels used [N]: the detected ones, the upper one lowered to `clip_level`."""
-    low, high = detected
-    if clip_level is not None:
-        high = clip_level if high is None else min(high, clip_level)
-    return low, high
 
 
 def _window_status(start: np.ndarray, span: int, size: int, gap: np.ndarray,
@@ -771,16 +647,126 @@ def _ringing_pick(usable: np.ndarray) -> np.ndarray:
                             .round().astype(int))]
 
 
-def _run_ringing(y: np.ndarray, prior1: np.ndarray, prior2: np.ndarray, geo: _Geometry,
-                 natural_frequency: float, margin: float, ringing: Ringing | None
-                 ) -> tuple[Ringing, dict[str, float]]:
-    """The run's ringing (fitted on the events given unless given) and its relative errors.
+@dataclass(frozen=True)
+class ExtractionPlan:
+    """The run-level set-up of the extraction (:func:`plan_extraction`).
 
-    The events given are :func:`_ringing_pick`'s; the relative errors are
-    :func:`_ringing_errors` of the medians over them.
+    Attributes
+    ----------
+    events : EngagementEvents
+        The seatings of the whole log.
+    geometry : WindowGeometry
+        Sampling and window of the events.
+    reach_start : numpy.ndarray
+        First sample of each event's reach (window plus slack).
+    span : int
+        Samples of the reach.
+    status : numpy.ndarray
+        Status of each event before the fits (``ok``, ``truncated``, ``gap``, ``clipped``).
+    usable : numpy.ndarray
+        Indices of the events fitted (those ``ok``).
+    clip_levels : tuple of (float or None)
+        Lower and upper clipping levels used [N].
+    offset : float
+        Subtracted from the force before the fits [N] (conditions them only).
+    file : str or None
+        The log's file, named in errors.
     """
+
+    events: EngagementEvents
+    geometry: WindowGeometry
+    reach_start: np.ndarray
+    span: int
+    status: np.ndarray
+    usable: np.ndarray
+    clip_levels: tuple[float | None, float | None]
+    offset: float
+    file: str | None = None
+
+    @property
+    def margin(self) -> float:
+        """Mask margin of the first pass [s]: the masks start after the detected onsets."""
+        return 0.5 * self.events.onset_resolution
+
+    @property
+    def ringing_events(self) -> np.ndarray:
+        """The events the ringing is fitted on (up to :data:`RINGING_EVENTS`, spread out)."""
+        return _ringing_pick(self.usable)
+
+    def events_of(self, start: int, stop: int) -> np.ndarray:
+        """The usable events whose impact 1 lies in samples ``[start, stop)``."""
+        first = self.geometry.first_sample(self.events.impact1_time[self.usable])
+        return self.usable[(first >= start) & (first < stop)]
+
+
+def plan_extraction(events: EngagementEvents, samples: LogSamples,
+                    file: str | Path | None = None) -> ExtractionPlan:
+    """Where each event's window lies, which events can be fitted, the clipping levels.
+
+    Parameters
+    ----------
+    events : EngagementEvents
+        The seatings of the log.
+    samples : LogSamples
+        The summary of the log's samples (:mod:`pipeline.condition.samples`):
+        gaps, clipping, offset.
+    file : str or Path, optional
+        The log's file, named in errors.
+
+    Returns
+    -------
+    ExtractionPlan
+
+    Raises
+    ------
+    FitError
+        When the strikes come too fast to be told apart, or no event's window
+        lies whole, gap-free and unclipped in the log.
+    """
+    geo = WindowGeometry.of(events)
+    slack = _slack(events, geo, file)
+    reach_start = geo.first_sample(events.impact1_time) - geo.pre - slack
+    span = geo.width + 2 * slack
+    status = _window_status(reach_start, span, events.n_samples, samples.missing(reach_start, span),
+                            samples.clipped(reach_start, span))
+    return ExtractionPlan(events, geo, reach_start, span, status, _usable(status, file),
+                          samples.clip_levels, samples.offset,
+                          None if file is None else str(file))
+
+
+def fit_ringing(windows: list[np.ndarray], plan: ExtractionPlan, ringing: Ringing | None = None
+                ) -> tuple[Ringing, dict[str, float]]:
+    """The run's ringing, fitted on the windows of :attr:`ExtractionPlan.ringing_events`.
+
+    Parameters
+    ----------
+    windows : list of numpy.ndarray
+        The force [N] over the reach of each of those events (samples
+        ``plan.reach_start[e]`` to ``+ plan.span``).
+    plan : ExtractionPlan
+        The run's plan.
+    ringing : Ringing, optional
+        The ringing when known (then only its relative errors are computed).
+
+    Returns
+    -------
+    ringing : Ringing
+    relative_errors : dict of str to float
+        Relative standard errors of the medians of ``N_u1``, ``N_u2``, ``peak1``,
+        ``peak2`` due to the ringing's uncertainty.
+
+    Notes
+    -----
+    The windows are laid end to end and each event's onsets shifted by as much,
+    so the fit sees the same samples around each event as on the whole log.
+    """
+    pick, events, geo = plan.ringing_events, plan.events, plan.geometry
+    shift = (plan.reach_start[pick] - plan.span * np.arange(pick.size)) / geo.rate
+    y = _relative(np.concatenate(windows), plan.offset)
+    prior1, prior2 = events.impact1_time[pick] - shift, events.impact2_time[pick] - shift
     if ringing is None:
-        ringing, prior1, prior2 = _fit_ringing(y, prior1, prior2, geo, natural_frequency, margin)
+        ringing, prior1, prior2 = _fit_ringing(y, prior1, prior2, geo, events.natural_frequency,
+                                               plan.margin)
     return ringing, _ringing_errors(y, prior1, prior2, geo, ringing)
 
 
@@ -828,7 +814,7 @@ class EventFits:
 
 
 def _fit_events(y: np.ndarray, prior1: np.ndarray, prior2: np.ndarray, margin: float,
-                geo: _Geometry, ringing: Ringing, offset: float) -> EventFits:
+                geo: WindowGeometry, ringing: Ringing, offset: float) -> EventFits:
     """Onsets, amplitudes and baselines of events (priors [s]) in `y` (force - `offset` [N])."""
     fits = _settle(y, prior1, prior2, margin, geo, ringing)
     coef, variance, rss = _amplitudes(fits, ringing, geo.width)
@@ -841,7 +827,7 @@ def _fit_events(y: np.ndarray, prior1: np.ndarray, prior2: np.ndarray, margin: f
 
 
 def _event_table(prior1: np.ndarray, prior2: np.ndarray, status: np.ndarray,
-                 usable: np.ndarray, fits: EventFits, geo: _Geometry,
+                 usable: np.ndarray, fits: EventFits, geo: WindowGeometry,
                  ringing: Ringing) -> pd.DataFrame:
     """The events' rows of :attr:`ImpactResult.events`, their fits judged against the run's.
 
@@ -903,3 +889,66 @@ def _run_statistics(frame: pd.DataFrame, relative_errors: dict[str, float],
     status = frame["status"].to_numpy()
     excluded = {reason: int(np.sum(status == reason)) for reason in EXCLUSIONS}
     return statistics, excluded
+
+
+def fit_chunk(force: np.ndarray, data_start: int, start: int, stop: int, plan: ExtractionPlan,
+              ringing: Ringing) -> EventFits:
+    """Final fits of the events whose impact 1 lies in samples ``[start, stop)`` (a pure function).
+
+    Parameters
+    ----------
+    force : numpy.ndarray
+        Samples ``data_start`` on of the log's force [N], holding the reach of
+        every such event (a chunk plus its overlap).
+    data_start : int
+        The log's index of ``force[0]``.
+    start, stop : int
+        The chunk's own span [samples of the log].
+    plan : ExtractionPlan
+        The run's plan.
+    ringing : Ringing
+        The run's ringing (:func:`fit_ringing`).
+
+    Returns
+    -------
+    EventFits
+        Onsets, amplitudes, variances, residuals and baselines of those events,
+        in the order of the log (none when no event is the chunk's).
+    """
+    mine = plan.events_of(start, stop)
+    if mine.size == 0:
+        return EventFits.none()
+    geo = replace(plan.geometry, origin=data_start)
+    return _fit_events(_relative(force, plan.offset), plan.events.impact1_time[mine],
+                       plan.events.impact2_time[mine], plan.margin, geo, ringing, plan.offset)
+
+
+def impact_result(plan: ExtractionPlan, fits: list[EventFits], ringing: Ringing,
+                  relative_errors: dict[str, float]) -> ImpactResult:
+    """The run's :class:`ImpactResult` from the fits of all its chunks, in order.
+
+    The failed-fit and overlap rules compare an event with the run and its
+    neighbours, so they are applied here, on the merged fits.
+
+    Parameters
+    ----------
+    plan : ExtractionPlan
+        The run's plan.
+    fits : list of EventFits
+        :func:`fit_chunk` of every chunk, in order (together: every usable event once).
+    ringing : Ringing
+        The run's ringing.
+    relative_errors : dict of str to float
+        From :func:`fit_ringing`.
+
+    Raises
+    ------
+    FitError
+        When every event failed its fit.
+    """
+    events = plan.events
+    frame = _event_table(events.impact1_time, events.impact2_time, plan.status.copy(),
+                         plan.usable, EventFits.concatenate(fits), plan.geometry, ringing)
+    statistics, excluded = _run_statistics(frame, relative_errors, plan.file)
+    return ImpactResult(frame, ringing, statistics, excluded, plan.clip_levels,
+                        messages=events.messages)

@@ -14,11 +14,10 @@ from hypothesis import strategies as st
 from pipeline.condition.engagement import (
     MIN_PERIODS,
     SpeedMismatchWarning,
-    detect_events,
     sampling,
 )
+from pipeline.engagement_log import detect_events, extract_impacts
 from pipeline.errors import ChainbenchError, SignalError
-from pipeline.fit.impact import extract_impacts
 from pipeline.simulate.engagement import EngagementSettings, simulate_engagement
 
 #: Onsets are located to about one averaged block (a tenth of a ringing period,

@@ -8,9 +8,10 @@ import math
 import numpy as np
 import pytest
 
-from pipeline.condition.engagement import detect_events
+from pipeline.condition.samples import clipping_levels
+from pipeline.engagement_log import detect_events, extract_impacts
 from pipeline.errors import FitError
-from pipeline.fit.impact import EXCLUSIONS, Ringing, clipping_levels, extract_impacts
+from pipeline.fit.impact import EXCLUSIONS, Ringing
 from pipeline.simulate.engagement import EngagementSettings, simulate_engagement
 
 #: The accuracy asked of a run's medians at SNR >= 10 (docs/quality.md).

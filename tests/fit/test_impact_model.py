@@ -8,9 +8,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from pipeline.condition.engagement import detect_events
+from pipeline.engagement_log import detect_events, extract_impacts
 from pipeline.errors import FitError
-from pipeline.fit.impact import extract_impacts
 from pipeline.fit.impact_model import fit_impact_model, linearity, model_tensions
 from pipeline.simulate.engagement import EngagementSettings, simulate_engagement
 

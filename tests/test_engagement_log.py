@@ -1,13 +1,12 @@
-"""Chunked extraction equals the extraction of the whole log (virtual engagement bench).
+"""The engagement pipeline: a log cut into chunks gives what the whole log gives (virtual bench).
 
 Tolerance: N_u1, N_u2 per event (and every other fitted column) agree to
-1e-6 relative. Both paths fit the same samples in the same windows with the same
+1e-6 relative. Both fit the same samples in the same windows with the same
 ringing; they differ by rounding only (a chunk's sample times are counted from
-its own first sample; the ringing is fitted on the sample events' windows laid
-end to end, the onsets shifted by as much), which leaves about 1e-9 at most.
-A window one sample off would change N_u by some 1e-3 at this noise, so 1e-6
-tells a real difference from rounding. Event times: within one sample (they
-agree to about 1e-11 s).
+its own first sample), which leaves about 1e-9 at most. A window one sample
+off would change N_u by some 1e-3 at this noise, so 1e-6 tells a real
+difference from rounding. Event times: within one sample (they agree to
+about 1e-11 s).
 """
 
 from __future__ import annotations
@@ -20,14 +19,9 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from pipeline.condition.engagement import SpeedMismatchWarning, detect_events
-from pipeline.fit.chunked import (
-    chunk_setup,
-    extract_impacts_chunked,
-    plan_chunks,
-    setup_samples,
-)
-from pipeline.fit.impact import extract_impacts
+from pipeline.condition.engagement import SpeedMismatchWarning
+from pipeline.condition.scan import engagement_setup, plan_chunks, setup_samples
+from pipeline.engagement_log import TableSource, analyse_log, detect_events, extract_impacts
 from pipeline.simulate.engagement import EngagementSettings, simulate_engagement
 
 RELATIVE = 1e-6
@@ -43,16 +37,14 @@ def simulated(seed: int = 7, **settings) -> pd.DataFrame:
 
 
 def whole(table: pd.DataFrame, **kwargs):
-    z, omega = kwargs.pop("z", 8), kwargs.pop("omega", 20.0)
-    events = detect_events(table, z=z, omega=omega, **kwargs)
-    return events, extract_impacts(table, events)
+    analysis = analyse_log(TableSource(table), z=kwargs.pop("z", 8),
+                           omega=kwargs.pop("omega", 20.0), **kwargs)
+    return analysis.events, analysis.impacts
 
 
 def assert_same(table, chunk_samples, reference, **kwargs):
     events, result = reference
-    chunked_events, chunked = extract_impacts_chunked(
-        table, z=kwargs.pop("z", 8), omega=kwargs.pop("omega", 20.0),
-        chunk_samples=chunk_samples, **kwargs)
+    chunked_events, chunked = whole(table, chunk_samples=chunk_samples, **kwargs)
     a, b = result.events, chunked.events
     assert len(b) == len(a) == events.count == chunked_events.count
     assert np.all(np.abs(b["event_time"] - a["event_time"]) < 1 / RATE)
@@ -76,8 +68,8 @@ def assert_same(table, chunk_samples, reference, **kwargs):
 
 def setup_of(table):
     head = table.iloc[: setup_samples(RATE, 8, 20.0)]
-    return chunk_setup(head, n_samples=len(table), end_time=float(table["time"].iloc[-1]),
-                       z=8, omega=20.0)
+    return engagement_setup(head, n_samples=len(table),
+                            end_time=float(table["time"].iloc[-1]), z=8, omega=20.0)
 
 
 def borders_in_strikes(table, chunk_samples, events) -> int:
@@ -156,10 +148,9 @@ def test_chunks_smaller_than_the_overlap_are_refused(log):
     with pytest.raises(ValueError, match="smaller than the overlap"):
         plan_chunks(setup, setup.overlap - 1)
     with pytest.raises(ValueError, match="smaller than the overlap"):
-        extract_impacts_chunked(table, z=8, omega=20.0, chunk_samples=1000)
+        whole(table, chunk_samples=1000)
     with pytest.raises(ValueError, match="below the"):
-        extract_impacts_chunked(table, z=8, omega=20.0, chunk_samples=50_000,
-                                overlap_samples=setup.overlap // 2)
+        whole(table, chunk_samples=50_000, overlap_samples=setup.overlap // 2)
 
 
 def test_chunks_tile_the_log_and_read_aligned_overlaps(log):
@@ -173,3 +164,59 @@ def test_chunks_tile_the_log_and_read_aligned_overlaps(log):
                for chunk in chunks)
     assert all(chunk.data_stop == min(len(table), chunk.stop + setup.overlap)
                for chunk in chunks)
+
+
+def test_the_two_halves_on_a_table_give_the_whole_pipeline(log):
+    table, (events, result) = log
+    detected = detect_events(table, z=8, omega=20.0)
+    extracted = extract_impacts(table, detected)
+    np.testing.assert_array_equal(detected.impact1_time, events.impact1_time)
+    pd.testing.assert_frame_equal(extracted.events, result.events)
+
+
+class CountingSource(TableSource):
+    """A table that records the rows of every read."""
+
+    def __init__(self, table):
+        super().__init__(table)
+        object.__setattr__(self, "reads", [])
+
+    def read(self, start, stop):
+        self.reads.append((start, stop))
+        return super().read(start, stop)
+
+
+def test_no_read_is_longer_than_a_chunk_and_its_overlaps(log):
+    table, reference = log
+    source = CountingSource(table)
+    chunk_samples = 40_000
+    analysis = analyse_log(source, z=8, omega=20.0, chunk_samples=chunk_samples)
+    setup = setup_of(table)
+    head = setup_samples(RATE, 8, 20.0)  # the set-up reads the head once, whatever the log
+    assert source.reads.count((0, head)) == 1
+    longest = max(stop - start for start, stop in source.reads if (start, stop) != (0, head))
+    assert longest <= chunk_samples + 2 * setup.overlap + setup.stride
+    assert analysis.events.count == reference[0].count
+
+
+@pytest.mark.parametrize("chunk_samples", [None, 37_813])
+def test_the_preview_is_every_stride_th_sample(log, chunk_samples):
+    table, _ = log
+    analysis = analyse_log(TableSource(table), z=8, omega=20.0, chunk_samples=chunk_samples,
+                           preview_samples=10_000)
+    stride = math.ceil(len(table) / 10_000)
+    assert analysis.preview_stride == stride
+    np.testing.assert_array_equal(analysis.preview_time, table["time"].to_numpy()[::stride])
+    np.testing.assert_array_equal(analysis.preview_force, table["force"].to_numpy()[::stride])
+
+
+def test_chunks_as_dask_tasks_give_the_same_result(log):
+    distributed = pytest.importorskip("distributed")
+    table, reference = log
+    with distributed.Client(processes=False, n_workers=1, threads_per_worker=2,
+                            dashboard_address=None) as client:
+        analysis = analyse_log(TableSource(table), z=8, omega=20.0, chunk_samples=100_003,
+                               client=client)
+    in_process = whole(table, chunk_samples=100_003)[1]
+    pd.testing.assert_frame_equal(analysis.impacts.events, in_process.events)
+    assert analysis.events.count == reference[0].count
