@@ -1,7 +1,8 @@
 """Processing a campaign: what is (re)done, in what order, and where it is stored.
 
 ``raw/<campaign>/campaign.toml`` + machine exports
--> per run (:mod:`pipeline.runs`): ingest -> condition -> fit -> one netCDF file
+-> per run (:mod:`pipeline.runs`): ingest -> condition -> fit -> its typed result
+   (:mod:`pipeline.results`) -> one netCDF file
 -> compare (:mod:`pipeline.compare`) -> ``summary.nc``, CSV tables (``summary.csv``
    per chain, ``specimens.csv`` per tensile specimen, ``impact_summary.csv``)
 -> report (:mod:`pipeline.report`) -> ``report.html``,
@@ -20,6 +21,9 @@ all in ``<project>/processed/<campaign id>/`` (``raw/`` is only read).
   at a time writes a campaign's outputs (:mod:`pipeline.store.lock`); the
   manifest is removed before the campaign outputs are rewritten and written
   after the last, so a run interrupted at any point is completed by the next.
+* One summary for fresh and reused runs: the summary is built from the results
+  read back from the run files (``from_dataset``), one run at a time, whether
+  they were processed now or before.
 * Scale-out: with a dask.distributed ``client``, each run is a task.
 """
 
@@ -27,9 +31,10 @@ from __future__ import annotations
 
 import hashlib
 import json
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import pandas as pd
 import xarray as xr
@@ -42,6 +47,9 @@ from pipeline.fit.impact_model import ImpactModelFit, fit_impact_model
 from pipeline.fit.stiffness import SpecimenStiffness
 from pipeline.plausibility import check_operating_points, check_specimens, excluded, flags_dataset
 from pipeline.report.build import build_report
+from pipeline.results import EngagementResult, RunResult, TensileResult, result_from_dataset
+from pipeline.results.notes import run_notes
+from pipeline.results.tensile import STRENGTH_VARIABLES
 from pipeline.runs import (
     Progress,
     chain_stiffness_for,
@@ -52,18 +60,16 @@ from pipeline.runs import (
 )
 from pipeline.runsheet import ChainDef, RunDef, RunSheet, load_run_sheet
 from pipeline.store import layout
-from pipeline.store.engagement import measured_point
 from pipeline.store.fingerprint import code_fingerprint
 from pipeline.store.lock import campaign_lock, remove_stale_temporaries
 from pipeline.store.netcdf import (
     provenance_attrs,
+    read_attrs,
     read_dataset,
-    read_scalars,
     sha256_of,
     write_atomic,
     write_text_atomic,
 )
-from pipeline.store.tensile import specimen_from, strength_from
 from pipeline.units import to_si
 
 if TYPE_CHECKING:
@@ -182,19 +188,19 @@ def _plan(sheet: RunSheet, run: RunDef, output: Path) -> _Plan:
     return _Plan(run, raw_sha256, E0, key)
 
 
-def _stored(path: Path) -> tuple[dict[str, float], dict[str, str]] | None:
-    """Scalars and attributes of a stored result, or None when absent or unreadable."""
+def _stored(path: Path) -> dict[str, Any] | None:
+    """The global attributes of a stored result, or None when absent or unreadable."""
     if not path.is_file():
         return None
     try:
-        return read_scalars(path)
+        return read_attrs(path)
     except OSError:  # unreadable: redo it
         return None
 
 
-def _run_dataset(sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float | None,
-                 progress: Progress | None) -> xr.Dataset:
-    """The dataset of one run, processed by the stages of its kind (nothing written)."""
+def _run_result(sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float | None,
+                progress: Progress | None) -> RunResult:
+    """The result of one run, processed by the stages of its kind (nothing written)."""
     progress = progress or (lambda run_id, stage: None)
     if run.kind == "tensile":
         return process_tensile_run(sheet, run, raw_sha256, progress)
@@ -202,8 +208,8 @@ def _run_dataset(sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float | None
 
 
 def _process(sheet: RunSheet, plan: _Plan, output: Path, progress: Progress | None) -> Path:
-    """Process one run and store its dataset (a dask task when a client is given)."""
-    dataset = _run_dataset(sheet, plan.run, plan.raw_sha256, plan.E0, progress)
+    """Process one run and store its result (a dask task when a client is given)."""
+    dataset = _run_result(sheet, plan.run, plan.raw_sha256, plan.E0, progress).to_dataset()
     dataset.attrs[INPUT_KEY] = plan.key
     return write_atomic(dataset, layout.run_output(output, plan.run.id))
 
@@ -289,34 +295,51 @@ def summary_table(summary: xr.Dataset, dim: str) -> pd.DataFrame:
     return summary[columns].to_dataframe()
 
 
-def _specimen_row(run: RunDef, scalars: dict[str, float], stiffness: SpecimenStiffness
-                  ) -> dict:
+@dataclass
+class _SummaryInputs:
+    """What the campaign summary is built from, gathered from the runs' results one by one:
+    per tensile run its specimen stiffness and its row of the specimen table, per
+    engagement run its operating point."""
+
+    specimens: dict[str, SpecimenStiffness] = field(default_factory=dict)
+    rows: dict[str, dict] = field(default_factory=dict)
+    points: dict[str, dict[str, float]] = field(default_factory=dict)
+
+    def add(self, sheet: RunSheet, run: RunDef, result: RunResult, E0: float | None) -> None:
+        """Take what the summary needs of `run`'s result (E0 [N]: of an engagement run)."""
+        if isinstance(result, TensileResult):
+            self.specimens[run.id] = result.specimen
+            self.rows[run.id] = _specimen_row(run, result)
+        else:
+            self.points[run.id] = {**operating_point(sheet, run, E0), **_measured(result)}
+
+
+def _specimen_row(run: RunDef, result: TensileResult) -> dict:
     """A tensile run's row of the specimen table (:func:`pipeline.compare.specimen_summary`)."""
+    stiffness = result.specimen
     return {"chain": run.chain, "specimen": run.specimen or run.id, "E0": stiffness.E0,
             "E0_ci_low": stiffness.E0_ci_low, "E0_ci_high": stiffness.E0_ci_high,
-            "single_pull": scalars["single_pull"], **strength_from(scalars)}
+            "single_pull": float(result.single_pull),
+            **{name: getattr(result.strength, name) for name in STRENGTH_VARIABLES}}
 
 
-def _collect(sheet: RunSheet, E0s: dict[str, float | None], stored: dict[str, tuple]):
-    """Each stored run's result: specimen stiffness and specimen row per tensile run,
-    operating point per engagement run, warnings."""
-    specimens: dict[str, SpecimenStiffness] = {}
-    rows: dict[str, dict] = {}
-    points: dict[str, dict[str, float]] = {}
-    notes: dict[str, list[str]] = {}
-    for run in sheet.runs:
-        if run.id not in stored:
-            continue
-        scalars, attrs = stored[run.id]
-        if run.kind == "tensile":
-            specimens[run.id] = specimen_from(scalars)
-            rows[run.id] = _specimen_row(run, scalars, specimens[run.id])
-        else:
-            points[run.id] = {**operating_point(sheet, run, E0s[run.id]),
-                              **measured_point(scalars)}
-        found = [attrs.get(name, "") for name in ("ingest_warnings", "warnings", "messages")]
-        notes[run.id] = [text for joined in found for text in joined.split("; ") if text]
-    return specimens, rows, points, {run_id: found for run_id, found in notes.items() if found}
+def _measured(result: EngagementResult) -> dict[str, float]:
+    """An engagement run's measured values in its operating point: ``N_u1_meas`` (the
+    median over its events), ``N_u1_iqr``, ``N_u1_stderr``, ``N_u1_count``, the same
+    for ``N_u2``, and ``omega_measured``."""
+    row = {"omega_measured": result.omega_measured}
+    for impact in ("N_u1", "N_u2"):
+        statistics = result.impact.statistics[impact]
+        row.update({f"{impact}_meas": statistics.median, f"{impact}_iqr": statistics.iqr,
+                    f"{impact}_stderr": statistics.stderr,
+                    f"{impact}_count": float(statistics.count)})
+    return row
+
+
+def _warnings(attrs: dict[str, dict[str, Any]]) -> dict[str, list[str]]:
+    """Per run with any, its warnings (:func:`pipeline.results.notes.run_notes`)."""
+    notes = {run_id: run_notes(found) for run_id, found in attrs.items()}
+    return {run_id: found for run_id, found in notes.items() if found}
 
 
 def _by_chain(sheet: RunSheet, specimens: dict[str, SpecimenStiffness], leave_out: set[str]
@@ -381,15 +404,15 @@ def _runs_dataset(sheet: RunSheet, stored: list[str]) -> xr.Dataset:
     )
 
 
-def _summary(sheet: RunSheet, stored: list[str], specimens, rows, points,
+def _summary(sheet: RunSheet, stored: list[str], inputs: _SummaryInputs,
              failures: list[RunFailure]) -> xr.Dataset:
     parts, notes, flags = [_runs_dataset(sheet, stored), _failures_dataset(failures)], [], []
     accepted = {run.id for run in sheet.runs if run.accept_implausible}
     if any(run.kind == "tensile" for run in sheet.runs):
-        tables, flags = _stiffness_parts(sheet, specimens, rows, accepted)
+        tables, flags = _stiffness_parts(sheet, inputs.specimens, inputs.rows, accepted)
         parts += tables
-    if points:
-        impact, impact_flags, notes = _impact_parts(points, accepted)
+    if inputs.points:
+        impact, impact_flags, notes = _impact_parts(inputs.points, accepted)
         parts.append(impact)
         flags += impact_flags
     parts.append(flags_dataset(flags))
@@ -474,7 +497,7 @@ def _remove_stale_runs(output: Path, campaign_id: str, current: set[str]) -> lis
         if path.name == layout.SUMMARY or path.stem in current:
             continue
         found = _stored(path)
-        if found is None or found[1].get("campaign") != campaign_id or "run_id" not in found[1]:
+        if found is None or found.get("campaign") != campaign_id or "run_id" not in found:
             continue  # not a run file chainbench wrote for this campaign: leave it
         path.unlink()
         removed.append(path.stem)
@@ -538,7 +561,7 @@ def process_campaign(
                 failures.append(_failure(sheet, run, error, debug))
         stored = {run_id: _stored(layout.run_output(output, run_id)) for run_id in plans}
         current = {run_id: found for run_id, found in stored.items()
-                   if not force and found is not None and found[1].get(INPUT_KEY) == plans[
+                   if not force and found is not None and found.get(INPUT_KEY) == plans[
                        run_id].key}
         todo = [plan for run_id, plan in plans.items() if run_id not in current]
         for run_id in current:
@@ -546,12 +569,10 @@ def process_campaign(
                 progress(run_id, "unchanged")
         done, failed = _execute(sheet, todo, output, progress, debug, client)
         failures += failed
-        current.update({run_id: read_scalars(path) for run_id, path in done.items()})
+        current.update({run_id: read_attrs(path) for run_id, path in done.items()})
         files = {run.id: layout.run_output(output, run.id) for run in sheet.runs
                  if run.id in current}
         removed = _remove_stale_runs(output, sheet.campaign.id, set(files))
-        E0s = {run_id: plan.E0 for run_id, plan in plans.items()}
-        specimens, rows, points, run_warnings = _collect(sheet, E0s, current)
         key = _digest({"runs": {run_id: plans[run_id].key for run_id in sorted(files)},
                        "failures": [failure.message for failure in failures],
                        "sheet": sheet.sha256, "code": code_fingerprint()})
@@ -559,13 +580,18 @@ def process_campaign(
             sheet.campaign.id, output, xr.Dataset(), files, failures,
             redone=[plan.run.id for plan in todo if plan.run.id in done],
             reused=[run_id for run_id in plans if run_id in current and run_id not in done],
-            removed=removed, warnings=run_warnings)
+            removed=removed, warnings=_warnings({run_id: current[run_id] for run_id in files}))
         if not force and _outputs_current(output, key):
             result.summary = read_dataset(output / layout.SUMMARY)
             result.report = output / layout.REPORT
             return result
         (output / layout.MANIFEST).unlink(missing_ok=True)  # outputs being rewritten
-        result.summary = _summary(sheet, list(files), specimens, rows, points, failures)
+        inputs = _SummaryInputs()
+        for run in sheet.runs:
+            if run.id in files:  # read back one at a time: the memory of one result
+                inputs.add(sheet, run, result_from_dataset(read_dataset(files[run.id])),
+                           plans[run.id].E0)
+        result.summary = _summary(sheet, list(files), inputs, failures)
         result.summary.attrs[INPUT_KEY] = key
         written = _write_summary(result.summary, output)
         try:  # the results are written: a failing report loses nothing but itself
@@ -607,22 +633,29 @@ def check_campaign(path: str | Path, output: str | Path | None = None,
     """
     sheet = load_run_sheet(path)
     output = Path(output) if output is not None else default_output(sheet)
-    failures, stored, E0s = sheet_failures(sheet), {}, {}
+    failures, inputs, attrs = sheet_failures(sheet), _SummaryInputs(), {}
+    for run, E0, result in _checked_results(sheet, output, progress, failures):
+        inputs.add(sheet, run, result, E0)
+        attrs[run.id] = result.global_attrs()
+    summary = _summary(sheet, list(attrs), inputs, failures)
+    return CampaignResult(sheet.campaign.id, output, summary, failures=failures,
+                          warnings=_warnings(attrs))
+
+
+def _checked_results(sheet: RunSheet, output: Path, progress: Progress | None,
+                     failures: list[RunFailure]
+                     ) -> Iterator[tuple[RunDef, float | None, RunResult]]:
+    """Each run processed in memory with its chain stiffness E0 [N] (engagement runs), one
+    at a time; the runs that fail are appended to `failures` (as process_campaign: every
+    run is checked)."""
     for run in sheet.runs:
         try:
-            E0s[run.id] = (chain_stiffness_for(sheet, run, output)
-                           if run.kind == "engagement" else None)
-            dataset = _run_dataset(sheet, run, "", E0s[run.id], progress)
-        except Exception as error:  # as process_campaign: every run is checked
+            E0 = chain_stiffness_for(sheet, run, output) if run.kind == "engagement" else None
+            result = _run_result(sheet, run, "", E0, progress)
+        except Exception as error:
             failures.append(run_failure(sheet, run, error))
             continue
-        stored[run.id] = ({name: variable.item() for name, variable in dataset.items()
-                           if variable.ndim == 0 and variable.dtype.kind in "fiu"},
-                          dataset.attrs)
-    specimens, rows, points, warnings = _collect(sheet, E0s, stored)
-    summary = _summary(sheet, list(stored), specimens, rows, points, failures)
-    return CampaignResult(sheet.campaign.id, output, summary, failures=failures,
-                          warnings=warnings)
+        yield run, E0, result
 
 
 def _check_output_folder(output: Path, sheet: RunSheet) -> None:

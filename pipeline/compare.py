@@ -1,11 +1,12 @@
 """Experiment against theory: the campaign's tables per chain and per operating point.
 
 For each chain of the run sheet: the experimental E0 (mean over its specimens
-with a 95 % interval), the theoretical E0 of Paper 001, eq. (20) (printed and
-exact coefficients), the discrepancy (E0_exp - E0_theory) / E0_theory with the
-interval carried over from E0_exp, the other common definition referred to
-E0_exp, and the lab's band check. Where the chain is one of Table 1's, the
-published values stand beside.
+with an interval at :data:`~pipeline.fit.stiffness.CONFIDENCE`), the theoretical
+E0 of Paper 001, eq. (20) (printed and exact coefficients), the discrepancy
+(E0_exp - E0_theory) / E0_theory with the interval carried over from E0_exp,
+the other common definition referred to E0_exp, and the lab's band check. Where
+the chain is one of Table 1's, the published values stand beside, with their
+own discrepancy.
 
 The check reports what the data say: the verdict is the point estimate's, and
 the interval shows how sure it is.
@@ -15,7 +16,13 @@ elongations, yield-like force, proof) and the verdicts of the acceptance
 limits its chain declares (:mod:`pipeline.acceptance`).
 
 For engagement runs, per operating point: the measured impact tensions
-against Paper 000's eq. (16) with Ryabov's k = 2 and with the fitted k.
+against Paper 000's eq. (16) with Ryabov's k = 2 and with the fitted k; per
+wheel and impact, the line of N_u in omega, and in words how straight those
+lines are.
+
+Every setting applied is written beside the values it gave: the level of each
+interval (``confidence_level`` of every ``*_ci_low``, ``*_ci_high``), the band
+(``band``), the k of the theory (``k_theory``), how k is fitted (``k_fit_method``).
 """
 
 from __future__ import annotations
@@ -35,9 +42,10 @@ from pipeline.acceptance import (
     chain_verdict,
     specimen_verdicts,
 )
-from pipeline.fit.impact_model import ImpactModelFit, linearity, model_tensions
-from pipeline.fit.stiffness import SpecimenStiffness, combine_specimens
-from pipeline.store.tensile import STRENGTH_VARIABLES
+from pipeline.fit import impact_model
+from pipeline.fit.impact_model import ImpactModelFit, linearity, linearity_note, model_tensions
+from pipeline.fit.stiffness import CONFIDENCE, SpecimenStiffness, combine_specimens
+from pipeline.results.tensile import STRENGTH_VARIABLES, variable_attrs
 from pipeline.theory import link_stiffness as ls
 from pipeline.theory.wheel_impact import RYABOV_MASS_SHARE
 from pipeline.units import to_si
@@ -58,8 +66,8 @@ class ChainInput:
 
 _VARIABLES = {
     "E0_exp": ("N", "experimental stiffness: mean over specimens"),
-    "E0_exp_ci_low": ("N", "lower limit of the 95 % interval of E0_exp"),
-    "E0_exp_ci_high": ("N", "upper limit of the 95 % interval of E0_exp"),
+    "E0_exp_ci_low": ("N", "lower limit of the {level} interval of E0_exp"),
+    "E0_exp_ci_high": ("N", "upper limit of the {level} interval of E0_exp"),
     "E0_exp_stderr": ("N", "standard error of E0_exp"),
     "n_specimens": ("1", "specimens counted in E0_exp"),
     "E0_theory": ("N", "theoretical stiffness, Paper 001 eq. (20), printed coefficients"),
@@ -72,6 +80,8 @@ _VARIABLES = {
     "geometry_mismatch": ("m", "t - (a + 2 R0 - d): 0 for a link whose dimensions close"),
     "E0_exp_published": ("N", "experimental E0 published in Paper 001, Table 1"),
     "E0_theory_published": ("N", "theoretical E0 published in Paper 001, Table 1"),
+    "discrepancy_published": ("1", "(E0_exp_published - E0_theory_published) / "
+                                   "E0_theory_published"),
 }
 
 
@@ -100,7 +110,9 @@ def _row(chain: ChainInput, specimens: Sequence[SpecimenStiffness], band) -> tup
     theory, exact, mismatch, notes = _theory(chain)
     row = dict.fromkeys(_VARIABLES, np.nan)
     row.update(E0_theory=theory, E0_theory_exact=exact, geometry_mismatch=mismatch)
-    row["E0_exp_published"], row["E0_theory_published"] = _published(chain)
+    published = row["E0_exp_published"], row["E0_theory_published"] = _published(chain)
+    if np.isfinite(published[1]):  # a chain of Table 1
+        row["discrepancy_published"] = ls.discrepancy(*published)
     row["n_specimens"] = len(specimens)
     if specimens:
         combined = combine_specimens(specimens)
@@ -135,7 +147,8 @@ def stiffness_summary(
     -------
     xarray.Dataset
         Variables of :data:`_VARIABLES` on dimension ``chain`` (labels = chain
-        keys); attributes ``band`` (``"0.03 0.06"``) and ``notes``.
+        keys), the interval limits with their ``confidence_level``; attributes
+        ``band`` (``"0.03 0.06"``) and ``notes``.
 
     References
     ----------
@@ -149,7 +162,7 @@ def stiffness_summary(
         notes.extend(chain_notes)
     data = {
         name: ("chain", np.array([row[name] for row in rows], dtype=float),
-               {"units": units, "long_name": long_name})
+               variable_attrs(units, long_name, name, CONFIDENCE))
         for name, (units, long_name) in _VARIABLES.items()
     }
     summary = xr.Dataset(data, coords={"chain": [chain.key for chain in chains]})
@@ -202,9 +215,14 @@ def impact_summary(points: pd.DataFrame, fit: ImpactModelFit | None) -> xr.Datas
     Returns
     -------
     xarray.Dataset
-        Variables on dimension ``operating_point`` (labels = run ids), and the
-        scalars ``k_fit``, ``k_fit_stderr``, ``k_fit_ci_low``, ``k_fit_ci_high``,
-        ``k_fit_chi2_reduced`` (NaN without a fit).
+        Variables on dimension ``operating_point`` (labels = run ids); the
+        scalars ``k_fit``, ``k_fit_stderr``, ``k_fit_ci_low``, ``k_fit_ci_high``
+        (with their ``confidence_level``), ``k_fit_chi2_reduced`` (NaN without a
+        fit) and ``k_fit_covers_theory`` (1 when the interval holds the theory's
+        k, 0 when not, -1 without a fit); the lines of N_u in omega on
+        ``speed_line`` (``line_*``); attributes ``k_theory`` (the k of the
+        ``_theory`` tensions), ``k_fit_method`` and ``linearity`` (how straight
+        the lines are, in words: :func:`~pipeline.fit.impact_model.linearity_note`).
 
     References
     ----------
@@ -225,11 +243,27 @@ def impact_summary(points: pd.DataFrame, fit: ImpactModelFit | None) -> xr.Datas
     summary = xr.Dataset(data, coords={"operating_point": table.index.astype(str).to_numpy()})
     values = (fit.value, fit.stderr, fit.ci_low, fit.ci_high, fit.chi2_reduced) if fit else (
         (np.nan,) * 5)
-    for name, value in zip(("k_fit", "k_fit_stderr", "k_fit_ci_low", "k_fit_ci_high",
-                            "k_fit_chi2_reduced"), values, strict=True):
-        summary[name] = ((), float(value), {"units": "1", "long_name": name.replace("_", " ")})
-    summary["k_fit"].attrs["long_name"] = "share k of link masses in the impact, fitted"
-    return xr.merge([summary, _speed_lines(points)])
+    level = fit.confidence if fit else impact_model.CONFIDENCE
+    for (name, long_name), value in zip(_K_VARIABLES.items(), values, strict=True):
+        summary[name] = ((), float(value), variable_attrs("1", long_name, name, level))
+    summary["k_fit_covers_theory"] = ((), np.int8(fit.covers(RYABOV_MASS_SHARE) if fit else -1), {
+        "long_name": "1 when the interval of k_fit holds k_theory, 0 when not, -1 without a fit",
+        "flag_values": np.array([-1, 0, 1], dtype="int8"),
+        "flag_meanings": "not_fitted outside inside"})
+    lines = linearity(points)
+    summary = xr.merge([summary, _speed_lines(lines)])
+    summary.attrs.update(k_theory=RYABOV_MASS_SHARE, k_fit_method=impact_model.FIT_METHOD,
+                         linearity=linearity_note(lines))
+    return summary
+
+
+_K_VARIABLES = {
+    "k_fit": "share k of link masses in the impact, fitted",
+    "k_fit_stderr": "standard error of k_fit",
+    "k_fit_ci_low": "lower limit of the {level} interval of k_fit",
+    "k_fit_ci_high": "upper limit of the {level} interval of k_fit",
+    "k_fit_chi2_reduced": "reduced chi-square of the fit of k (weighted by the standard errors)",
+}
 
 
 _LINE_VARIABLES = {
@@ -244,11 +278,11 @@ _LINE_VARIABLES = {
 }
 
 
-def _speed_lines(points: pd.DataFrame) -> xr.Dataset:
-    """Per wheel and impact, the straight line of measured N_u against omega (eq. (16)
-    makes N_u proportional to omega), on dimension ``speed_line``, variables ``line_*``."""
-    lines = linearity(points)
-    lines["apex_angle"] = np.degrees(lines["apex_angle"])
+def _speed_lines(lines: pd.DataFrame) -> xr.Dataset:
+    """The lines of :func:`~pipeline.fit.impact_model.linearity` (per wheel and impact, the
+    straight line of measured N_u against omega: eq. (16) makes N_u proportional to
+    omega) on dimension ``speed_line``, variables ``line_*``."""
+    lines = lines.assign(apex_angle=np.degrees(lines["apex_angle"]))
     return xr.Dataset({
         f"line_{name}": ("speed_line", lines[name].to_numpy(dtype=float),
                          {"units": units, "long_name": long_name})
@@ -257,8 +291,8 @@ def _speed_lines(points: pd.DataFrame) -> xr.Dataset:
 
 _SPECIMEN_VARIABLES = {
     "E0": ("N", "specimen stiffness E0"),
-    "E0_ci_low": ("N", "lower limit of the 95 % interval of E0"),
-    "E0_ci_high": ("N", "upper limit of the 95 % interval of E0"),
+    "E0_ci_low": ("N", "lower limit of the {level} interval of E0"),
+    "E0_ci_high": ("N", "upper limit of the {level} interval of E0"),
     "single_pull": ("1", "1 for a single pull (E0 from its one loading), 0 for a cyclic test"),
     **{name: (units, long_name) for name, (units, long_name) in STRENGTH_VARIABLES.items()},
 }
@@ -298,7 +332,7 @@ def specimen_summary(rows: Mapping[str, Mapping], limits: Mapping[str, Mapping[s
     for name, (units, long_name) in _SPECIMEN_VARIABLES.items():
         data[f"specimen_{name}"] = ("specimen", np.array([rows[i][name] for i in ids],
                                                          dtype=float),
-                                    {"units": units, "long_name": long_name})
+                                    variable_attrs(units, long_name, name, CONFIDENCE))
     verdicts = {i: specimen_verdicts(rows[i], limits.get(rows[i]["chain"], {})) for i in ids}
     chains = sorted(limits)
     for check in CHECKS:

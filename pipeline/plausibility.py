@@ -545,7 +545,8 @@ def flags_dataset(flags: Sequence[Flag]) -> xr.Dataset:
         (SI, in the unit of ``flag_units``: ``"N"`` or ``"1"``), ``flag_against``,
         ``flag_ratio`` [1], ``flag_slip`` (``""`` when none), ``flag_accepted``
         (int8, 1 accepted) and ``flag_message``; the dimension has size 0 when
-        there are no flags.
+        there are no flags. The bands the checks applied are its attributes
+        (:func:`thresholds`).
 
     Examples
     --------
@@ -557,4 +558,30 @@ def flags_dataset(flags: Sequence[Flag]) -> xr.Dataset:
         values = [_field(flag, field) for flag in flags]
         dtype = _DTYPES.get(variable, str)
         data[variable] = ("flag", np.array(values, dtype=dtype), dict(attrs))
-    return xr.Dataset(data)
+    return xr.Dataset(data, attrs=thresholds())
+
+
+def thresholds() -> dict[str, float | np.ndarray]:
+    """The bands the checks apply, as attributes of the outputs (all ratios [1] but strains).
+
+    Returns
+    -------
+    dict
+        ``plausibility_theory_band`` (value / theory: E0, N_u1, N_u2),
+        ``plausibility_peer_band`` (E0 / the chain's other specimens, checked
+        from ``plausibility_min_specimens`` specimens), ``plausibility_breaking_band``
+        (max force / the chain's breaking force), ``plausibility_capacity_tolerance``
+        (max force / the machine's capacity) and ``plausibility_strain_limit``
+        (a strain [1]); a band as ``[low, high]``.
+
+    Examples
+    --------
+    >>> thresholds()["plausibility_strain_limit"]
+    0.5
+    """
+    return {"plausibility_theory_band": np.array(THEORY_BAND),
+            "plausibility_peer_band": np.array(PEER_BAND),
+            "plausibility_min_specimens": MIN_SPECIMENS,
+            "plausibility_breaking_band": np.array(BREAKING_BAND),
+            "plausibility_capacity_tolerance": CAPACITY_TOLERANCE,
+            "plausibility_strain_limit": STRAIN_LIMIT}

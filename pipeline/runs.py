@@ -1,9 +1,9 @@
 """One run, top to bottom: ingest, condition, fit, and its dataset.
 
 Each function takes the validated run sheet and one of its runs and returns
-the run's :class:`xarray.Dataset` (see :mod:`pipeline.store.tensile` and
-:mod:`pipeline.store.engagement`). They read the raw file and nothing else is
-written here; :mod:`pipeline.campaign` decides what is run and stores it.
+the run's typed result (:mod:`pipeline.results`). They read the raw file and
+nothing is written here; :mod:`pipeline.campaign` decides what is run and
+stores it.
 """
 
 from __future__ import annotations
@@ -16,19 +16,23 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
-import xarray as xr
 
 from pipeline.condition.engagement import SpeedMismatchWarning
 from pipeline.condition.tensile import TensileRun, condition_tensile
 from pipeline.engagement_log import TableSource, analyse_log
 from pipeline.errors import IngestError, RunSheetError, SignalError
-from pipeline.fit.stiffness import SpecimenStiffness, fit_stiffness, specimen_stiffness
+from pipeline.fit.stiffness import (
+    SpecimenStiffness,
+    fit_settings,
+    fit_stiffness,
+    specimen_stiffness,
+)
 from pipeline.fit.strength import Strength, specimen_strength
 from pipeline.ingest import TableMetadata, read_table
+from pipeline.results import EngagementResult, TensileResult
+from pipeline.results.engagement import decimated_signal
 from pipeline.runsheet import RunDef, RunSheet
-from pipeline.store.engagement import engagement_dataset
 from pipeline.store.netcdf import provenance_attrs, read_dataset
-from pipeline.store.tensile import tensile_dataset
 from pipeline.units import to_si
 
 #: Engagement logs longer than this are processed in chunks of this many samples
@@ -84,6 +88,7 @@ class TensileAnalysis:
     fits: pd.DataFrame
     specimen: SpecimenStiffness
     strength: Strength
+    settings: dict[str, float | str]  #: what the fit applied (:func:`fit_settings`)
 
     @property
     def warnings(self) -> list[str]:
@@ -103,28 +108,29 @@ def analyse_tensile_run(sheet: RunSheet, run: RunDef,
     progress(run.id, "condition")
     conditioned = condition_tensile_run(sheet, run, table, metadata)
     progress(run.id, "fit")
-    window = None
+    options = {"force_window": None}
     if run.fit_window is not None:
-        window = (to_si(run.fit_window.force_low_kN, "kN"),
-                  to_si(run.fit_window.force_high_kN, "kN"))
-    fits = fit_stiffness(conditioned, force_window=window)
+        options["force_window"] = (to_si(run.fit_window.force_low_kN, "kN"),
+                                   to_si(run.fit_window.force_high_kN, "kN"))
+    fits = fit_stiffness(conditioned, **options)
     specimen = specimen_stiffness(fits, single_pull=conditioned.single_pull)
     strength = specimen_strength(conditioned, fits, yield_offset=run.yield_offset_pct / 100,
                                  proof_force=proof_force(sheet, run))
-    return TensileAnalysis(metadata, conditioned, fits, specimen, strength)
+    return TensileAnalysis(metadata, conditioned, fits, specimen, strength,
+                           fit_settings(**options))
 
 
 def process_tensile_run(
     sheet: RunSheet, run: RunDef, raw_sha256: str, progress: Progress = _quiet
-) -> xr.Dataset:
-    """Ingest, condition and fit one tensile run; its dataset holds the specimen's E0."""
+) -> TensileResult:
+    """Ingest, condition and fit one tensile run; its result holds the specimen's E0."""
     analysis = analyse_tensile_run(sheet, run, progress)
     attrs = _attrs(sheet, run, f"Tensile test {run.id} of campaign {sheet.campaign.id}",
                    raw_sha256)
     attrs.update(specimen=run.specimen or "", layout=analysis.metadata.layout,
-                 ingest_warnings="; ".join(analysis.metadata.warnings))
-    return tensile_dataset(analysis.conditioned, analysis.fits, analysis.specimen,
-                           analysis.strength, attrs)
+                 **analysis.settings)
+    return TensileResult.of(analysis.conditioned, analysis.fits, analysis.specimen,
+                            analysis.strength, attrs, analysis.metadata.warnings)
 
 
 def proof_force(sheet: RunSheet, run: RunDef) -> float | None:
@@ -215,7 +221,7 @@ def operating_point(sheet: RunSheet, run: RunDef, E0: float) -> dict[str, float]
 
 def process_engagement_run(
     sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float, progress: Progress = _quiet
-) -> xr.Dataset:
+) -> EngagementResult:
     """Ingest one engagement log, detect its events and extract the impact tensions.
 
     Parameters
@@ -240,6 +246,5 @@ def process_engagement_run(
     events, result = analysis.events, analysis.impacts
     attrs = _attrs(sheet, run, f"Engagement log {run.id} of campaign {sheet.campaign.id}",
                    raw_sha256)
-    attrs.update(wheel=run.wheel, layout=metadata.layout,
-                 ingest_warnings="; ".join(metadata.warnings))
-    return engagement_dataset(table, events, result, attrs)
+    attrs.update(wheel=run.wheel, layout=metadata.layout)
+    return EngagementResult.of(events, result, decimated_signal(table), attrs, metadata.warnings)

@@ -13,7 +13,7 @@ import pytest
 import xarray as xr
 from typer.testing import CliRunner
 
-from pipeline.campaign import process_campaign
+from pipeline.campaign import check_campaign, process_campaign
 from pipeline.cli import app
 from pipeline.store.lock import PID_NAME
 from pipeline.store.netcdf import read_dataset
@@ -55,6 +55,20 @@ def test_rerun_with_nothing_changed_redoes_nothing(campaign, tmp_path):
     assert second.redone == [] and sorted(second.reused) == sorted(first.redone)
     assert outputs(out) == stamps  # nothing rewritten: no run, no summary, no report
     xr.testing.assert_identical(numbers(second.summary), numbers(first.summary))
+
+
+def test_a_summary_rebuilt_from_the_stored_runs_is_the_fresh_one(campaign, tmp_path):
+    # With the manifest gone the summary is rebuilt, from results read back from the run
+    # files (from_dataset): the same numbers as from the runs processed in memory (validate).
+    out = tmp_path / "out"
+    first = process_campaign(campaign, out)
+    (out / ".outputs.json").unlink()
+    second = process_campaign(campaign, out)
+    assert second.redone == [] and (out / ".outputs.json").is_file()
+    xr.testing.assert_identical(numbers(second.summary), numbers(first.summary))
+    checked = check_campaign(campaign, out)
+    xr.testing.assert_identical(numbers(checked.summary), numbers(first.summary))
+    assert checked.warnings == second.warnings == first.warnings
 
 
 def test_changing_one_file_redoes_that_run_and_the_summary(campaign, tmp_path):

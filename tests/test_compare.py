@@ -9,6 +9,7 @@ import pandas as pd
 import pytest
 
 from pipeline.compare import ChainInput, impact_summary, stiffness_summary
+from pipeline.fit.impact_model import fit_impact_model, model_tensions
 from pipeline.fit.stiffness import SpecimenStiffness
 from pipeline.theory.link_stiffness import table_1
 from pipeline.units import to_si
@@ -114,3 +115,57 @@ def test_impact_summary_lines_in_omega_are_fitted_per_wheel_and_impact():
     assert float(second["line_slope"]) == pytest.approx(120)
     assert float(second["line_r2"]) == pytest.approx(1 - 6e4 / 2.94e6, rel=1e-9)
     assert float(first["line_apex_angle"]) == pytest.approx(40)
+
+
+def test_table_1_chains_carry_the_papers_own_discrepancy():
+    # docs/published-values.md, Paper 001: on Table 1 alone d = 3.70 % (13x50), 8.13 % (18x64)
+    chains = [table1_chain("13x50", 13, 50, 15, 33), table1_chain("18x64", 18, 64, 20, 42),
+              ChainInput(key="cX", catalog=None, d=0.02, t=0.08, R0=0.022, a=0.056,
+                         E_steel=2e11)]
+    summary = stiffness_summary(chains, {})
+    assert summary["discrepancy_published"].values[:2] == pytest.approx([0.0370, 0.0813],
+                                                                        abs=5e-5)
+    assert np.isnan(float(summary["discrepancy_published"][2]))  # not a chain of Table 1
+
+
+def test_intervals_record_their_confidence_level():
+    summary = stiffness_summary([table1_chain("14x50", 14, 50, 16, 32)],
+                                {"14x50": [specimen(1.22e7), specimen(1.26e7)]})
+    for name in ("E0_exp_ci_low", "E0_exp_ci_high", "discrepancy_ci_low", "discrepancy_ci_high"):
+        assert summary[name].attrs["confidence_level"] == 0.95
+    assert summary["E0_exp_ci_low"].attrs["long_name"] == (
+        "lower limit of the 95 % interval of E0_exp")
+    assert "confidence_level" not in summary["E0_exp"].attrs
+
+
+def exact_points(k: float) -> pd.DataFrame:
+    """Four operating points of one wheel measuring the model with mass share `k` exactly."""
+    points = pd.DataFrame(
+        {"teeth": 8, "apex_angle": math.radians(40), "omega": [10.0, 20.0, 30.0, 40.0],
+         "t": 0.064, "d": 0.018, "mass_per_length": 6.6, "E0": 2.26e7, "branch_length": 2.0},
+        index=["a", "b", "c", "d"])
+    n_u1, n_u2 = model_tensions(points, k=k)
+    return points.assign(omega_measured=points["omega"], N_u1_meas=n_u1, N_u2_meas=n_u2,
+                         N_u1_iqr=1.0, N_u2_iqr=1.0, N_u1_stderr=0.01 * n_u1,
+                         N_u2_stderr=0.01 * n_u2, N_u1_count=30, N_u2_count=30)
+
+
+@pytest.mark.parametrize(("k", "covers"), [(2.0, 1), (1.5, 0)])
+def test_impact_summary_records_the_theory_the_fit_and_the_lines(k, covers):
+    points = exact_points(k)
+    summary = impact_summary(points, fit_impact_model(points))
+    assert float(summary["k_fit"]) == pytest.approx(k, rel=1e-6)
+    # Ryabov's k = 2 (Paper 000, eq. (11)) is what the _theory tensions use
+    assert summary.attrs["k_theory"] == 2.0
+    assert int(summary["k_fit_covers_theory"]) == covers
+    assert summary["k_fit_ci_low"].attrs["confidence_level"] == 0.95
+    assert "weighted least squares" in summary.attrs["k_fit_method"]
+    # exactly proportional to omega: R^2 = 1 and no intercept on both lines
+    assert "(2 lines: wheels × impacts) give R² ≥ 1.0000" in summary.attrs["linearity"]
+    assert "at most 0.0 % of N_u" in summary.attrs["linearity"]
+
+
+def test_impact_summary_without_a_fit():
+    summary = impact_summary(exact_points(2.0), fit=None)
+    assert int(summary["k_fit_covers_theory"]) == -1
+    assert summary["k_fit_ci_high"].attrs["confidence_level"] == 0.95

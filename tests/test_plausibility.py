@@ -394,3 +394,17 @@ def test_flags_dataset_without_flags_is_empty(tmp_path):
     assert dataset["flag_value"].dtype == float
     dataset.to_netcdf(tmp_path / "empty.nc")
     assert xr.load_dataset(tmp_path / "empty.nc").sizes["flag"] == 0
+
+
+def test_the_bands_applied_are_the_flags_attributes():
+    # README, "Run sheet rules that catch slips", and docs/run-sheet.md: E0 and impact
+    # tensions within 1/3 to 3 times the theory, E0 within 1/2 to 2 times its chain's
+    # others (from three specimens), max force within 1/100 to 3 times the breaking force
+    # and at most the capacity (5 % let through, the module docstring), strains at most 50 %
+    attrs = flags_dataset([]).attrs
+    assert attrs["plausibility_theory_band"].tolist() == pytest.approx([1 / 3, 3])
+    assert attrs["plausibility_peer_band"].tolist() == pytest.approx([1 / 2, 2])
+    assert attrs["plausibility_breaking_band"].tolist() == pytest.approx([1 / 100, 3])
+    assert attrs["plausibility_capacity_tolerance"] == pytest.approx(1.05)
+    assert attrs["plausibility_strain_limit"] == 0.5
+    assert attrs["plausibility_min_specimens"] == 3

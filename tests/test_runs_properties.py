@@ -1,4 +1,4 @@
-"""Property-based test of one tensile run, file to dataset, on odd and broken logs.
+"""Property-based test of one tensile run, file to result and dataset, on odd and broken logs.
 
 Logs of the virtual bench with random settings (noise, 0 to 4 cycles, dwell,
 sampling, gauge resolution) are perturbed (NaN samples, a flat force, the sign
@@ -6,8 +6,9 @@ convention flipped to compression-negative, gauges reading against the load, a
 saturated gauge, a time step backwards, a gauge or the time dropped, very few
 rows), written in a random layout and units, and processed by
 :func:`pipeline.runs.process_tensile_run` through a one-run run sheet (random
-gauge length, number of cycles asked for, fit window). The outcome is a dataset
-whose ``specimen_E0`` is finite and positive, or a
+gauge length, number of cycles asked for, fit window). The outcome is a result
+whose specimen E0 is finite and positive and whose dataset gives it back
+(:meth:`~pipeline.results.TensileResult.from_dataset`), or a
 :class:`~pipeline.errors.ChainbenchError`: never another exception.
 """
 
@@ -21,6 +22,7 @@ from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 
 from pipeline.errors import ChainbenchError
+from pipeline.results import TensileResult
 from pipeline.runs import process_tensile_run
 from pipeline.runsheet import load_run_sheet
 from pipeline.simulate.export import FORCE_UNITS, LAYOUTS, LENGTH_UNITS, SUFFIXES, write_table
@@ -125,10 +127,13 @@ def test_a_tensile_run_gives_a_positive_E0_or_a_typed_error(
     sheet = load_run_sheet(folder)
     assert not sheet.invalid_runs
     try:
-        dataset = process_tensile_run(sheet, sheet.runs[0], "0" * 64)
+        result = process_tensile_run(sheet, sheet.runs[0], "0" * 64)
     except ChainbenchError as error:
         event(f"{type(error).__name__} ({', '.join(done) or 'no perturbation'})")
         return
     event("E0")
-    E0 = float(dataset["specimen_E0"])
+    E0 = result.specimen.E0
     assert math.isfinite(E0) and E0 > 0, (E0, done)
+    back = TensileResult.from_dataset(result.to_dataset())
+    np.testing.assert_equal(back.specimen.as_dict(), result.specimen.as_dict())
+    np.testing.assert_equal(back.strength.as_dict(), result.strength.as_dict())

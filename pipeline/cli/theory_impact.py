@@ -8,28 +8,14 @@ Example (Paper 000's case)::
 
 from __future__ import annotations
 
-import math
 from typing import Annotated
 
-import numpy as np
 import typer
 
 from pipeline import catalog
 from pipeline.cli._catalog import catalogue_chain
 from pipeline.cli._output import emit
 from pipeline.theory import wheel_impact as wi
-
-#: Units of the row members.
-UNITS = {
-    "z": "1",
-    "psi_deg": "deg",
-    "v_u1": "m/s",
-    "v_u2": "m/s",
-    "N_u1": "N",
-    "N_u2": "N",
-    "N_u2/N_u1": "1",
-    "tau": "s",
-}
 
 #: The command-line option of each model parameter, to point errors at it.
 _OPTION_OF = {
@@ -41,59 +27,6 @@ _OPTION_OF = {
     "k": "--k",
     "mass_per_length": "--mass-per-m",
 }
-
-
-def impact_rows(
-    t: float,
-    d: float,
-    teeth: list[int],
-    apex_deg: list[float],
-    omega: float,
-    mass_per_length: float,
-    E0: float,
-    branch_length: float,
-    k: float,
-) -> list[dict]:
-    """One row per wheel (z) and apex angle (psi), z varying slowest.
-
-    Arguments are SI (see :mod:`pipeline.theory.wheel_impact`) except `apex_deg`
-    [deg]; each row holds z, psi_deg, v_u1, v_u2, N_u1, N_u2, N_u2/N_u1 and tau
-    in the units of :data:`UNITS`.
-    """
-    z, psi_deg = (grid.ravel() for grid in np.meshgrid(teeth, apex_deg, indexing="ij"))
-    tau = wi.time_between_impacts(z, omega)  # first: it also rejects omega = 0
-    v_u1, v_u2 = wi.impact_velocities(t, d, z, np.radians(psi_deg), omega)
-    n_u1, n_u2 = (
-        wi.impact_tension(v, mass_per_length, t, E0, branch_length, k) for v in (v_u1, v_u2)
-    )
-    columns = zip(z, psi_deg, v_u1, v_u2, n_u1, n_u2, n_u2 / n_u1, tau, strict=True)
-    return [dict(zip(UNITS, (int(row[0]), *map(float, row[1:])), strict=True)) for row in columns]
-
-
-def _is_paper_chain(spec: catalog.ChainSpec) -> bool:
-    """Whether `spec` has the pitch and bar diameter of Paper 000's example chain."""
-    example = wi.paper_example()
-    return all(math.isclose(spec[name], example[name]) for name in ("t", "d"))
-
-
-def _published_notes(spec: catalog.ChainSpec) -> list[str]:
-    """Paper 000's published numbers and whether the model reproduces them (its chain only)."""
-    if not _is_paper_chain(spec):
-        return []
-    case = wi.paper_example()
-    notes = [
-        f"Paper 000 (section 3) publishes, for q = {case['mass_per_length']:g} kg/m * g, "
-        f"E0 = {case['E0']:g} N, L = {case['branch_length']:g} m, "
-        f"omega = {case['omega']:g} 1/s, k = {case['k']:g}:"
-    ]
-    for row in wi.compare_published().itertuples():
-        unit = "" if row.unit == "-" else f" {row.unit}"
-        status = "reproduced" if row.reproduced else "NOT REPRODUCED by the model"
-        notes.append(
-            f"  {row.quantity} = {row.published:g}{unit}, model {row.model:.4g}{unit}: {status} "
-            f"(tolerance {100 * row.tolerance:g} %)"
-        )
-    return notes
 
 
 def _mass_per_length(spec: catalog.ChainSpec, given: float | None) -> float:
@@ -112,7 +45,7 @@ def _stiffness(spec: catalog.ChainSpec, given: float | None) -> float:
     if given is not None:
         return given
     example = wi.paper_example()
-    if not _is_paper_chain(spec):
+    if not wi.is_paper_chain(spec["t"], spec["d"]):
         raise typer.BadParameter(
             f"Paper 000 gives E0 for its example chain only (t = {1e3 * example['t']:g} mm, "
             f"d = {1e3 * example['d']:g} mm): give the stiffness of {spec.name} in N "
@@ -171,7 +104,7 @@ def command(
         "k": k,
     }
     try:
-        rows = impact_rows(
+        rows = wi.table(
             inputs["t"], inputs["d"], teeth, apex, omega, inputs["mass_per_length"],
             inputs["E0"], branch_length, k,
         )  # fmt: skip
@@ -183,11 +116,11 @@ def command(
         title=f"Paper 000: impact tensions, chain {chain}",
         as_json=as_json,
         extra={"inputs": inputs},
-        units=UNITS,
+        units=wi.TABLE_UNITS,
         notes=[
             "units: psi in deg, v in m/s, N in N, tau in s; "
             f"omega = {omega:g} 1/s, L = {branch_length:g} m, "
             f"E0 = {inputs['E0']:.4g} N, q/g = {inputs['mass_per_length']:g} kg/m, k = {k:g}",
-            *_published_notes(spec),
+            *wi.published_notes(spec["t"], spec["d"]),
         ],
     )

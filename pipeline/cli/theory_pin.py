@@ -14,16 +14,12 @@ from __future__ import annotations
 
 from typing import Annotated
 
-import numpy as np
 import typer
 
 from pipeline.cli._catalog import chain_inputs
 from pipeline.cli._output import emit
 from pipeline.theory import pin_criterion as pc
 from pipeline.units import from_si, to_si
-
-#: Pin supports of eq. (4): name and K.
-SUPPORTS = {"pinned": pc.K_PINNED, "clamped": pc.K_CLAMPED}
 
 #: Chain quantities: the option overriding the catalogue, and its unit.
 _CHAIN_OPTIONS = {
@@ -32,37 +28,6 @@ _CHAIN_OPTIONS = {
     "bush_length": ("--bush-length-mm", "mm"),
     "plate_span": ("--plate-span-mm", "mm"),
 }
-
-
-def pin_rows(
-    chain: dict[str, float],
-    teeth: list[int],
-    force: float,
-    allowable_stress: float,
-    wear_coefficient: float,
-) -> list[dict]:
-    """One row per number of teeth and support, teeth varying slowest.
-
-    `chain` holds t, pin_diameter, bush_length and plate_span [m]; `force` [N],
-    `allowable_stress` [Pa]. Rows are in the units their keys name.
-    """
-    z, support = (grid.ravel() for grid in np.meshgrid(teeth, list(SUPPORTS), indexing="ij"))
-    check = pc.check_pin(
-        chain["pin_diameter"], chain["t"], z, force, chain["plate_span"], chain["bush_length"],
-        allowable_stress, wear_coefficient, [SUPPORTS[name] for name in support],
-    )  # fmt: skip
-    columns = {
-        "z": z.astype(int).tolist(),
-        "support": support.tolist(),
-        "K": [SUPPORTS[name] for name in support],
-        "delta_t1_mm": from_si(check.pitch_growth, "mm"),
-        "delta_d_mm": from_si(check.wear_allowance, "mm"),
-        "d_k_mm": from_si(check.critical_diameter, "mm"),
-        "required_mm": from_si(check.required_diameter, "mm"),
-        "pin_mm": np.broadcast_to(from_si(check.pin_diameter, "mm"), z.shape),
-        "passes": check.passes,
-    }
-    return [dict(zip(columns, row, strict=True)) for row in zip(*columns.values(), strict=True)]
 
 
 def command(
@@ -124,7 +89,7 @@ def command(
     inputs = chain_inputs(chain, "roller", given, _CHAIN_OPTIONS)
     force, stress = to_si(f_max_kn, "kN"), to_si(sigma_t_mpa, "MPa")
     try:
-        rows = pin_rows(inputs, teeth, force, stress, wear_coefficient)
+        rows = pc.table(inputs, teeth, force, stress, wear_coefficient)
     except ValueError as error:
         raise typer.BadParameter(str(error)) from None
     emit(

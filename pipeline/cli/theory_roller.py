@@ -12,10 +12,8 @@ Example::
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
 from typing import Annotated
 
-import numpy as np
 import typer
 
 from pipeline.cli._catalog import chain_inputs
@@ -33,64 +31,6 @@ _CHAIN_OPTIONS = {
     "roller_diameter": ("--roller-diameter-mm", "mm"),
     "inner_width": ("--inner-width-mm", "mm"),
 }
-
-
-def roller_rows(
-    chain: Mapping[str, float],
-    teeth: list[int],
-    rpm: list[float],
-    xi: float | None,
-    module: float,
-    profile_angle: float,
-    g_lim: float,
-) -> list[dict]:
-    """One row per number of teeth and speed, teeth varying slowest.
-
-    `chain` holds t, mass_per_length, roller_diameter and inner_width [SI];
-    `module` [m], `profile_angle` [rad], `g_lim` [J/m^2]. `xi` None means xi of
-    the involute sprocket (eqs. (3)-(5)). Rows are in the units their keys name.
-    """
-    z, n_rpm = (grid.ravel() for grid in np.meshgrid(teeth, rpm, indexing="ij"))
-    t, q = chain["t"], chain["mass_per_length"]
-    diameter, width = chain["roller_diameter"], chain["inner_width"]
-    if xi is None:
-        xi_z = ri.impact_velocity_coefficient(z, ri.base_radius(module, z, profile_angle), t)
-    else:
-        xi_z = np.full(z.shape, xi)
-    low, high = ri.impact_velocity_coefficient_bounds(z)
-    omega = to_si(n_rpm, "rpm")
-    energy = ri.impact_energy(q, omega, t, xi_z)
-    n_max = from_si(ri.max_angular_velocity(q, t, xi_z, diameter, width, g_lim), "rpm")
-    columns = {
-        "z": z.astype(int).tolist(),
-        "n_rpm": n_rpm,
-        "xi_min": low,
-        "xi_max": high,
-        "xi": xi_z,
-        "v_y_m_per_s": ri.impact_velocity(omega, t, xi_z),
-        "energy_J": energy,
-        "G_J_per_mm2": from_si(ri.specific_impact_energy(energy, diameter, width), "J/mm^2"),
-        "n_max_rpm": n_max,
-        "below_n_max": n_rpm <= n_max,
-    }
-    return [dict(zip(columns, row, strict=True)) for row in zip(*columns.values(), strict=True)]
-
-
-def _notes(xi: float | None, module_mm: float, profile_angle_deg: float) -> list[str]:
-    """How xi was obtained, and Paper 002's printed constants beside the derived ones."""
-    how = (
-        f"xi given ({xi:g}), not computed"
-        if xi is not None
-        else f"xi of an involute sprocket, m = {module_mm:.4g} mm, alpha = "
-        f"{profile_angle_deg:g} deg (eqs. (3)-(5)); xi for the GOST 591/592 profiles "
-        "cannot be derived from Paper 002: read it off its Fig. 2 and give --xi"
-    )
-    constants = [
-        f"{row.source}: {row.quantity} published {row.published:.4g}, "
-        f"derived {row.model:.5g} {row.unit}" + ("" if row.reproduced else f"; {row.note}")
-        for row in ri.compare_published().itertuples()
-    ]
-    return [how, *constants]
 
 
 def command(
@@ -173,7 +113,7 @@ def command(
     inputs = chain_inputs(chain, "roller", given, _CHAIN_OPTIONS)
     module = to_si(module_mm, "mm") if module_mm is not None else inputs["t"] / math.pi
     try:
-        rows = roller_rows(
+        rows = ri.table(
             inputs, teeth or DEFAULT_TEETH, rpm or DEFAULT_RPM, xi, module,
             math.radians(profile_angle_deg), to_si(g_lim, "J/mm^2"),
         )  # fmt: skip
@@ -197,5 +137,5 @@ def command(
             },
             "published": ri.compare_published().to_dict("records"),
         },
-        notes=_notes(xi, from_si(module, "mm"), profile_angle_deg),
+        notes=ri.table_notes(xi, module, math.radians(profile_angle_deg)),
     )

@@ -56,6 +56,14 @@ POINT_COLUMNS = ("teeth", "apex_angle", "omega", "t", "d", "mass_per_length", "E
 _MEDIAN_SE_FROM_MAD = math.sqrt(math.pi / 2) * 1.4826
 #: Columns identifying a wheel for the linearity check.
 _WHEEL_COLUMNS = ("teeth", "apex_angle", "t", "d", "mass_per_length", "E0", "branch_length")
+#: Level of the interval of the fitted parameter.
+CONFIDENCE = 0.95
+#: Speeds a wheel needs for its line of N_u in omega to be checked (R^2 needs three).
+LINE_SPEEDS = 3
+#: How :func:`fit_impact_model` fits, in words (for the outputs' provenance).
+FIT_METHOD = ("k of Paper 000 eq. (16) by weighted least squares (lmfit) over every operating "
+              "point, each weighted by the standard error of its run median; the error scaled "
+              "by the Birge ratio when the points scatter more than their errors")
 
 
 @dataclass(frozen=True)
@@ -206,8 +214,46 @@ def linearity(points: pd.DataFrame, model: tuple[np.ndarray, np.ndarray] | None 
     return pd.DataFrame(rows)
 
 
+def linearity_note(lines: pd.DataFrame) -> str:
+    """How straight the measured N_u are in omega, in one sentence (eq. (16): N_u ∝ omega).
+
+    Parameters
+    ----------
+    lines : pandas.DataFrame
+        The lines of :func:`linearity`: ``n_speeds``, ``r2`` [1], ``intercept``
+        and ``largest`` [N]; lines of fewer than :data:`LINE_SPEEDS` speeds are
+        not judged.
+
+    Returns
+    -------
+    str
+        The smallest R^2 and the largest intercept, as a share of the largest
+        N_u of its line, over the lines judged; or that none could be.
+
+    Examples
+    --------
+    >>> lines = pd.DataFrame({"n_speeds": [3, 3, 2], "r2": [0.99991, 0.9995, 0.5],
+    ...                       "intercept": [2.0, -30.0, 500.0],
+    ...                       "largest": [1000.0, 3000.0, 900.0]})
+    >>> print(linearity_note(lines))  # doctest: +NORMALIZE_WHITESPACE
+    Eq. (16) makes N_u proportional to ω. Straight lines through each wheel's measured medians
+    (2 lines: wheels × impacts) give R² ≥ 0.9995, and their intercepts are at most 1.0 % of
+    N_u at the highest speed (proportional: R² = 1, intercept 0).
+    """
+    judged = lines[lines["n_speeds"] >= LINE_SPEEDS] if len(lines) else lines
+    if judged.empty:
+        return ("Linearity in ω not checked: no wheel was run at three or more speeds "
+                "(eq. (16) makes N_u proportional to ω).")
+    share = np.nanmax(np.abs(judged["intercept"] / judged["largest"]))
+    return (f"Eq. (16) makes N_u proportional to ω. Straight lines through each wheel's measured "
+            f"medians ({len(judged)} lines: wheels × impacts) give R² ≥ "
+            f"{np.nanmin(judged['r2']):.4f}, and their intercepts are at most "
+            f"{100 * share:.1f} % of N_u at the highest speed (proportional: R² = 1, "
+            "intercept 0).")
+
+
 def fit_impact_model(points: pd.DataFrame, *, vary: str = "k", k: float = RYABOV_MASS_SHARE,
-                     confidence: float = 0.95) -> ImpactModelFit:
+                     confidence: float = CONFIDENCE) -> ImpactModelFit:
     """Fit the mass share k (or an effective E0 / L) of Paper 000's model to measured N_u.
 
     Parameters
@@ -222,7 +268,7 @@ def fit_impact_model(points: pd.DataFrame, *, vary: str = "k", k: float = RYABOV
     k : float, optional
         The mass share when ``vary="stiffness"`` (default 2, Ryabov).
     confidence : float, optional
-        Level of the confidence interval (default 0.95).
+        Level of the confidence interval [1] (default :data:`CONFIDENCE`).
 
     Returns
     -------

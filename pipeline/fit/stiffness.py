@@ -111,6 +111,9 @@ TANGENT_STEP = 0.025
 #: this fraction below its linear-region (largest) value, beyond its noise.
 YIELD_SLOPE_DROP = 0.05
 
+#: Level of every interval of this module: of a fit, of a specimen's and of a chain's E0.
+CONFIDENCE = 0.95
+
 
 @dataclass(frozen=True)
 class LinearFit:
@@ -351,7 +354,7 @@ def fit_line(
     strain: np.ndarray,
     window: tuple[float, float],
     *,
-    confidence: float = 0.95,
+    confidence: float = CONFIDENCE,
 ) -> LinearFit:
     """Fit ``force = E0 * strain + intercept`` with lmfit on the samples inside `window`.
 
@@ -424,7 +427,7 @@ def fit_stiffness(
     fraction_window: tuple[float, float] | None = None,
     min_span: float = MIN_SPAN,
     branches: Sequence[str] = FITTED_BRANCHES,
-    confidence: float = 0.95,
+    confidence: float = CONFIDENCE,
 ) -> pd.DataFrame:
     """Stiffness fits of every cycle and branch of a conditioned tensile run.
 
@@ -494,6 +497,52 @@ def fit_stiffness(
     return pd.DataFrame(rows, index=index)
 
 
+def fit_settings(
+    *,
+    force_window: tuple[float, float] | None = None,
+    fraction_window: tuple[float, float] | None = None,
+    min_span: float = MIN_SPAN,
+    confidence: float = CONFIDENCE,
+) -> dict[str, float | str]:
+    """What :func:`fit_stiffness` applies with these arguments, as dataset attributes.
+
+    Parameters
+    ----------
+    force_window : (float, float), optional
+        Fixed window [N], as given to :func:`fit_stiffness`.
+    fraction_window : (float, float), optional
+        Fixed window as fractions [1] of each branch's force range.
+    min_span : float
+        Smallest automatic window [1], a fraction of the branch's range.
+    confidence : float
+        Level of the intervals [1].
+
+    Returns
+    -------
+    dict
+        ``confidence_level`` [1] and ``fit_window``: the window rule, in words.
+
+    Examples
+    --------
+    >>> fit_settings(force_window=(10e3, 50e3))["fit_window"]
+    'fixed force window 10 to 50 kN for every branch'
+    """
+    if force_window is not None:
+        rule = (f"fixed force window {force_window[0] / 1e3:g} to {force_window[1] / 1e3:g} kN "
+                "for every branch")
+    elif fraction_window is not None:
+        rule = (f"fixed window {100 * fraction_window[0]:g} to {100 * fraction_window[1]:g} % "
+                "of each branch's force range")
+    else:
+        rule = (f"automatic per branch: the least normalised residual over windows on a grid of "
+                f"{100 * WINDOW_STEP:g} % of the branch's force range, spanning at least "
+                f"{100 * min_span:g} % of it (as ASTM E3076), each limit moved inward while the "
+                f"slope changes by more than {GUARD_Z:g} standard deviations (curvature guard); "
+                f"a loading below the onset of yield (tangent slope "
+                f"{100 * YIELD_SLOPE_DROP:g} % below its linear-region value)")
+    return {"confidence_level": confidence, "fit_window": rule}
+
+
 @dataclass(frozen=True)
 class SpecimenStiffness:
     """Stiffness of one specimen (one tensile run), SI units.
@@ -546,7 +595,7 @@ def _single_pull(fits: pd.DataFrame) -> SpecimenStiffness:
 
 
 def specimen_stiffness(
-    fits: pd.DataFrame, *, single_pull: bool = False, confidence: float = 0.95
+    fits: pd.DataFrame, *, single_pull: bool = False, confidence: float = CONFIDENCE
 ) -> SpecimenStiffness:
     """Experimental E0 of a specimen from the fits of its run.
 
@@ -635,7 +684,7 @@ class ChainStiffness:
 
 
 def combine_specimens(
-    specimens: Sequence[SpecimenStiffness], *, confidence: float = 0.95
+    specimens: Sequence[SpecimenStiffness], *, confidence: float = CONFIDENCE
 ) -> ChainStiffness:
     """Chain E0: mean over its specimens with a Student-t interval from their spread.
 

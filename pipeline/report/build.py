@@ -17,12 +17,14 @@ title, note, error message) is always shown as text.
 
 Reproducible: the same processed folder and the same `created` give the same
 bytes; the creation time appears on one line of the report.
+
+The report only formats: every number, verdict, sentence about a fit and
+setting it shows is read from the processed files (the settings through
+:mod:`pipeline.report.recorded`); none is computed here.
 """
 
 from __future__ import annotations
 
-import inspect
-import json
 import math
 import re
 from collections.abc import Iterable, Sequence
@@ -38,13 +40,13 @@ import xarray as xr
 from pipeline import __version__
 from pipeline.acceptance import CHECKS
 from pipeline.errors import ChainbenchError
-from pipeline.fit import stiffness as stiffness_fit
 from pipeline.report import design_figures, impact_figures, stiffness_figures
+from pipeline.report.recorded import level, recorded
 from pipeline.report.render import report_style, svg
+from pipeline.results.notes import lines
+from pipeline.results.tensile import STRENGTH_VARIABLES
 from pipeline.store import layout
 from pipeline.store.netcdf import read_dataset, write_text_atomic
-from pipeline.store.tensile import STRENGTH_VARIABLES
-from pipeline.theory.wheel_impact import RYABOV_MASS_SHARE
 from pipeline.units import from_si
 
 #: The jinja2 template (``pipeline/report/templates``).
@@ -194,8 +196,8 @@ def _band_checks(summary: xr.Dataset) -> Iterable[dict[str, str]]:
         result = {None: "not checked", True: "in band", False: "out of band"}[passed]
         spread = interval(row["discrepancy_ci_low"], row["discrepancy_ci_high"], percent)
         detail = (f"d = (E0_exp − E0_theory) / E0_theory = {percent(row['discrepancy'])} "
-                  f"(95 % interval {spread})" if passed is not None
-                  else "no experimental or no theoretical E0")
+                  f"({level(row['discrepancy_ci_low'].attrs)} interval {spread})"
+                  if passed is not None else "no experimental or no theoretical E0")
         yield {"check": f"E0 of chain {chain} within {100 * low:g} to {100 * high:g} % "
                         "above theory", "result": result, "status": _status(passed),
                "detail": detail}
@@ -204,14 +206,16 @@ def _band_checks(summary: xr.Dataset) -> Iterable[dict[str, str]]:
 def _impact_checks(summary: xr.Dataset) -> Iterable[dict[str, str]]:
     k, low, high = (float(summary[name]) for name in ("k_fit", "k_fit_ci_low", "k_fit_ci_high"))
     fitted = math.isfinite(k)
+    k_level = level(summary["k_fit_ci_low"].attrs)
     yield {"check": "impact model (Paper 000, eq. (16)) fitted to the measured N_u1, N_u2",
            "result": "fitted" if fitted else "not fitted", "status": _status(fitted),
-           "detail": (f"k = {number(k)} (95 % interval {interval(low, high)})" if fitted
+           "detail": (f"k = {number(k)} ({k_level} interval {interval(low, high)})" if fitted
                       else "see the notes")}
     if fitted:
-        inside = low <= RYABOV_MASS_SHARE <= high
-        yield {"check": f"Ryabov's k = {RYABOV_MASS_SHARE:g} inside the 95 % interval of the "
-                        "fitted k", "result": "yes" if inside else "no",
+        inside = int(summary["k_fit_covers_theory"]) == 1
+        yield {"check": f"Ryabov's k = {float(recorded(summary.attrs, 'k_theory')):g} inside "
+                        f"the {k_level} interval of the fitted k",
+               "result": "yes" if inside else "no",
                "status": _status(inside), "detail": f"interval {interval(low, high)}"}
 
 
@@ -239,10 +243,10 @@ def _acceptance_checks(summary: xr.Dataset) -> Iterable[dict[str, str]]:
 def _run_warnings(runs: Sequence[RunFile]) -> Iterable[dict[str, str]]:
     """One row per tensile run whose stages decided or repaired something."""
     for run in runs:
-        found = str(run.attrs.get("warnings", ""))
+        found = lines(run.attrs.get("warnings", ""))
         if run.kind == "tensile" and found:
             yield {"check": f"run {run.run_id}: channels, fracture and time",
-                   "result": "warning", "status": "info", "detail": found}
+                   "result": "warning", "status": "info", "detail": "; ".join(found)}
 
 
 def _plausibility_checks(summary: xr.Dataset) -> Iterable[dict[str, str]]:
@@ -316,8 +320,7 @@ def _chain_rows(summary: xr.Dataset) -> list[dict[str, str]]:
             "discrepancy_interval": interval(row["discrepancy_ci_low"],
                                              row["discrepancy_ci_high"], percent),
             "discrepancy_vs_exp": percent(row["discrepancy_vs_exp"]),
-            "published_discrepancy": percent((published_exp - published_theory)
-                                             / published_theory),
+            "published_discrepancy": percent(row["discrepancy_published"]),
             "verdict": ("not checked" if not math.isfinite(verdict)
                         else "in band" if verdict else "out of band"),
             "status": _status(None if not math.isfinite(verdict) else bool(verdict)),
@@ -417,6 +420,7 @@ def _stiffness(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
     low, high = _band(summary)
     return {
         "band": f"{100 * low:g} to {100 * high:g} %",
+        "level": level(summary["E0_exp_ci_low"].attrs),
         "overview_svg": svg(stiffness_figures.stiffness_by_specimen(summary, tensile)),
         "chains": _chain_rows(summary),
         "specimens": [_specimen_row(run) for run in tensile],
@@ -424,29 +428,15 @@ def _stiffness(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
         "runs": [{
             **_specimen_row(run),
             "single_pull": bool(int(run["single_pull"])) if "single_pull" in run else False,
+            "level": level(run["fit_E0_ci_low"].attrs),
             "channels": _channel_rows(run),
-            "warnings": "; ".join(filter(None, (str(run.attrs.get("warnings", "")),
-                                                str(run.attrs.get("ingest_warnings", ""))))),
+            "warnings": "; ".join([*lines(run.attrs.get("warnings", "")),
+                                   *lines(run.attrs.get("ingest_warnings", ""))]),
             "curve_svg": svg(stiffness_figures.force_strain(run)),
             "residual_svg": svg(stiffness_figures.fit_residuals(run)),
             "fits": _fit_rows(run),
         } for run in tensile],
     }
-
-
-def _linearity_note(summary: xr.Dataset) -> str:
-    """How straight the measured N_u are in omega, per wheel (eq. (16): N_u ∝ omega), as
-    the summary's ``line_*`` variables say (lines of three speeds or more)."""
-    checked = summary["line_n_speeds"].values >= 3 if "line_n_speeds" in summary else []
-    if not np.any(checked):
-        return ("Linearity in ω not checked: no wheel was run at three or more speeds "
-                "(eq. (16) makes N_u proportional to ω).")
-    r2 = summary["line_r2"].values[checked]
-    share = np.abs(summary["line_intercept"].values / summary["line_largest"].values)[checked]
-    return (f"Eq. (16) makes N_u proportional to ω. Straight lines through each wheel's measured "
-            f"medians ({int(np.sum(checked))} lines: wheels × impacts) give R² ≥ "
-            f"{np.nanmin(r2):.4f}, and their intercepts are at most {percent(np.max(share), 1)} "
-            "of N_u at the highest speed (proportional: R² = 1, intercept 0).")
 
 
 def _point_rows(summary: xr.Dataset) -> list[dict[str, str]]:
@@ -470,14 +460,14 @@ def _impact(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
     by_id = {run.run_id: run for run in runs if run.kind == "engagement"}
     zoomed = next((by_id[str(point)] for point in summary["operating_point"].values
                    if str(point) in by_id), None)
-    figures = []
+    figures, k_theory = [], f"{float(recorded(summary.attrs, 'k_theory')):g}"
     with report_style():
         if zoomed is not None:
             figures.append({"caption": f"Run {zoomed.run_id}: a stretch of the branch-tension "
                                        "log with the detected impacts marked.",
                             "svg": svg(impact_figures.impact_zoom(zoomed.load()))})
         figures.append({"caption": "Measured impact tensions against wheel speed, with the "
-                                   f"model for k = {RYABOV_MASS_SHARE:g} and for the fitted k.",
+                                   f"model for k = {k_theory} and for the fitted k.",
                         "svg": svg(impact_figures.impact_vs_omega(summary))})
         figures.append({"caption": "Impact tensions against the tooth apex angle, per number "
                                    "of teeth (as Paper 000, figures 3 and 4).",
@@ -493,8 +483,9 @@ def _impact(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
         "k_stderr": number(k["k_fit_stderr"], 2),
         "k_interval": interval(k["k_fit_ci_low"], k["k_fit_ci_high"]),
         "k_chi2": number(k["k_fit_chi2_reduced"], 3),
-        "k_ryabov": f"{RYABOV_MASS_SHARE:g}",
-        "linearity": _linearity_note(summary),
+        "k_level": level(summary["k_fit_ci_low"].attrs),
+        "k_ryabov": k_theory,
+        "linearity": str(recorded(summary.attrs, "linearity")),
         "comparison": ", ".join(comparison),
     }
 
@@ -515,31 +506,56 @@ def _not_reproduced() -> list[dict[str, str]]:
         cells["published"] = published.rstrip("0").rstrip(".") if "." in published \
             else published
         cells["model"] = number(row["model"], 4)
-        cells["difference"] = percent(row["model"] / row["published"] - 1, 1)
+        cells["difference"] = percent(row["difference"], 1)
         rows.append(cells)
     return rows
 
 
-def _window_setting(runs: Sequence[RunFile]) -> str:
-    automatic = (f"automatic per branch: the least normalised residual over windows on a grid of "
-                 f"{100 * stiffness_fit.WINDOW_STEP:g} % of the branch's force range, spanning at "
-                 f"least {100 * stiffness_fit.MIN_SPAN:g} % of it (as ASTM E3076), each limit "
-                 f"moved inward while the slope changes by more than "
-                 f"{stiffness_fit.GUARD_Z:g} standard deviations (curvature guard)")
-    given = sorted(run.run_id for run in runs if run.kind == "tensile"
-                   and json.loads(str(run.attrs.get("run_entry") or "{}")).get("fit_window"))
-    if given:
-        return f"{automatic}; runs {', '.join(given)}: the window of the run sheet"
-    return automatic
+def _grouped(texts: dict[str, str]) -> str:
+    """Run id -> a setting as one text: the setting when all runs share it, else each
+    setting followed by its runs."""
+    runs: dict[str, list[str]] = {}
+    for run_id, text in texts.items():
+        runs.setdefault(text, []).append(run_id)
+    if len(runs) == 1:
+        return next(iter(runs))
+    return "; ".join(f"{text} (runs {', '.join(ids)})" for text, ids in runs.items()) or MISSING
+
+
+def _extraction(attrs: dict[str, Any]) -> str:
+    """The impact extraction's settings an engagement run file records, in words."""
+    return (f"each event's window from {float(recorded(attrs, 'event_window_pre')):g} tau "
+            f"before impact 1 to {float(recorded(attrs, 'event_window_guard')):g} tau before "
+            "the next seating (tau: half the seating period); an event's fit failed when an "
+            f"onset moves by more than {float(recorded(attrs, 'max_onset_shift')):g} ringing "
+            f"periods or its residual exceeds {float(recorded(attrs, 'residual_outlier')):g} "
+            "times the run's median; omega_n and zeta fitted on up to "
+            f"{int(recorded(attrs, 'ringing_events_max'))} events")
+
+
+def _plausibility(summary: xr.Dataset) -> str:
+    """The bands of the plausibility checks the summary records, in words."""
+    def band(name: str) -> str:
+        low, high = (float(value) for value in recorded(summary.attrs, name))
+        return f"{low:.3g} to {high:.3g}"
+
+    attrs = summary.attrs
+    return (f"value / theory (E0, N_u1, N_u2) within {band('plausibility_theory_band')}; E0 / "
+            f"the chain's other specimens within {band('plausibility_peer_band')} (from "
+            f"{int(recorded(attrs, 'plausibility_min_specimens'))} specimens); max force / "
+            f"breaking force within {band('plausibility_breaking_band')}; max force at most "
+            f"{float(recorded(attrs, 'plausibility_capacity_tolerance')):g} x the machine's "
+            f"capacity; strains at most {float(recorded(attrs, 'plausibility_strain_limit')):g}")
 
 
 def _provenance(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
-    confidence = inspect.signature(stiffness_fit.combine_specimens).parameters["confidence"]
-    settings = []
+    settings, levels = [], []
     if _has(summary, "chain"):
         low, high = _band(summary)
+        windows = {run.run_id: str(recorded(run.attrs, "fit_window")) for run in runs
+                   if run.kind == "tensile"}
         settings += [
-            ("stiffness fit window", _window_setting(runs)),
+            ("stiffness fit window", _grouped(windows)),
             ("specimen E0", "mean of the loading slopes of cycles 2..n; cycle 1 (seating) and "
                             "the unloading branches reported beside it"),
             ("discrepancy band", f"{100 * low:g} to {100 * high:g} % for "
@@ -547,12 +563,15 @@ def _provenance(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
             ("theoretical E0", "Paper 001 eq. (20) with the printed coefficients (exact "
                                "Maxwell-Mohr coefficients beside)"),
         ]
-    settings.append(("confidence level", f"{100 * confidence.default:g} % (Student's t)"))
+        levels.append(f"{level(summary['E0_exp_ci_low'].attrs)} for E0 (Student's t)")
     if _has(summary, "operating_point"):
-        settings.append(("impact model fit", "k of Paper 000 eq. (16) by weighted least "
-                         "squares (lmfit) over every operating point, each weighted by the "
-                         "standard error of its run median; the error scaled by the Birge "
-                         "ratio when the points scatter more than their errors"))
+        extraction = {run.run_id: _extraction(run.attrs) for run in runs
+                      if run.kind == "engagement"}
+        settings += [("impact model fit", str(recorded(summary.attrs, "k_fit_method"))),
+                     ("impact extraction", _grouped(extraction))]
+        levels.append(f"{level(summary['k_fit_ci_low'].attrs)} for k")
+    settings += [("confidence level", "; ".join(levels) or MISSING),
+                 ("plausibility bands", _plausibility(summary))]
     return {
         "processed_with": str(summary.attrs.get("chainbench_version", "")),
         "run_sheet_sha256": str(summary.attrs.get("run_sheet_sha256", "")),

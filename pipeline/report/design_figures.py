@@ -33,7 +33,6 @@ import numpy as np
 import xarray as xr
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
-from scipy.optimize import brentq
 
 from pipeline.catalog import chain as catalog_chain
 from pipeline.theory import link_stiffness as ls
@@ -54,12 +53,10 @@ EPS_N_DEG = (0.0, 2.0, 4.0, 6.0)
 BETA_DEG = (50.0, 60.0, 70.0, 80.0)
 #: Range of the flank inclination beta [degree] of the curves over beta.
 BETA_RANGE_DEG = (40.0, 90.0)
-#: Largest contact distance s of Paper 003's analysis [mm] (section 4: "from
-#: s = 45 mm to s = 70 mm").
-S_MAX_MM = 70.0
-#: Paper 003, section 4 (Figs. 8-9): the side force F_P exceeds 50 % of F "in the
-#: analysed range", and the friction increase exceeds 50 % at s = 70 mm, beta = 50 deg.
-CLAIMS = {"side_force_ratio": 0.5, "friction_increase": 0.5, "s_mm": 70.0, "beta_deg": 50.0}
+#: The claims of Paper 003 the model is set against (section 4, Figs. 8-9); the curves
+#: over s run up to the largest contact distance of its analysis, ``s_max`` [m]
+#: ("from s = 45 mm to s = 70 mm").
+CLAIMS = ts.CLAIMS
 #: Points of every curve.
 GRID_POINTS = 200
 #: The theory module of each paper, for its published numbers.
@@ -207,8 +204,8 @@ def _edge_contact_figure() -> Figure:
 
 
 def _s_grid() -> np.ndarray:
-    """Contact distances s from the groove width c to :data:`S_MAX_MM` [m]."""
-    return np.linspace(_reference()["c"], S_MAX_MM * 1e-3, GRID_POINTS)
+    """Contact distances s from the groove width c to the claims' ``s_max`` [m]."""
+    return np.linspace(_reference()["c"], CLAIMS["s_max"], GRID_POINTS)
 
 
 def _contact_distance_figure() -> Figure:
@@ -218,7 +215,7 @@ def _contact_distance_figure() -> Figure:
     -------
     matplotlib.figure.Figure
         Segment opening angle psi [°] and force ratio F_K/F [-] of chain
-        :data:`REFERENCE_CHAIN` for s from c to :data:`S_MAX_MM`, for each beta
+        :data:`REFERENCE_CHAIN` for s from c to 70 mm, for each beta
         of :data:`BETA_DEG`, with the published values for eps_n = 0.
     """
     s = _s_grid()
@@ -238,24 +235,6 @@ def _contact_distance_figure() -> Figure:
     return figure
 
 
-def _side_force_threshold(beta_deg: float) -> float:
-    """s [m] where F_P/F reaches the paper's claimed level at eps_n = 0; NaN if not within range."""
-    def excess(s: float) -> float:
-        return float(ts.side_force_ratio(_opening_angle(s, beta_deg, 0.0))) - CLAIMS[
-            "side_force_ratio"]
-
-    s = _s_grid()
-    if excess(s[0]) * excess(s[-1]) > 0:
-        return math.nan
-    return brentq(excess, s[0], s[-1])
-
-
-def _friction_at_claim(eps_n_deg: float) -> float:
-    """Friction increase [-] at the s and beta of the paper's claim (:data:`CLAIMS`)."""
-    psi = _opening_angle(CLAIMS["s_mm"] * 1e-3, CLAIMS["beta_deg"], eps_n_deg)
-    return float(ts.friction_increase(psi))
-
-
 def _side_force_friction_figure() -> tuple[Figure, str]:
     """Paper 003, Figs. 8-9: F_P/F and the friction increase over s, per beta.
 
@@ -263,11 +242,12 @@ def _side_force_friction_figure() -> tuple[Figure, str]:
     -------
     figure : matplotlib.figure.Figure
         F_P/F [-] and the friction increase 2 F_K/F - 1 [%] of chain
-        :data:`REFERENCE_CHAIN` for s from c to :data:`S_MAX_MM`, for each beta
+        :data:`REFERENCE_CHAIN` for s from c to 70 mm, for each beta
         of :data:`BETA_DEG` with eps_n = 0, the friction also for beta = 50 deg,
         eps_n = 6 deg; the paper's claimed 50 % level as a line.
     text : str
-        What the model gives against the paper's claims (:data:`CLAIMS`).
+        What the model gives against the paper's claims
+        (:func:`pipeline.theory.tooth_segments.claims_note`).
     """
     s = _s_grid()
     figure, axes = _figure(2, f"side force and friction on the segments,\nchain {REFERENCE_CHAIN} "
@@ -277,10 +257,10 @@ def _side_force_friction_figure() -> tuple[Figure, str]:
         axes[0].plot(s * 1e3, ts.side_force_ratio(psi), label=f"model, β = {beta:g}°")
         axes[1].plot(s * 1e3, 100 * np.asarray(ts.friction_increase(psi)),
                      label=f"model, β = {beta:g}°")
-    inclined = max(EPS_N_DEG)
+    inclined, claimed_beta = max(EPS_N_DEG), math.degrees(CLAIMS["beta"])
     axes[1].plot(s * 1e3, 100 * np.asarray(ts.friction_increase(
-        _opening_angle(s, CLAIMS["beta_deg"], inclined))), color="C0", linestyle="--",
-        label=f"model, β = {CLAIMS['beta_deg']:g}°, ε_n = {inclined:g}°")
+        _opening_angle(s, claimed_beta, inclined))), color="C0", linestyle="--",
+        label=f"model, β = {claimed_beta:g}°, ε_n = {inclined:g}°")
     axes[0].axhline(CLAIMS["side_force_ratio"], color="0.3", linestyle=":",
                     label="level the paper claims exceeded (50 %)")
     axes[1].axhline(100 * CLAIMS["friction_increase"], color="0.3", linestyle=":",
@@ -291,16 +271,9 @@ def _side_force_friction_figure() -> tuple[Figure, str]:
         ax.set_xlabel("distance of the contact points s [mm]")
     _legend(figure, axes)
 
-    thresholds = [f"{_side_force_threshold(beta) * 1e3:.1f} mm at β = {beta:g}°"
-                  for beta in BETA_DEG if np.isfinite(_side_force_threshold(beta))]
-    increases = [
-        f"{100 * float(_friction_at_claim(eps)):.1f} % with ε_n = {eps:g}°"
-        for eps in (0.0, inclined)]
-    text = (f"The paper says F_P exceeds 50 % of F over its whole range of s; with ε_n = 0 "
-            f"the model's F_P/F passes 0.5 only above s = {', '.join(thresholds) or 'none'} "
-            f"(never below {S_MAX_MM:g} mm for the other β). The paper says the friction "
-            f"increase exceeds 50 % at s = {CLAIMS['s_mm']:g} mm, β = {CLAIMS['beta_deg']:g}°; "
-            f"the model gives {' and '.join(increases)}.")
+    reference = _reference()
+    chain = {"r_outer": reference["r"], "d": reference["d"], "groove_width": reference["c"]}
+    text = ts.claims_note(chain, np.radians(BETA_DEG), np.radians([0.0, inclined]))
     return figure, text
 
 

@@ -1,15 +1,17 @@
 """Figures of the report's impact section: engagement logs against Paper 000's model.
 
 Each function takes processed data (a run dataset of
-:mod:`pipeline.store.engagement` or the campaign summary of
+:mod:`pipeline.results.engagement` or the campaign summary of
 :func:`pipeline.compare.impact_summary`) and returns a
 :class:`matplotlib.figure.Figure`; the caller builds them inside
 :func:`pipeline.report.render.report_style` and renders them with
 :func:`pipeline.report.render.svg`.
 
 The model lines are computed by :func:`pipeline.fit.impact_model.model_tensions`
-(Paper 000, eq. (16) with (1)-(2)) over fine grids of omega or psi; they need the
-model's inputs per operating point, which the summary carries: ``teeth``,
+(Paper 000, eq. (16) with (1)-(2)) over fine grids of omega or psi, with the k
+the summary's theory used (its attribute ``k_theory``, Ryabov's 2) and the
+fitted ``k_fit``; they need the model's inputs per operating point, which the
+summary carries: ``teeth``,
 ``apex_angle`` [degree], ``omega`` [1/s], the chain's pitch ``t`` [m], bar
 diameter ``d`` [m] and ``mass_per_length`` [kg/m], ``E0`` [N] and
 ``branch_length`` [m].
@@ -30,8 +32,9 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from pipeline.fit.impact_model import POINT_COLUMNS, model_tensions
+from pipeline.report.recorded import recorded
 from pipeline.theory._published import parse_inputs
-from pipeline.theory.wheel_impact import RYABOV_MASS_SHARE, compare_published
+from pipeline.theory.wheel_impact import compare_published
 from pipeline.units import from_si
 
 #: Most points drawn per line; longer signals are reduced to a min/max envelope.
@@ -93,7 +96,7 @@ def impact_zoom(run: xr.Dataset) -> Figure:
     Parameters
     ----------
     run : xarray.Dataset
-        One engagement run (:func:`pipeline.store.engagement.engagement_dataset`):
+        One engagement run file (:meth:`pipeline.results.EngagementResult.to_dataset`):
         ``time``, ``force`` on ``sample``; ``event_time``, ``impact2_time``,
         ``baseline``, ``N_u1``, ``N_u2``, ``status`` on ``event``; the scalars
         ``seating_period``, ``omega_n``, ``zeta``, ``omega_measured``.
@@ -234,8 +237,8 @@ def impact_vs_omega(summary: xr.Dataset) -> Figure:
     ----------
     summary : xarray.Dataset
         Campaign summary (:func:`pipeline.compare.impact_summary`) with the
-        model inputs of every operating point (see :func:`_operating_points`)
-        and the scalar ``k_fit``.
+        model inputs of every operating point (see :func:`_operating_points`),
+        the scalar ``k_fit`` and the attribute ``k_theory``.
 
     Returns
     -------
@@ -243,16 +246,18 @@ def impact_vs_omega(summary: xr.Dataset) -> Figure:
         One panel per wheel (z, psi; and chain and branch where they vary):
         the measured medians of N_u1 and N_u2 with their standard errors
         against the run sheet's omega, and Paper 000's eq. (16) over omega with
-        the fitted k (solid) and Ryabov's k = 2 (dashed).
+        the fitted k (solid) and the theory's k, Ryabov's 2 (dashed).
     """
     points = _operating_points(summary)
     wheels = [group for _, group in points.groupby(list(_WHEEL), sort=True)]
     k_fit, k_stderr = float(summary["k_fit"]), float(summary["k_fit_stderr"])
+    k_theory = float(recorded(summary.attrs, "k_theory"))
+    theory = f"k = {k_theory:g} (Ryabov)"
     grid = np.linspace(0.0, 1.1 * points["omega"].max(), GRID_POINTS)
     figure, axes = _panels(len(wheels), (3.0, 2.6))
     several = points[list(_WHEEL[2:])].drop_duplicates().shape[0] > 1
     for ax, wheel in zip(axes, wheels, strict=True):
-        lines = {"k = 2 (Ryabov)": _model_over(wheel, "omega", grid, RYABOV_MASS_SHARE)}
+        lines = {theory: _model_over(wheel, "omega", grid, k_theory)}
         if np.isfinite(k_fit):
             lines[f"fitted k = {k_fit:.3f} ± {k_stderr:.3f}"] = _model_over(
                 wheel, "omega", grid, k_fit)
@@ -260,7 +265,7 @@ def impact_vs_omega(summary: xr.Dataset) -> Figure:
             color = _IMPACT_COLORS[impact]
             for name, model in lines.items():
                 ax.plot(grid, model[number], color=color,
-                        linestyle="--" if name.startswith("k = 2") else "-", linewidth=1.0,
+                        linestyle="--" if name == theory else "-", linewidth=1.0,
                         label=f"{impact} model, {name}")
             _errorbar(ax, wheel["omega"].to_numpy(), wheel, impact, "os"[number], color,
                       f"{impact} measured: median ± standard error")
@@ -293,13 +298,13 @@ def impact_vs_apex(summary: xr.Dataset) -> Figure:
     ----------
     summary : xarray.Dataset
         Campaign summary with the model inputs of every operating point (see
-        :func:`_operating_points`).
+        :func:`_operating_points`) and the attribute ``k_theory``.
 
     Returns
     -------
     matplotlib.figure.Figure
         One panel per measured omega (and chain and branch where they vary):
-        Paper 000's eq. (16) with k = 2 over psi in 20..60 deg (widened to the
+        Paper 000's eq. (16) with the theory's k (Ryabov's 2) over psi in 20..60 deg (widened to the
         campaign's wheels), N_u1 (the same for every z) and N_u2 for each z of
         the campaign, with the measured medians at that omega (standard errors
         as error bars). Where the panel's conditions are those of Paper 000's
@@ -317,17 +322,18 @@ def impact_vs_apex(summary: xr.Dataset) -> Figure:
     colors = {z: f"C{number}" for number, z in enumerate(teeth)}
     published, smallest = _published_smallest()
     case = {name: published[name] for name in _CONDITIONS}
+    k = float(recorded(summary.attrs, "k_theory"))
     figure, axes = _panels(len(panels), (3.4, 3.2))
     for ax, panel in zip(axes, panels, strict=True):
         first = panel.iloc[0]
-        n_u1, _ = _model_over(panel, "apex_angle", grid, RYABOV_MASS_SHARE)
+        n_u1, _ = _model_over(panel, "apex_angle", grid, k)
         ax.plot(grid_deg, n_u1, color="black", linewidth=1.2,
-                label="N_u1 model, any z (k = 2)")
+                label=f"N_u1 model, any z (k = {k:g})")
         for z in teeth:
             at_z = panel.assign(teeth=z)
-            _, n_u2 = _model_over(at_z, "apex_angle", grid, RYABOV_MASS_SHARE)
+            _, n_u2 = _model_over(at_z, "apex_angle", grid, k)
             ax.plot(grid_deg, n_u2, color=colors[z], linewidth=1.2,
-                    label=f"N_u2 model, z = {z:g} (k = 2)")
+                    label=f"N_u2 model, z = {z:g} (k = {k:g})")
             measured = panel[panel["teeth"] == z]
             x = np.degrees(measured["apex_angle"].to_numpy())
             _errorbar(ax, x, measured, "N_u1", "o", colors[z], f"N_u1 measured, z = {z:g}")

@@ -1,7 +1,7 @@
 """Figures of the report's stiffness section: tensile runs, their fits and the chain E0.
 
 Each function takes the processed datasets (a tensile run file of
-:mod:`pipeline.store.tensile`, the campaign ``summary.nc`` of
+:mod:`pipeline.results.tensile`, the campaign ``summary.nc`` of
 :func:`pipeline.compare.stiffness_summary`) and returns a matplotlib
 :class:`~matplotlib.figure.Figure`; :func:`pipeline.report.render.svg` renders
 it. Forces are drawn in kN, strain in per mille; long signals are decimated to
@@ -22,6 +22,7 @@ import xarray as xr
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
+from pipeline.report.recorded import level
 from pipeline.report.render import report_style
 
 #: Most points drawn per line; longer signals are decimated by an integer stride.
@@ -93,7 +94,7 @@ def force_strain(run: xr.Dataset) -> Figure:
     Parameters
     ----------
     run : xarray.Dataset
-        A processed tensile run (:func:`pipeline.store.tensile.tensile_dataset`).
+        A processed tensile run file (:meth:`pipeline.results.TensileResult.to_dataset`).
 
     Returns
     -------
@@ -195,7 +196,8 @@ def _chain_panel(ax, summary: xr.Dataset, chain: str, runs: Sequence[xr.Dataset]
     mean = float(row["E0_exp"])
     if np.isfinite(mean):
         ax.axhspan(float(row["E0_exp_ci_low"]) / KN, float(row["E0_exp_ci_high"]) / KN,
-                   color="C0", alpha=0.25, lw=0, label="95 % interval of the chain mean")
+                   color="C0", alpha=0.25, lw=0,
+                   label=f"{level(summary['E0_exp_ci_low'].attrs)} interval of the chain mean")
         ax.axhline(mean / KN, color="C0", lw=1.4, label="chain mean of the specimens")
     for position, run in enumerate(runs):
         pull = "single_pull" in run and bool(int(run["single_pull"]))
@@ -233,7 +235,8 @@ def stiffness_by_specimen(summary: xr.Dataset, runs: Sequence[xr.Dataset]) -> Fi
     Parameters
     ----------
     summary : xarray.Dataset
-        The campaign summary with the ``chain`` table and attribute ``band``
+        The campaign summary with the ``chain`` table (the level of its
+        intervals in their ``confidence_level``) and attribute ``band``
         (``"0.03 0.06"``).
     runs : sequence of xarray.Dataset
         The processed tensile runs (attribute ``chain`` names their chain).
@@ -242,8 +245,8 @@ def stiffness_by_specimen(summary: xr.Dataset, runs: Sequence[xr.Dataset]) -> Fi
     -------
     matplotlib.figure.Figure
         One panel per chain: the loading stiffness of every cycle of every
-        specimen with its 95 % interval (cycle 1, the seating cycle, hollow:
-        not counted), the chain mean with its 95 % interval, the theoretical
+        specimen with its interval (cycle 1, the seating cycle, hollow:
+        not counted), the chain mean with its interval, the theoretical
         E0 and the lab's band shaded; right axis: deviation from theory [%].
     """
     band = tuple(float(value) for value in summary.attrs["band"].split())

@@ -146,21 +146,11 @@ def read_dataset(path: str | Path) -> xr.Dataset:
         return dataset.load()
 
 
-def read_scalars(path: str | Path) -> tuple[dict[str, float], dict[str, str]]:
-    """The scalar variables and the global attributes of a netCDF file, read cheaply.
+def read_attrs(path: str | Path) -> dict[str, Any]:
+    """The global attributes of a netCDF file, read cheaply (no variable is read).
 
-    Opens the file with netCDF4 directly (no xarray decoding, no arrays read):
-    what a re-run needs to decide whether a stored result is current and to
-    build the campaign summary from it.
-
-    Returns
-    -------
-    (dict, dict)
-        Scalar variable name -> value (fill values as NaN), attribute -> value.
+    Opens the file with netCDF4 directly (no xarray decoding): what a re-run
+    needs to decide whether a stored result is current, and its warnings.
     """
     with netCDF4.Dataset(path) as stored:
-        stored.set_auto_mask(False)
-        attrs = {name: stored.getncattr(name) for name in stored.ncattrs()}
-        scalars = {name: variable[...].item() for name, variable in stored.variables.items()
-                   if variable.ndim == 0 and variable.dtype.kind in "fiu"}
-    return scalars, attrs
+        return {name: stored.getncattr(name) for name in stored.ncattrs()}

@@ -13,5 +13,7 @@ module                 paper   what it computes
 The models read no files; inputs are SI unless a name carries its unit. Each
 module's ``compare_published()`` reads its paper's published numbers from
 ``pipeline/data/published/paper_<paper>.csv`` and sets the model's value
-beside each, by the one tolerance rule of ``_published``.
+beside each, by the one tolerance rule of ``_published``. Each module's
+``table()`` gives the rows its ``chainbench theory`` command prints, in the
+units their keys name (the command only parses its options and prints).
 """

@@ -25,6 +25,7 @@ in ``docs/models/paper-001-link-stiffness.md``.
 from __future__ import annotations
 
 import warnings
+from collections.abc import Sequence
 from typing import NamedTuple
 
 import numpy as np
@@ -32,7 +33,7 @@ import pandas as pd
 from scipy.integrate import quad
 
 from pipeline.theory._checks import non_negative, positive, scalar_or_array
-from pipeline.theory._published import compare, read_published
+from pipeline.theory._published import compare, read_published, within_tolerance
 from pipeline.units import from_si, to_si
 
 #: Young's modulus of the chain steel used for Table 1 [kgf/cm^2]
@@ -436,6 +437,118 @@ def table_1() -> dict[str, PublishedStiffness]:
     }
 
 
+#: The dimensions of a link in a :func:`table` row, in their order.
+TABLE_DIMENSIONS = ("d", "t", "R0", "a")
+
+#: What the discrepancy columns of :func:`table` mean (a note under a table with Table 1's
+#: chains).
+TABLE_LEGEND = (
+    "discrepancy = (E0_exp - E0_theory) / E0_theory with Table 1's E0_exp; "
+    "discrepancy_pct refers it to this model's E0, discrepancy_paper_pct to the "
+    "paper's E0_theor; in_band: inside the band, signed"
+)
+
+
+def table(
+    links: Sequence[tuple[str, Sequence[float]]],
+    *,
+    E: float = E_STEEL,
+    coefficients: StiffnessCoefficients = PRINTED,
+    band: tuple[float, float] = LAB_BAND,
+) -> tuple[list[dict], list[str]]:
+    """Eq. (20) per chain, beside Table 1's published values where it is one of its chains.
+
+    Parameters
+    ----------
+    links : sequence of (str, (d, t, R0, a))
+        The chains: a name (a Table 1 chain by its catalogue name, ``13x50``)
+        and the link's dimensions [m].
+    E : float
+        Young's modulus of the steel [Pa].
+    coefficients : StiffnessCoefficients
+        Those of eq. (20): :data:`PRINTED` or :func:`exact_coefficients`.
+    band : (float, float)
+        The lab's band of the discrepancy [1].
+
+    Returns
+    -------
+    rows : list of dict
+        One per chain, in the units its keys name: ``chain``, ``d_mm``,
+        ``t_mm``, ``R0_mm``, ``a_mm``, ``E0_kgf``, ``E0_kN``, and for a Table 1
+        chain (None otherwise) ``E0_theor_paper_kgf``, ``E0_exp_paper_kgf``,
+        ``discrepancy_pct`` and ``in_band`` (Table 1's E0_exp against this
+        E0), ``discrepancy_paper_pct`` and ``in_band_paper`` (against Table
+        1's E0_theor).
+    notes : list of str
+        Geometry warnings, Table 1 values eq. (20) does not reproduce beyond
+        their rounding, and :data:`TABLE_LEGEND` when a Table 1 chain is shown.
+
+    Raises
+    ------
+    ValueError
+        Naming the chain whose dimensions are outside the model's domain.
+
+    References
+    ----------
+    Paper 001, eq. (20) and Table 1; ``docs/models/paper-001-link-stiffness.md``.
+    """
+    published = table_1()
+    rows, notes = [], []
+    for name, lengths in links:
+        row, row_notes = _table_row(name, lengths, published.get(name), E, coefficients, band)
+        rows.append(row)
+        notes += row_notes
+    if any(name in published for name, _ in links):
+        notes.append(TABLE_LEGEND)
+    return rows, notes
+
+
+def _table_row(name: str, lengths: Sequence[float], published: PublishedStiffness | None,
+               E: float, coefficients: StiffnessCoefficients, band: tuple[float, float]
+               ) -> tuple[dict, list[str]]:
+    """One row of :func:`table` and its notes (`published`: the chain's Table 1 row)."""
+    try:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            E0 = chain_stiffness(*lengths, E=E, coefficients=coefficients)
+    except ValueError as error:
+        raise ValueError(f"{name}: {error}") from None
+    notes = [f"{name}: {warning.message}" for warning in caught]
+    row = {"chain": name}
+    dimensions = zip(TABLE_DIMENSIONS, lengths, strict=True)
+    row |= {f"{key}_mm": from_si(value, "mm") for key, value in dimensions}
+    row |= {"E0_kgf": from_si(E0, "kgf"), "E0_kN": from_si(E0, "kN")}
+    row |= _published_comparison(row["E0_kgf"], published, band)
+    if published is not None:
+        notes += _reproduction_notes(name, row["E0_kgf"], published)
+    return row, notes
+
+
+def _published_comparison(E0_kgf: float, published: PublishedStiffness | None,
+                          band: tuple[float, float]) -> dict:
+    """Table 1's values and the discrepancies of its E0_exp (None for other chains)."""
+    keys = ("E0_theor_paper_kgf", "E0_exp_paper_kgf", "discrepancy_pct", "in_band")
+    keys += ("discrepancy_paper_pct", "in_band_paper")
+    if published is None:
+        return dict.fromkeys(keys)
+    to_model = discrepancy(published.E0_exp_kgf, E0_kgf)
+    to_paper = discrepancy(published.E0_exp_kgf, published.E0_theor_kgf)
+    values = (published.E0_theor_kgf, published.E0_exp_kgf, 100 * to_model)
+    values += (bool(in_band(to_model, band)), 100 * to_paper, bool(in_band(to_paper, band)))
+    return dict(zip(keys, values, strict=True))
+
+
+def _reproduction_notes(name: str, E0_kgf: float, published: PublishedStiffness) -> list[str]:
+    """A note when eq. (20) misses Table 1's E0_theor by more than its rounding."""
+    if within_tolerance(E0_kgf, published.E0_theor_kgf, published.E0_theor_tolerance):
+        return []
+    gap = E0_kgf / published.E0_theor_kgf - 1
+    return [
+        f"{name}: eq. (20) gives {E0_kgf:.5g} kgf, {100 * gap:+.1f} % from Table 1's "
+        f"E0_theor = {published.E0_theor_kgf:.3g} kgf (not reproduced beyond its rounding)"
+    ]
+
+
 def compare_published() -> pd.DataFrame:
     """Paper 001's published numbers (Table 1) beside eq. (20).
 
@@ -445,8 +558,9 @@ def compare_published() -> pd.DataFrame:
         One row per number of ``pipeline/data/published/paper_001.csv``: the
         theoretical and the experimental E0 of each chain [kgf], each beside
         :func:`chain_stiffness` with the printed coefficients and the row's
-        d, t, R0, a and E; columns as
-        :func:`pipeline.theory._published.compare`.
+        d, t, R0, a and E; and the elongation per kgf eps of each [1/kgf],
+        beside 1 / E0 of the row's E0 (E0 = P / eps, eqs. (2), (5): Table 1's
+        own consistency); columns as :func:`pipeline.theory._published.compare`.
 
     Notes
     -----
@@ -459,7 +573,8 @@ def compare_published() -> pd.DataFrame:
     >>> round(float(table.at["E0_theory_18x64", "model"]) / 1e6, 4)
     2.043
     """
-    return compare("001", {"E0_theory": _stiffness_kgf, "E0_exp": _stiffness_kgf})
+    return compare("001", {"E0_theory": _stiffness_kgf, "E0_exp": _stiffness_kgf,
+                           "eps": lambda inputs: 1.0 / from_si(inputs["E0"], "kgf")})
 
 
 def _stiffness_kgf(inputs: dict) -> float:

@@ -24,6 +24,7 @@ copy; no DOI found.
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -33,6 +34,8 @@ from numpy.typing import ArrayLike
 from pipeline.theory._checks import positive, scalar_or_array
 from pipeline.theory._checks import teeth as whole_teeth
 from pipeline.theory._published import compare
+from pipeline.theory._tables import rows
+from pipeline.units import from_si
 
 #: Safety factor psi of the allowed pitch growth (Paper 004, eq. (3), after
 #: Vorobiev [1]).
@@ -48,6 +51,9 @@ K_PINNED = 1.0
 
 #: Support factor K of a pin clamped rigidly on both sides (Paper 004, eq. (4)).
 K_CLAMPED = 3.0
+
+#: Pin supports of eq. (4) a table is made for: name and K.
+SUPPORTS = {"pinned": K_PINNED, "clamped": K_CLAMPED}
 
 
 def allowed_pitch_growth(
@@ -263,6 +269,59 @@ def check_pin(
         pin_diameter=scalar_or_array(d),
         passes=bool(passes) if np.ndim(passes) == 0 else passes,
     )
+
+
+def table(
+    chain: Mapping[str, float],
+    teeth: Sequence[int],
+    force: float,
+    allowable_stress: float,
+    wear_coefficient: float,
+) -> list[dict]:
+    """The criterion per number of teeth and pin support (:data:`SUPPORTS`), teeth slowest.
+
+    Parameters
+    ----------
+    chain : mapping
+        The chain's pitch ``t``, ``pin_diameter``, ``bush_length`` and
+        ``plate_span`` [m].
+    teeth : sequence of int
+        Teeth z of the driven sprocket [-].
+    force : float
+        Largest force on a chain link F_max [N].
+    allowable_stress : float
+        Allowable bending stress of the pin [sigma_T] [Pa].
+    wear_coefficient : float
+        Pin wear coefficient K_e [-].
+
+    Returns
+    -------
+    list of dict
+        One row per (z, support) in the units its keys name: ``z``,
+        ``support``, ``K``, ``delta_t1_mm``, ``delta_d_mm``, ``d_k_mm``,
+        ``required_mm`` (d_k + delta_d), ``pin_mm`` and ``passes``.
+
+    References
+    ----------
+    Paper 004, eqs. (1)-(5).
+    """
+    z, support = (grid.ravel() for grid in np.meshgrid(teeth, list(SUPPORTS), indexing="ij"))
+    check = check_pin(
+        chain["pin_diameter"], chain["t"], z, force, chain["plate_span"], chain["bush_length"],
+        allowable_stress, wear_coefficient, [SUPPORTS[name] for name in support],
+    )  # fmt: skip
+    columns = {
+        "z": z.astype(int).tolist(),
+        "support": support.tolist(),
+        "K": [SUPPORTS[name] for name in support],
+        "delta_t1_mm": from_si(check.pitch_growth, "mm"),
+        "delta_d_mm": from_si(check.wear_allowance, "mm"),
+        "d_k_mm": from_si(check.critical_diameter, "mm"),
+        "required_mm": from_si(check.required_diameter, "mm"),
+        "pin_mm": np.broadcast_to(from_si(check.pin_diameter, "mm"), z.shape),
+        "passes": check.passes,
+    }
+    return rows(columns)
 
 
 def compare_published() -> pd.DataFrame:

@@ -42,6 +42,9 @@ zuba zvezdochki"); journal and year not printed in the OCR'd copy; no DOI found.
 
 from __future__ import annotations
 
+import math
+from collections.abc import Mapping, Sequence
+
 import numpy as np
 import pandas as pd
 from numpy.typing import ArrayLike
@@ -49,7 +52,8 @@ from numpy.typing import ArrayLike
 from pipeline.theory._checks import non_negative, positive, scalar_or_array
 from pipeline.theory._checks import teeth as whole_teeth
 from pipeline.theory._published import compare
-from pipeline.units import from_si
+from pipeline.theory._tables import rows
+from pipeline.units import from_si, to_si
 
 #: Constant of eq. (6) [J per (kg/m * rpm^2 * mm^3)]: (1/2) (2 pi / 60)^2 * 1e-9,
 #: i.e. E = (1/2) (q t) (omega t xi)^2 with omega = 2 pi n / 60 and t in mm.
@@ -364,6 +368,101 @@ def max_angular_velocity(
     area = positive("roller_diameter", roller_diameter) * positive("roller_length", roller_length)
     limit = positive("g_lim", g_lim)
     return scalar_or_array(np.sqrt(2.0 * limit * area / (q * t)) / (x * t))
+
+
+def table(
+    chain: Mapping[str, float],
+    teeth: Sequence[int],
+    rpm: Sequence[float],
+    xi: float | None,
+    module: float,
+    profile_angle: float,
+    g_lim: float,
+) -> list[dict]:
+    """Impact velocity, impact energy and speed limit per number of teeth and speed.
+
+    Parameters
+    ----------
+    chain : mapping
+        The chain's pitch ``t`` [m], ``mass_per_length`` [kg/m],
+        ``roller_diameter`` and ``inner_width`` [m].
+    teeth : sequence of int
+        Numbers of sprocket teeth z [-] (varying slowest).
+    rpm : sequence of float
+        Sprocket speeds n [rpm].
+    xi : float or None
+        Impact-velocity coefficient [-]; None: xi of the involute sprocket
+        (eqs. (3)-(5)).
+    module : float
+        Module m of the involute sprocket [m].
+    profile_angle : float
+        Tool profile angle alpha [rad].
+    g_lim : float
+        Limit of the specific impact energy [J/m^2].
+
+    Returns
+    -------
+    list of dict
+        One row per (z, n) in the units its keys name: ``z``, ``n_rpm``,
+        ``xi_min``, ``xi_max`` (eq. (5)), ``xi``, ``v_y_m_per_s``, ``energy_J``
+        (eq. (6)), ``G_J_per_mm2`` (eq. (7)), ``n_max_rpm`` (eq. (8)) and
+        ``below_n_max``.
+
+    References
+    ----------
+    Paper 002, eqs. (3)-(8).
+    """
+    z, n_rpm = (grid.ravel() for grid in np.meshgrid(teeth, rpm, indexing="ij"))
+    t, q = chain["t"], chain["mass_per_length"]
+    diameter, width = chain["roller_diameter"], chain["inner_width"]
+    if xi is None:
+        xi_z = impact_velocity_coefficient(z, base_radius(module, z, profile_angle), t)
+    else:
+        xi_z = np.full(z.shape, xi)
+    low, high = impact_velocity_coefficient_bounds(z)
+    omega = to_si(n_rpm, "rpm")
+    energy = impact_energy(q, omega, t, xi_z)
+    n_max = from_si(max_angular_velocity(q, t, xi_z, diameter, width, g_lim), "rpm")
+    columns = {
+        "z": z.astype(int).tolist(),
+        "n_rpm": n_rpm,
+        "xi_min": low,
+        "xi_max": high,
+        "xi": xi_z,
+        "v_y_m_per_s": impact_velocity(omega, t, xi_z),
+        "energy_J": energy,
+        "G_J_per_mm2": from_si(specific_impact_energy(energy, diameter, width), "J/mm^2"),
+        "n_max_rpm": n_max,
+        "below_n_max": n_rpm <= n_max,
+    }
+    return rows(columns)
+
+
+def table_notes(xi: float | None, module: float, profile_angle: float) -> list[str]:
+    """How :func:`table` got xi, and Paper 002's printed constants beside the derived ones.
+
+    Parameters
+    ----------
+    xi : float or None
+        As given to :func:`table`.
+    module : float
+        Module of the involute sprocket [m].
+    profile_angle : float
+        Tool profile angle [rad].
+    """
+    how = (
+        f"xi given ({xi:g}), not computed"
+        if xi is not None
+        else f"xi of an involute sprocket, m = {from_si(module, 'mm'):.4g} mm, alpha = "
+        f"{math.degrees(profile_angle):g} deg (eqs. (3)-(5)); xi for the GOST 591/592 profiles "
+        "cannot be derived from Paper 002: read it off its Fig. 2 and give --xi"
+    )
+    constants = [
+        f"{row.source}: {row.quantity} published {row.published:.4g}, "
+        f"derived {row.model:.5g} {row.unit}" + ("" if row.reproduced else f"; {row.note}")
+        for row in compare_published().itertuples()
+    ]
+    return [how, *constants]
 
 
 def compare_published() -> pd.DataFrame:

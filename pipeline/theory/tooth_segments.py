@@ -34,13 +34,24 @@ copy (its references run to 2011); no DOI found.
 
 from __future__ import annotations
 
+import math
+from collections.abc import Mapping, Sequence
+
 import numpy as np
 import pandas as pd
 from numpy.typing import ArrayLike
+from scipy.optimize import brentq
 
 from pipeline.theory._checks import arccos, non_negative, positive, scalar_or_array
-from pipeline.theory._published import compare
-from pipeline.units import from_si
+from pipeline.theory._published import compare, parse_inputs
+from pipeline.theory._tables import rows
+from pipeline.units import from_si, to_si
+
+#: Paper 003, section 4 (Figs. 8-9): the side force F_P exceeds ``side_force_ratio`` of F
+#: "in the analysed range" of s (from the groove width to ``s_max`` [m]), and the
+#: friction increase exceeds ``friction_increase`` [-] at ``s`` [m], ``beta`` [rad].
+CLAIMS = {"side_force_ratio": 0.5, "friction_increase": 0.5, "s_max": 70e-3, "s": 70e-3,
+          "beta": math.radians(50.0)}
 
 
 def contact_radius(
@@ -187,6 +198,163 @@ def _half_angle(psi: ArrayLike) -> np.ndarray:
     if np.any(angle >= np.pi):
         raise ValueError(f"psi must be below pi rad (Paper 003, eq. (2)); got psi={psi!r}")
     return angle / 2.0
+
+
+def table(
+    chain: Mapping[str, float],
+    beta_deg: Sequence[float],
+    eps_n_deg: Sequence[float],
+    s_mm: Sequence[float],
+) -> list[dict]:
+    """The segment loads per flank inclination, link inclination and contact distance.
+
+    Parameters
+    ----------
+    chain : mapping
+        The chain's outer torus radius ``r_outer``, link thickness ``d`` and
+        the drum's ``groove_width`` c [m].
+    beta_deg : sequence of float
+        Flank inclinations beta [deg] (varying slowest).
+    eps_n_deg : sequence of float
+        Link inclinations to the pocket floor eps_n [deg].
+    s_mm : sequence of float
+        Distances s between the contact points [mm].
+
+    Returns
+    -------
+    list of dict
+        One row per (beta, eps_n, s) in the units its keys name: ``beta_deg``,
+        ``eps_n_deg``, ``s_mm``, ``k_mm`` (eq. (1)), ``psi_deg`` (eq. (2)),
+        ``F_K/F`` (eq. (3)), ``F_P/F`` and ``friction_increase_pct``.
+
+    Raises
+    ------
+    ValueError
+        When an s is below the groove width or at least 2 k.
+
+    References
+    ----------
+    Paper 003, eqs. (1)-(4).
+    """
+    grids = np.meshgrid(beta_deg, eps_n_deg, s_mm, indexing="ij")
+    beta, eps_n, s = (grid.ravel() for grid in grids)
+    k = contact_radius(chain["r_outer"], chain["d"], np.radians(beta), np.radians(eps_n))
+    psi = opening_angle(to_si(s, "mm"), k, chain["groove_width"])
+    columns = {
+        "beta_deg": beta,
+        "eps_n_deg": eps_n,
+        "s_mm": s,
+        "k_mm": from_si(k, "mm"),
+        "psi_deg": np.degrees(psi),
+        "F_K/F": contact_force_ratio(psi),
+        "F_P/F": side_force_ratio(psi),
+        "friction_increase_pct": 100.0 * friction_increase(psi),
+    }
+    return rows(columns)
+
+
+def published_notes(chain: Mapping[str, float], published: pd.DataFrame) -> list[str]:
+    """How many of Paper 003's values the model reproduces, and each it does not.
+
+    Parameters
+    ----------
+    chain : mapping
+        The chain's ``r_outer`` and ``d`` [m]: notes only for the paper's chain.
+    published : pandas.DataFrame
+        :func:`compare_published`.
+
+    Returns
+    -------
+    list of str
+        None for another chain; else a count, then one line per value not
+        reproduced (published, model, difference and tolerance).
+    """
+    paper = [parse_inputs(inputs) for inputs in published["inputs"]]
+    if not all(
+        math.isclose(chain["r_outer"], inputs["r_outer"]) and math.isclose(chain["d"], inputs["d"])
+        for inputs in paper
+    ):
+        return []
+    flagged = published[~published["reproduced"]]
+    summary = (
+        f"Paper 003 (r = {from_si(paper[0]['r_outer'], 'mm'):g} mm, "
+        f"d = {from_si(paper[0]['d'], 'mm'):g} mm): {len(published) - len(flagged)} of "
+        f"{len(published)} published values reproduced"
+    )
+    return [summary, *(_not_reproduced(row) for row in flagged.itertuples())]
+
+
+def _not_reproduced(row) -> str:
+    """One line for a published value the model does not reproduce (a row of the comparison)."""
+    return (
+        f"{row.source}: {row.quantity} ({row.inputs}): published {row.published:g} {row.unit}, "
+        f"model {row.model:.5g} ({100 * row.rel_diff:+.2f} %): NOT reproduced "
+        f"within {100 * row.tolerance:g} %"
+    )
+
+
+def side_force_threshold(chain: Mapping[str, float], beta: float) -> float:
+    """Where F_P / F reaches the share Paper 003 claims exceeded (:data:`CLAIMS`), eps_n = 0.
+
+    Parameters
+    ----------
+    chain : mapping
+        The chain's ``r_outer``, ``d`` and the drum's ``groove_width`` [m].
+    beta : float
+        Flank inclination [rad].
+
+    Returns
+    -------
+    float
+        The contact distance s [m] between the groove width and the claims'
+        ``s_max``; NaN when F_P / F does not reach the share there.
+    """
+    radius = contact_radius(chain["r_outer"], chain["d"], beta, 0.0)
+
+    def excess(s: float) -> float:
+        psi = opening_angle(s, radius, chain["groove_width"])
+        return float(side_force_ratio(psi)) - CLAIMS["side_force_ratio"]
+
+    low, high = chain["groove_width"], CLAIMS["s_max"]
+    if excess(low) * excess(high) > 0:
+        return math.nan
+    return float(brentq(excess, low, high))
+
+
+def claims_note(chain: Mapping[str, float], beta: Sequence[float], eps_n: Sequence[float]
+                ) -> str:
+    """What the model gives against Paper 003's claims (:data:`CLAIMS`), in words.
+
+    Parameters
+    ----------
+    chain : mapping
+        The chain's ``r_outer``, ``d`` and the drum's ``groove_width`` [m].
+    beta : sequence of float
+        Flank inclinations [rad] to find where F_P / F reaches the claimed share
+        (:func:`side_force_threshold`).
+    eps_n : sequence of float
+        Link inclinations [rad] to give the friction increase for, at the
+        claims' s and beta.
+
+    Returns
+    -------
+    str
+        Two sentences: each claim, and the model's values against it.
+    """
+    found = {math.degrees(angle): side_force_threshold(chain, angle) for angle in beta}
+    thresholds = [f"{1e3 * s:.1f} mm at β = {angle:g}°" for angle, s in found.items()
+                  if math.isfinite(s)]
+    increases = []
+    for angle in eps_n:
+        radius = contact_radius(chain["r_outer"], chain["d"], CLAIMS["beta"], angle)
+        psi = opening_angle(CLAIMS["s"], radius, chain["groove_width"])
+        increases.append(f"{100 * float(friction_increase(psi)):.1f} % with "
+                         f"ε_n = {math.degrees(angle):g}°")
+    return (f"The paper says F_P exceeds 50 % of F over its whole range of s; with ε_n = 0 "
+            f"the model's F_P/F passes 0.5 only above s = {', '.join(thresholds) or 'none'} "
+            f"(never below {1e3 * CLAIMS['s_max']:g} mm for the other β). The paper says the "
+            f"friction increase exceeds 50 % at s = {1e3 * CLAIMS['s']:g} mm, "
+            f"β = {math.degrees(CLAIMS['beta']):g}°; the model gives {' and '.join(increases)}.")
 
 
 def compare_published() -> pd.DataFrame:

@@ -26,6 +26,8 @@ naming the parameter when an input is outside the model's domain.
 
 from __future__ import annotations
 
+import math
+from collections.abc import Sequence
 from typing import Final, NamedTuple, TypeAlias
 
 import numpy as np
@@ -42,6 +44,18 @@ RYABOV_MASS_SHARE: Final = 2.0
 
 #: A float or an array of floats (0-d results come back as float).
 ScalarOrArray: TypeAlias = float | np.ndarray
+
+#: The columns of :func:`table` and their units.
+TABLE_UNITS = {
+    "z": "1",
+    "psi_deg": "deg",
+    "v_u1": "m/s",
+    "v_u2": "m/s",
+    "N_u1": "N",
+    "N_u2": "N",
+    "N_u2/N_u1": "1",
+    "tau": "s",
+}
 
 
 class _Engagement(NamedTuple):
@@ -542,6 +556,99 @@ def paper_example() -> dict[str, float]:
     table = read_published("000").set_index("quantity")
     inputs = parse_inputs(table.at["N_u2_smallest", "inputs"])
     return {name: value for name, value in inputs.items() if name not in ("z", "psi")}
+
+
+def table(
+    t: float,
+    d: float,
+    teeth: Sequence[int],
+    apex_deg: Sequence[float],
+    omega: float,
+    mass_per_length: float,
+    E0: float,
+    branch_length: float,
+    k: float = RYABOV_MASS_SHARE,
+) -> list[dict]:
+    """Impact velocities and tensions per wheel (z) and apex angle (psi), z varying slowest.
+
+    Parameters
+    ----------
+    t, d : float
+        Chain pitch and bar diameter [m].
+    teeth : sequence of int
+        Numbers of teeth z [-].
+    apex_deg : sequence of float
+        Tooth apex angles psi [deg].
+    omega : float
+        Wheel angular velocity [1/s].
+    mass_per_length : float
+        Chain mass per metre q/g [kg/m].
+    E0 : float
+        Chain stiffness [N].
+    branch_length : float
+        Length L of the active branch [m].
+    k : float
+        Share of link masses in the impact [-] (Ryabov's 2).
+
+    Returns
+    -------
+    list of dict
+        One row per (z, psi): ``z``, ``psi_deg``, ``v_u1``, ``v_u2`` (eqs.
+        (1)-(2)), ``N_u1``, ``N_u2`` (eq. (16)), ``N_u2/N_u1`` and ``tau``
+        (eq. (9)), in the units of :data:`TABLE_UNITS`.
+
+    Raises
+    ------
+    ValueError
+        Naming the parameter outside the model's domain (``omega`` first).
+    """
+    z, psi_deg = (grid.ravel() for grid in np.meshgrid(teeth, apex_deg, indexing="ij"))
+    tau = time_between_impacts(z, omega)  # first: it also rejects omega = 0
+    v_u1, v_u2 = impact_velocities(t, d, z, np.radians(psi_deg), omega)
+    n_u1, n_u2 = (impact_tension(v, mass_per_length, t, E0, branch_length, k)
+                  for v in (v_u1, v_u2))
+    columns = zip(z, psi_deg, v_u1, v_u2, n_u1, n_u2, n_u2 / n_u1, tau, strict=True)
+    return [dict(zip(TABLE_UNITS, (int(row[0]), *map(float, row[1:])), strict=True))
+            for row in columns]
+
+
+def is_paper_chain(t: float, d: float) -> bool:
+    """Whether pitch `t` and bar diameter `d` [m] are those of Paper 000's example chain."""
+    example = paper_example()
+    return math.isclose(t, example["t"]) and math.isclose(d, example["d"])
+
+
+def published_notes(t: float, d: float) -> list[str]:
+    """Paper 000's published numbers and whether the model reproduces them, for its chain.
+
+    Parameters
+    ----------
+    t, d : float
+        The chain's pitch and bar diameter [m]: notes only for the paper's chain
+        (:func:`is_paper_chain`).
+
+    Returns
+    -------
+    list of str
+        The example's conditions, then one line per published number with the
+        model's value and the verdict (:func:`compare_published`).
+    """
+    if not is_paper_chain(t, d):
+        return []
+    case = paper_example()
+    notes = [
+        f"Paper 000 (section 3) publishes, for q = {case['mass_per_length']:g} kg/m * g, "
+        f"E0 = {case['E0']:g} N, L = {case['branch_length']:g} m, "
+        f"omega = {case['omega']:g} 1/s, k = {case['k']:g}:"
+    ]
+    for row in compare_published().itertuples():
+        unit = "" if row.unit == "-" else f" {row.unit}"
+        status = "reproduced" if row.reproduced else "NOT REPRODUCED by the model"
+        notes.append(
+            f"  {row.quantity} = {row.published:g}{unit}, model {row.model:.4g}{unit}: {status} "
+            f"(tolerance {100 * row.tolerance:g} %)"
+        )
+    return notes
 
 
 def compare_published() -> pd.DataFrame:

@@ -10,7 +10,12 @@ import pytest
 
 from pipeline.engagement_log import detect_events, extract_impacts
 from pipeline.errors import FitError
-from pipeline.fit.impact_model import fit_impact_model, linearity, model_tensions
+from pipeline.fit.impact_model import (
+    fit_impact_model,
+    linearity,
+    linearity_note,
+    model_tensions,
+)
 from pipeline.simulate.engagement import EngagementSettings, simulate_engagement
 
 #: Two wheels at three speeds each: six operating points per campaign.
@@ -160,3 +165,21 @@ def test_model_tensions_and_linearity_without_model():
     n_u1, n_u2 = model_tensions(points)
     assert np.allclose(n_u1, points["N_u1_meas"]) and np.allclose(n_u2, points["N_u2_meas"])
     assert linearity(points)["model_slope"].isna().all()
+
+
+def test_linearity_note_gives_the_worst_line_of_three_speeds_or_more():
+    # three lines: R^2 0.999 and 0.98 at 3 speeds, and one of 2 speeds that is not judged;
+    # intercepts 20 N of 1000 N (2 %) and -150 N of 3000 N (5 %)
+    lines = pd.DataFrame({"n_speeds": [3, 4, 2], "r2": [0.999, 0.98, math.nan],
+                          "intercept": [20.0, -150.0, 900.0],
+                          "largest": [1000.0, 3000.0, 1000.0]})
+    note = linearity_note(lines)
+    assert "(2 lines: wheels × impacts)" in note
+    assert "R² ≥ 0.9800" in note and "at most 5.0 % of N_u" in note
+
+
+def test_linearity_note_without_three_speeds():
+    note = linearity_note(pd.DataFrame({"n_speeds": [2, 1], "r2": [math.nan] * 2,
+                                        "intercept": [0.0] * 2, "largest": [1.0] * 2}))
+    assert note.startswith("Linearity in ω not checked")
+    assert linearity_note(linearity(exact_points(2.0))).startswith("Eq. (16) makes N_u")

@@ -13,6 +13,7 @@ from pipeline.fit.stiffness import (
     SpecimenStiffness,
     combine_specimens,
     fit_line,
+    fit_settings,
     fit_stiffness,
     integrated_autocorrelation,
     scan_windows,
@@ -207,3 +208,19 @@ def test_chain_interval_from_the_specimen_spread():
     assert single.E0_stderr == 0.5 and single.dof == 50.0
     with pytest.raises(FitError):
         combine_specimens([])
+
+
+def test_fit_settings_say_the_window_rule_and_level_applied():
+    # the module docstring's rule: a grid of 5 % of the range, windows of at least 40 %,
+    # a 2-sigma curvature guard, a loading below the onset of yield (5 % slope drop)
+    automatic = fit_settings()
+    assert automatic["confidence_level"] == 0.95
+    for part in ("grid of 5 %", "at least 40 %", "2 standard deviations", "5 % below"):
+        assert part in automatic["fit_window"]
+    assert "at least 60 %" in fit_settings(min_span=0.6)["fit_window"]
+    assert fit_settings(force_window=(12e3, 48.5e3)) == {
+        "confidence_level": 0.95,
+        "fit_window": "fixed force window 12 to 48.5 kN for every branch"}
+    assert fit_settings(fraction_window=(0.1, 0.9), confidence=0.9) == {
+        "confidence_level": 0.9,
+        "fit_window": "fixed window 10 to 90 % of each branch's force range"}

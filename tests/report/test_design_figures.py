@@ -1,11 +1,13 @@
 """The design-check figures and the table of published numbers not reproduced.
 
-Published and model values are typed here from docs/published-values.md, never
-read back from the code under test.
+Model values are typed here from docs/published-values.md, never read back from
+the code under test; the published values are read from their file
+(``pipeline/data/published/paper_003.csv``), where they are written once.
 """
 
 from __future__ import annotations
 
+import math
 import re
 
 import numpy as np
@@ -15,6 +17,7 @@ from matplotlib.figure import Figure
 
 from pipeline.report import design_figures as design
 from pipeline.report.render import report_style
+from pipeline.theory._published import parse_inputs, read_published
 
 UNIT = re.compile(r"\[[^\]]+\]$")
 
@@ -44,6 +47,21 @@ def points(ax, label: str) -> set[tuple[float, float]]:
     item = line(ax, label)
     return {(round(float(x), 6), round(float(y), 6))
             for x, y in zip(item.get_xdata(), item.get_ydata(), strict=True)}
+
+
+def published(quantity: str, x: str, reproduced: bool, **where: float
+              ) -> set[tuple[float, float]]:
+    """Paper 003's published values of `quantity` as (input `x`, value), beta and eps_n in
+    degrees and s in mm, those declared `reproduced` (or not) whose inputs are `where`."""
+    found = set()
+    for row in read_published("003").to_dict("records"):
+        inputs = parse_inputs(row["inputs"])
+        values = {"beta": math.degrees(inputs["beta"]), "eps_n": math.degrees(inputs["eps_n"]),
+                  "s": 1e3 * inputs.get("s", math.nan)}
+        if (row["quantity"].startswith(f"{quantity}_") and row["reproduced"] is reproduced
+                and all(math.isclose(values[key], value) for key, value in where.items())):
+            found.add((round(values[x], 6), round(row["published"], 6)))
+    return found
 
 
 def test_design_checks_are_captioned_labelled_figures_of_the_reference_chain(checks):
@@ -76,7 +94,9 @@ def test_contact_radius_curves_and_published_points(checks):
     (ax,) = checks[0][1].axes
     assert at(line(ax, "model, ε_n = 0°"), 50) == pytest.approx(48.023, abs=5e-3)
     assert at(line(ax, "model, ε_n = 6°"), 50) == pytest.approx(46.809, abs=5e-3)
-    assert points(ax, "Paper 003 published (reproduced)") == {(50.0, 48.0), (50.0, 46.8)}
+    expected = published("contact_radius", "beta", True)
+    assert len(expected) == 2  # Fig. 3: k at beta = 50 deg for eps_n = 0 and 6 deg
+    assert points(ax, "Paper 003 published (reproduced)") == expected
 
 
 def test_edge_contact_curves_and_published_points(checks):
@@ -84,11 +104,17 @@ def test_edge_contact_curves_and_published_points(checks):
     assert at(line(psi_ax, "model, ε_n = 0°"), 50) == pytest.approx(124.12, abs=0.01)
     assert at(line(psi_ax, "model, ε_n = 6°"), 50) == pytest.approx(122.54, abs=0.01)
     assert at(line(psi_ax, "model, ε_n = 0°"), 80) == pytest.approx(128.45, abs=0.01)
-    assert points(psi_ax, "Paper 003 published (reproduced)") == {(50.0, 124.1), (50.0, 122.5)}
-    assert points(psi_ax, "Paper 003 published, not reproduced") == {(80.0, 128.7)}
-    assert "published 128.7 deg, model 128.45 deg" in [text.get_text() for text in psi_ax.texts]
-    assert points(force_ax, "Paper 003 published (reproduced)") == {
-        (50.0, 0.566), (50.0, 0.57), (80.0, 0.555)}
+    # at edge contact, s = c = 45 mm: psi (Fig. 4) and F_K/F (Fig. 5)
+    expected = published("opening_angle", "beta", True, s=45.0)
+    assert len(expected) == 2
+    assert points(psi_ax, "Paper 003 published (reproduced)") == expected
+    ((_, missed),) = missed_points = published("opening_angle", "beta", False, s=45.0)
+    assert points(psi_ax, "Paper 003 published, not reproduced") == missed_points
+    assert f"published {missed:g} deg, model 128.45 deg" in [text.get_text()
+                                                            for text in psi_ax.texts]
+    expected = published("contact_force_ratio", "beta", True, s=45.0)
+    assert len(expected) == 3
+    assert points(force_ax, "Paper 003 published (reproduced)") == expected
 
 
 def test_contact_distance_curves_and_published_points(checks):
@@ -98,11 +124,15 @@ def test_contact_distance_curves_and_published_points(checks):
     assert at(line(psi_ax, "model, β = 50°"), 70) == pytest.approx(86.42, abs=0.01)
     assert at(line(psi_ax, "model, β = 80°"), 70) == pytest.approx(94.87, abs=0.01)
     assert at(line(force_ax, "model, β = 50°"), 70) == pytest.approx(0.7302, abs=1e-4)
-    assert points(psi_ax, "Paper 003 published (reproduced)") == {
-        (45.0, 124.1), (70.0, 86.4), (70.0, 94.9)}
-    assert points(psi_ax, "Paper 003 published, not reproduced") == {(45.0, 128.7)}
-    assert points(force_ax, "Paper 003 published (reproduced)") == {
-        (45.0, 0.566), (70.0, 0.73), (45.0, 0.555), (70.0, 0.679)}
+    # over s with eps_n = 0: psi (Fig. 6) and F_K/F (Fig. 7)
+    expected = published("opening_angle", "s", True, eps_n=0.0)
+    assert len(expected) == 3
+    assert points(psi_ax, "Paper 003 published (reproduced)") == expected
+    assert points(psi_ax, "Paper 003 published, not reproduced") == published(
+        "opening_angle", "s", False, eps_n=0.0)
+    expected = published("contact_force_ratio", "s", True, eps_n=0.0)
+    assert len(expected) == 4
+    assert points(force_ax, "Paper 003 published (reproduced)") == expected
 
 
 def test_side_force_and_friction_figure_states_the_claims_against_the_model(checks):

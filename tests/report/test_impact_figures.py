@@ -76,7 +76,8 @@ def impact_summary(k_fit: float = 1.9) -> xr.Dataset:
         data[f"{impact}_theory"] = ("operating_point", theory[number])
         data[f"{impact}_fit"] = ("operating_point", fit[number])
     data.update(k_fit=k_fit, k_fit_stderr=0.01)
-    return xr.Dataset(data, coords={"operating_point": points.index.to_numpy()})
+    return xr.Dataset(data, coords={"operating_point": points.index.to_numpy()},
+                      attrs={"k_theory": 2.0})  # the k of the theory, as compare records it
 
 
 def build(function, data) -> Figure:

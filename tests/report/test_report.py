@@ -14,9 +14,10 @@ from typer.testing import CliRunner
 
 from pipeline.campaign import process_campaign
 from pipeline.cli import app
+from pipeline.errors import ChainbenchError
 from pipeline.report.build import build_report
 from pipeline.report.design_figures import design_checks, published_not_reproduced
-from pipeline.store.netcdf import read_dataset
+from pipeline.store.netcdf import read_dataset, write_atomic
 from pipeline.theory.link_stiffness import table_1
 from pipeline.units import to_si
 
@@ -149,6 +150,41 @@ def test_same_inputs_same_bytes(lab, tmp_path):
     changed = [pair for pair in zip(first.splitlines(), built_now.splitlines(), strict=True)
                if pair[0] != pair[1]]
     assert len(changed) == 1 and b"2024-05-06T07:08:09Z" in changed[0][0]
+
+
+def test_the_report_shows_the_settings_the_files_record(lab, tmp_path):
+    # The report formats what the processed files say; it recomputes nothing: change the
+    # recorded settings and the report follows them.
+    output = shutil.copytree(lab / "processed" / "mini-stiffness", tmp_path / "stiffness")
+    run = read_dataset(output / "T13-B.nc")
+    write_atomic(run.assign_attrs(fit_window="fixed force window 1 to 2 kN for every branch"),
+                 output / "T13-B.nc")
+    summary = read_dataset(output / "summary.nc")
+    summary["E0_exp_ci_low"].attrs["confidence_level"] = 0.9
+    write_atomic(summary.assign_attrs(plausibility_strain_limit=0.4), output / "summary.nc")
+    text = build_report(output, created=CREATED).read_text(encoding="utf-8")
+    assert "fixed force window 1 to 2 kN for every branch (runs T13-B)" in text
+    assert "automatic per branch" in text  # the other runs' rule
+    assert "with its 90 % interval (blue band)" in text
+    assert "strains at most 0.4" in text
+
+    output = shutil.copytree(lab / "processed" / "mini-engagement", tmp_path / "engagement")
+    summary = read_dataset(output / "summary.nc")
+    write_atomic(summary.assign_attrs(linearity="Straight as recorded.", k_fit_method="By hand."),
+                 output / "summary.nc")
+    text = build_report(output, created=CREATED).read_text(encoding="utf-8")
+    assert "<p>Straight as recorded.</p>" in text and "<td>By hand.</td>" in text
+    run = read_dataset(output / "E8-40-10.nc")
+    assert f"up to {run.attrs['ringing_events_max']} events" in text
+
+
+def test_files_that_do_not_record_a_setting_are_refused(lab, tmp_path):
+    output = shutil.copytree(lab / "processed" / "mini-engagement", tmp_path / "old")
+    summary = read_dataset(output / "summary.nc")
+    del summary.attrs["k_theory"]
+    write_atomic(summary, output / "summary.nc")
+    with pytest.raises(ChainbenchError, match="do not record 'k_theory'"):
+        build_report(output, created=CREATED)
 
 
 def test_cli_report_from_processed_alone(lab, tmp_path):

@@ -12,6 +12,7 @@ import xarray as xr
 from pipeline import __version__
 from pipeline.store.netcdf import (
     provenance_attrs,
+    read_attrs,
     read_dataset,
     sha256_of,
     write_atomic,
@@ -44,6 +45,14 @@ def test_round_trip_keeps_values_and_attrs(tmp_path):
     assert back.attrs["chainbench_version"] == __version__
     assert json.loads(back.attrs["run_entry"])["columns"]["gauges"] == ["g1", "g2"]
     assert back["E0"].attrs["units"] == "N"
+
+
+def test_read_attrs_gives_the_global_attributes_alone(tmp_path):
+    path = write_atomic(sample().assign_attrs(signal_decimation=3), tmp_path / "run.nc")
+    attrs = read_attrs(path)
+    assert attrs["title"] == "t" and attrs["raw_file"] == "T.csv"
+    assert attrs["signal_decimation"] == 3
+    assert set(attrs) == set(read_dataset(path).attrs)
 
 
 def test_failed_write_leaves_no_file(tmp_path, monkeypatch):

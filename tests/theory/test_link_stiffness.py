@@ -1,6 +1,6 @@
 """Paper 001 (Rynik): static stiffness of round-link chains against Table 1.
 
-Table 1's E0 values are read from the packaged ``paper_001.csv`` (through
+Table 1's E0 and eps values are read from the packaged ``paper_001.csv`` (through
 ``table_1()`` and ``compare_published()``); every other expectation is typed here
 from the paper and from its model values (docs/published-values.md, section 001),
 never copied from the code's output.
@@ -15,15 +15,15 @@ import numpy as np
 import pytest
 
 from pipeline.theory import link_stiffness as ls
+from pipeline.theory._published import parse_inputs
 from pipeline.units import from_si, to_si
 
-# Paper 001, Table 1 (E = 2.2e6 kgf/cm^2): d, t, R0, a [mm]; eps [1/kgf] (not in
-# paper_001.csv: the model gives no elongation per kgf of its own, only 1 / E0).
+# Paper 001, Table 1 (E = 2.2e6 kgf/cm^2): d, t, R0, a [mm].
 TABLE_1 = {
-    "13x50": dict(d=13, t=50, R0=15, a=33, eps_exp=0.892e-6, eps_theor=0.925e-6),
-    "14x50": dict(d=14, t=50, R0=16, a=32, eps_exp=0.806e-6, eps_theor=0.833e-6),
-    "18x64": dict(d=18, t=64, R0=20, a=42, eps_exp=0.442e-6, eps_theor=0.478e-6),
-    "22x86": dict(d=22, t=86, R0=24, a=58, eps_exp=0.272e-6, eps_theor=0.289e-6),
+    "13x50": dict(d=13, t=50, R0=15, a=33),
+    "14x50": dict(d=14, t=50, R0=16, a=32),
+    "18x64": dict(d=18, t=64, R0=20, a=42),
+    "22x86": dict(d=22, t=86, R0=24, a=58),
 }  # fmt: skip
 CHAINS = list(TABLE_1)
 CONSISTENT = ["13x50", "14x50", "18x64"]
@@ -31,6 +31,9 @@ CONSISTENT = ["13x50", "14x50", "18x64"]
 PUBLISHED_E0 = ls.table_1()
 #: The published numbers of paper_001.csv beside the model's.
 PUBLISHED = ls.compare_published()
+#: Table 1's elongation per kgf eps [1/kgf] as packaged: (column, chain) -> its row.
+PUBLISHED_EPS = {tuple(row["quantity"].split("_")[1:]): row
+                 for row in PUBLISHED.to_dict("records") if row["quantity"].startswith("eps_")}
 
 
 def lengths(name: str) -> list[float]:
@@ -61,7 +64,8 @@ def test_published_number_reproduced_as_declared(row):
 def test_packaged_table_1_has_the_papers_chains():
     assert list(PUBLISHED_E0) == CHAINS
     assert set(PUBLISHED["quantity"]) == {
-        f"{kind}_{name}" for kind in ("E0_theory", "E0_exp") for name in CHAINS
+        f"{kind}_{name}" for kind in ("E0_theory", "E0_exp", "eps_theory", "eps_exp")
+        for name in CHAINS
     }
 
 
@@ -106,13 +110,15 @@ def test_eq20_model_values(name, expected):
 
 
 @pytest.mark.parametrize("name", CHAINS)
-@pytest.mark.parametrize(
-    ("eps", "E0"), [("eps_exp", "E0_exp_kgf"), ("eps_theor", "E0_theor_kgf")]
-)
-def test_table_1_is_self_consistent(name, eps, E0):
+@pytest.mark.parametrize(("column", "E0"), [("exp", "E0_exp_kgf"), ("theory", "E0_theor_kgf")])
+def test_table_1_is_self_consistent(name, column, E0):
     # 0.2 %: eps and E0 are printed to three significant digits (rounding up to 0.15 %);
-    # this also checks the packaged E0 against the eps typed here.
-    assert 1 / TABLE_1[name][eps] == pytest.approx(getattr(PUBLISHED_E0[name], E0), rel=2e-3)
+    # the eps row's input E0 is the E0 row's published value, as packaged.
+    eps = PUBLISHED_EPS[column, name]
+    assert eps["unit"] == "1/kgf"
+    assert 1 / eps["published"] == pytest.approx(getattr(PUBLISHED_E0[name], E0), rel=2e-3)
+    assert from_si(parse_inputs(eps["inputs"])["E0"], "kgf") == pytest.approx(
+        getattr(PUBLISHED_E0[name], E0), rel=1e-12)
 
 
 def test_eq20_vectorised_equals_scalar_calls():
@@ -313,3 +319,38 @@ def test_negative_force_and_bad_modulus_raise():
 
 def test_docstring_examples():
     assert doctest.testmod(ls, raise_on_error=False).failed == 0
+
+
+def test_table_gives_table_1_beside_eq20_as_declared():
+    links = [(name, lengths(name)) for name in CHAINS]
+    rows, notes = ls.table(links, E=to_si(2.2e6, "kgf/cm^2"))
+    published = PUBLISHED.set_index("quantity")
+    for row in rows:
+        name = row["chain"]
+        theory = published.loc[f"E0_theory_{name}"]
+        assert row["E0_kgf"] == pytest.approx(theory["model"], rel=1e-12)
+        assert row["E0_kN"] == pytest.approx(to_si(row["E0_kgf"], "kgf") / 1e3, rel=1e-12)
+        assert row["E0_theor_paper_kgf"] == theory["published"]
+        assert row["E0_exp_paper_kgf"] == published.at[f"E0_exp_{name}", "published"]
+        assert [row[f"{key}_mm"] for key in ("d", "t", "R0", "a")] == pytest.approx(
+            list(TABLE_1[name].values()))
+    # docs/published-values.md, Paper 001: d on Table 1 alone, 3.70, 3.33, 8.13, 6.36 %,
+    # against the 3-6 % band in, in, out, out
+    assert [row["discrepancy_paper_pct"] for row in rows] == pytest.approx(
+        [3.70, 3.33, 8.13, 6.36], abs=5e-3)
+    assert [row["in_band_paper"] for row in rows] == [True, True, False, False]
+    # a note per E0_theory declared not reproduced, the 22x86 geometry, and the legend
+    missed = [quantity for quantity in published.index
+              if quantity.startswith("E0_theory_") and not published.at[quantity, "reproduced"]]
+    assert sum("not reproduced beyond its rounding" in note for note in notes) == len(missed)
+    assert any(note.startswith("22x86:") and "84 mm" in note for note in notes)
+    assert notes[-1] == ls.TABLE_LEGEND
+
+
+def test_table_of_another_chain_has_no_published_columns():
+    rows, notes = ls.table([("given", to_si([18, 64, 20, 42], "mm"))], band=(0.0, 0.1))
+    assert rows[0]["E0_theor_paper_kgf"] is None and rows[0]["in_band"] is None
+    assert rows[0]["E0_kgf"] == pytest.approx(2.0430e6, rel=1e-4)  # as 18x64, eq. (20)
+    assert notes == []
+    with pytest.raises(ValueError, match="^bad: "):
+        ls.table([("bad", to_si([18, 64, 8, 42], "mm"))])

@@ -118,3 +118,21 @@ def test_vectorised_over_teeth():
 def test_domain_errors_name_the_parameter(call, name):
     with pytest.raises(ValueError, match=name):
         call()
+
+
+def test_table_of_the_hand_example_per_support():
+    # the hand-worked example, both supports, in the table's mm (no published numbers)
+    chain = {"t": T, "pin_diameter": PIN, "bush_length": L, "plate_span": L1}
+    rows = pc.table(chain, [Z, 20], F_MAX, SIGMA_T, K_E)
+    assert [(row["z"], row["support"], row["K"]) for row in rows] == [
+        (40, "pinned", 1.0), (40, "clamped", 3.0), (20, "pinned", 1.0), (20, "clamped", 3.0)]
+    pinned, clamped = rows[:2]
+    for row in (pinned, clamped):
+        assert row["delta_t1_mm"] == pytest.approx(1.168, abs=1e3 * HAND_UM)
+        assert row["delta_d_mm"] == pytest.approx(0.584, abs=1e3 * HAND_UM)
+        assert row["pin_mm"] == pytest.approx(8.28, rel=1e-12)
+    assert (pinned["d_k_mm"], pinned["passes"]) == (pytest.approx(8.67, abs=5e-3), False)
+    assert (clamped["d_k_mm"], clamped["passes"]) == (pytest.approx(6.01, abs=5e-3), True)
+    assert pinned["required_mm"] == pytest.approx(pinned["d_k_mm"] + pinned["delta_d_mm"])
+    # z = 20: the allowed growth 25.4 (2/20 - 0.004) mm, twice the wear allowance
+    assert rows[2]["delta_t1_mm"] == pytest.approx(25.4 * (2 / 20 - 0.004), rel=1e-12)

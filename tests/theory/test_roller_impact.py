@@ -17,6 +17,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from pipeline.theory import roller_impact as ri
+from pipeline.theory._published import within_tolerance
 from pipeline.units import from_si, to_si
 
 # The example of docs/published-values.md, Paper 002: q = 3.8 kg/m, xi = 0.8, n = 500 rpm,
@@ -207,3 +208,41 @@ def test_domain_errors_name_the_parameter(call, name):
 
 def test_doctests():
     assert doctest.testmod(ri, raise_on_error=True).attempted >= 1
+
+
+def test_table_of_unit_inputs_gives_the_papers_constants_as_declared():
+    # eqs. (6)-(8) for q = 1 kg/m, n = 1 rpm, t = 1 mm, xi = 1, D = L = 1 mm and
+    # G_lim = 3e-4 J/mm^2: the energy, its reciprocal per mm^2 and n_max are the constants
+    unit = {"t": 1e-3, "mass_per_length": 1.0, "roller_diameter": 1e-3, "inner_width": 1e-3}
+    (row,) = ri.table(unit, [20], [1.0], 1.0, 1e-3, math.radians(20), to_si(3e-4, "J/mm^2"))
+    found = {"energy_constant": row["energy_J"],
+             "specific_energy_denominator": 1 / row["G_J_per_mm2"],
+             "speed_limit_constant": row["n_max_rpm"]}
+    published = PUBLISHED.set_index("quantity")
+    assert set(found) == set(published.index)
+    for quantity, value in found.items():
+        assert value == pytest.approx(published.at[quantity, "model"], rel=1e-9)
+        assert within_tolerance(value, published.at[quantity, "published"],
+                                published.at[quantity, "tolerance"]) is bool(
+            published.at[quantity, "reproduced"])
+    assert row["xi"] == 1.0 and bool(row["below_n_max"])
+
+
+def test_table_rows_per_teeth_and_speed_with_the_involute_xi():
+    chain = {"t": 31.75e-3, "mass_per_length": 3.7, "roller_diameter": 19.05e-3,
+             "inner_width": 19.56e-3}
+    rows = ri.table(chain, [10, 20], [500.0, 1000.0], None, 31.75e-3 / math.pi,
+                    math.radians(20), to_si(3e-4, "J/mm^2"))
+    assert [(row["z"], row["n_rpm"]) for row in rows] == [(10, 500), (10, 1000), (20, 500),
+                                                         (20, 1000)]
+    for row in rows:
+        assert row["xi_min"] <= row["xi"] <= row["xi_max"]
+        # eq. (6): E = (1/2) q t (omega t xi)^2, omega = 2 pi n / 60
+        omega = 2 * math.pi * row["n_rpm"] / 60
+        assert row["energy_J"] == pytest.approx(
+            0.5 * 3.7 * 31.75e-3 * (omega * 31.75e-3 * row["xi"]) ** 2, rel=1e-12)
+    assert rows[0]["xi"] == rows[1]["xi"]  # xi depends on z only
+    notes = ri.table_notes(None, 31.75e-3 / math.pi, math.radians(20))
+    assert notes[0].startswith("xi of an involute sprocket, m = 10.11 mm, alpha = 20 deg")
+    assert len(notes) == 1 + len(PUBLISHED)
+    assert ri.table_notes(0.5, 1e-3, 0.3)[0] == "xi given (0.5), not computed"

@@ -15,6 +15,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from pipeline.theory import tooth_segments as ts
+from pipeline.theory._published import parse_inputs, within_tolerance
 
 # Chain 34x126 (Paper 003, section 3) [m].
 R, D, C = 0.052, 0.034, 0.045
@@ -150,3 +151,56 @@ def test_domain_errors_name_the_parameter(call, name):
 def test_edge_contact_at_the_groove_width_is_allowed():
     # s = c is the edge contact the paper analyses (Figs. 4, 5).
     assert ts.opening_angle(C, k_of(50), groove_width=C) > 0
+
+
+#: The table's column of each published quantity of paper_003.csv.
+TABLE_COLUMNS = {"contact_radius": "k_mm", "opening_angle": "psi_deg",
+                 "contact_force_ratio": "F_K/F"}
+
+
+@pytest.mark.parametrize("row", PUBLISHED.to_dict("records"), ids=PUBLISHED["quantity"].tolist())
+def test_table_gives_each_published_value_as_declared(row):
+    # chain 34x126 (groove width c = 45 mm); a contact radius is read at edge contact, s = c
+    inputs = parse_inputs(row["inputs"])
+    chain = {"r_outer": inputs["r_outer"], "d": inputs["d"], "groove_width": 45e-3}
+    (found,) = ts.table(chain, [math.degrees(inputs["beta"])],
+                        [math.degrees(inputs["eps_n"])], [1e3 * inputs.get("s", 45e-3)])
+    value = found[next(column for quantity, column in TABLE_COLUMNS.items()
+                       if row["quantity"].startswith(f"{quantity}_"))]
+    assert value == pytest.approx(row["model"], rel=1e-9)
+    assert within_tolerance(value, row["published"], row["tolerance"]) is row["reproduced"]
+
+
+def test_table_rows_vary_beta_slowest_and_check_s():
+    chain = {"r_outer": 52e-3, "d": 34e-3, "groove_width": 45e-3}
+    rows = ts.table(chain, [50, 80], [0, 6], [45, 70])
+    assert [(row["beta_deg"], row["eps_n_deg"], row["s_mm"]) for row in rows][:3] == [
+        (50, 0, 45), (50, 0, 70), (50, 6, 45)]
+    # F_P/F = cot(psi / 2) / 2 and the friction increase 2 F_K/F - 1 (docs/models)
+    psi = math.radians(rows[0]["psi_deg"])
+    assert rows[0]["F_P/F"] == pytest.approx(0.5 / math.tan(psi / 2), rel=1e-12)
+    assert rows[0]["friction_increase_pct"] == pytest.approx(100 * (2 * rows[0]["F_K/F"] - 1))
+    with pytest.raises(ValueError, match="groove width"):
+        ts.table(chain, [50], [0], [10])
+
+
+def test_published_notes_only_for_the_papers_chain():
+    notes = ts.published_notes({"r_outer": 52e-3, "d": 34e-3}, PUBLISHED)
+    flagged = PUBLISHED[~PUBLISHED["reproduced"]]
+    assert notes[0].endswith(f"{len(PUBLISHED) - len(flagged)} of {len(PUBLISHED)} published "
+                             "values reproduced")
+    assert len(notes) == 1 + len(flagged) and "NOT reproduced" in notes[1]
+    assert ts.published_notes({"r_outer": 40e-3, "d": 26e-3}, PUBLISHED) == []
+
+
+def test_the_papers_claims_against_the_model():
+    # docs/models/paper-003-tooth-segments.md (chain 34x126, c = 45 mm): F_P/F passes 0.5
+    # only above s = 67.9 mm at beta = 50 deg (never below 70 mm at 80 deg); the friction
+    # increase at s = 70 mm, beta = 50 deg is 46.0 % (eps_n = 0) and 50.6 % (eps_n = 6 deg)
+    chain = {"r_outer": 52e-3, "d": 34e-3, "groove_width": 45e-3}
+    assert ts.side_force_threshold(chain, math.radians(50)) == pytest.approx(67.9e-3, abs=5e-5)
+    assert math.isnan(ts.side_force_threshold(chain, math.radians(80)))
+    note = ts.claims_note(chain, np.radians([50, 80]), np.radians([0, 6]))
+    assert "passes 0.5 only above s = 67.9 mm at β = 50° (never below 70 mm" in note
+    assert "at s = 70 mm, β = 50°; the model gives 46.0 % with ε_n = 0° and 50.6 % with " \
+           "ε_n = 6°." in note

@@ -17,6 +17,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from pipeline.theory import wheel_impact as wi
+from pipeline.theory._published import within_tolerance
 
 # Paper 000's example (section 3): chain 18x64, L = 2 m, E0 = 2.26e7 N, k = 2,
 # omega = 20 1/s; q = 6.6 kg/m * g (DIN 22252 nominal mass, not printed in the paper).
@@ -322,3 +323,44 @@ def test_docstring_examples():
     result = doctest.testmod(wi, optionflags=doctest.ELLIPSIS)
     assert result.attempted > 0
     assert result.failed == 0
+
+
+def published_row(quantity: str) -> dict:
+    return PUBLISHED.set_index("quantity").loc[quantity].to_dict()
+
+
+def test_table_gives_the_papers_published_numbers_as_declared():
+    # every row of paper_000.csv is the example's grid (z = 6, 8, 10; psi = 20..60 deg)
+    rows = wi.table(T, D, TEETH, APEX_DEG, OMEGA, MASS_PER_LENGTH, E0, BRANCH_LENGTH)
+    by_wheel = {(row["z"], row["psi_deg"]): row for row in rows}
+    smallest = min(rows, key=lambda row: row["N_u2"])
+    found = {"N_u2_smallest": smallest["N_u2"], "z_of_smallest_N_u2": smallest["z"],
+             "psi_of_smallest_N_u2": smallest["psi_deg"],
+             "N_u2_over_N_u1_z8_psi40": by_wheel[8, 40]["N_u2/N_u1"]}
+    assert set(found) == set(PUBLISHED["quantity"])
+    for quantity, value in found.items():
+        row = published_row(quantity)
+        assert value == pytest.approx(row["model"], rel=1e-9)
+        assert within_tolerance(value, row["published"], row["tolerance"]) is row["reproduced"]
+
+
+def test_table_is_the_grid_of_the_docs_with_its_units():
+    rows = wi.table(T, D, TEETH, APEX_DEG, OMEGA, MASS_PER_LENGTH, E0, BRANCH_LENGTH)
+    assert [(row["z"], row["psi_deg"]) for row in rows] == [(z, psi) for z in TEETH
+                                                            for psi in APEX_DEG]
+    assert list(rows[0]) == list(wi.TABLE_UNITS)
+    for row in rows:
+        column = APEX_DEG.index(row["psi_deg"])
+        assert row["N_u1"] == pytest.approx(GRID_N_U1[column], abs=0.5)
+        assert row["N_u2"] == pytest.approx(GRID_N_U2[row["z"]][column], abs=0.5)
+        assert row["tau"] == pytest.approx(math.pi / (row["z"] * OMEGA), rel=1e-12)  # eq. (9)
+    with pytest.raises(ValueError, match="omega"):
+        wi.table(T, D, TEETH, APEX_DEG, 0.0, MASS_PER_LENGTH, E0, BRANCH_LENGTH)
+
+
+def test_published_notes_only_for_the_papers_chain():
+    assert wi.is_paper_chain(T, D) and not wi.is_paper_chain(0.086, 0.022)
+    notes = wi.published_notes(T, D)
+    assert len(notes) == 1 + len(PUBLISHED)
+    assert "N_u2_over_N_u1_z8_psi40 = 2.54, model 3.521: NOT REPRODUCED" in notes[-1]
+    assert wi.published_notes(0.086, 0.022) == []
