@@ -81,6 +81,7 @@ from pipeline.condition.samples import LogSamples
 from pipeline.errors import FitError
 from pipeline.fit.windows import (
     MAX_ONSET_SHIFT,
+    WINDOW_GUARD,
     WINDOW_PRE,
     Ringing,
     WindowGeometry,
@@ -91,8 +92,10 @@ from pipeline.fit.windows import (
 
 #: Events used to fit omega_n and zeta per run.
 RINGING_EVENTS = 64
-#: Residual RMS above this multiple of the run's median marks a failed fit.
+#: Residual RMS above this multiple of the run's median marks a failed fit...
 RESIDUAL_OUTLIER = 4.0
+#: ...when it is also above this fraction of the run's typical strike amplitude.
+RESIDUAL_FLOOR = 1e-3
 #: Reasons an event is excluded from a run's statistics, in order of precedence.
 EXCLUSIONS = ("truncated", "gap", "clipped", "overlap", "fit_failed")
 #: Consistency constant of the MAD (normal distribution) and efficiency factor of
@@ -550,9 +553,10 @@ def _event_table(prior1: np.ndarray, prior2: np.ndarray, status: np.ndarray,
     finite = np.all(np.isfinite(coef), axis=1) & np.all(np.isfinite(variance), axis=1)
     failed = fits.moved | ~finite | ~(coef[:, 6] > 0) | ~(coef[:, 7] > 0)
     if np.any(~failed):
-        # (a residual below 0.1 % of the typical strike is a good fit whatever its ratio)
+        # (a residual below RESIDUAL_FLOOR of the typical strike is a good fit whatever
+        # its ratio)
         typical = np.median(rms[~failed]), np.median(coef[~failed, 7])
-        failed |= rms > max(RESIDUAL_OUTLIER * typical[0], 1e-3 * typical[1])
+        failed |= rms > max(RESIDUAL_OUTLIER * typical[0], RESIDUAL_FLOOR * typical[1])
 
     time1, time2 = prior1.copy(), prior2.copy()
     time1[usable], time2[usable] = fits.onset1, fits.onset2
@@ -664,3 +668,22 @@ def impact_result(plan: ExtractionPlan, fits: list[EventFits], ringing: Ringing,
     statistics, excluded = _run_statistics(frame, relative_errors, plan.file)
     return ImpactResult(frame, ringing, statistics, excluded, plan.clip_levels,
                         messages=events.messages)
+
+
+def extraction_settings() -> dict[str, float]:
+    """The settings this extraction applies, to be recorded as attributes of its outputs.
+
+    Returns
+    -------
+    dict
+        ``event_window_pre`` and ``event_window_guard`` [1, fractions of tau]:
+        an event's window runs from ``event_window_pre`` tau before impact 1 to
+        ``event_window_guard`` tau before the next seating; ``max_onset_shift``
+        [ringing periods], ``residual_outlier`` [1, times the run's median
+        residual] and ``residual_floor`` [1, fraction of the typical strike]:
+        beyond them an event's fit has failed; ``ringing_events_max`` [1]:
+        events the natural frequency and damping are fitted on.
+    """
+    return {"event_window_pre": WINDOW_PRE, "event_window_guard": WINDOW_GUARD,
+            "max_onset_shift": MAX_ONSET_SHIFT, "residual_outlier": RESIDUAL_OUTLIER,
+            "residual_floor": RESIDUAL_FLOOR, "ringing_events_max": RINGING_EVENTS}

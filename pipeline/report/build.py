@@ -529,7 +529,9 @@ def _extraction(attrs: dict[str, Any]) -> str:
             "the next seating (tau: half the seating period); an event's fit failed when an "
             f"onset moves by more than {float(recorded(attrs, 'max_onset_shift')):g} ringing "
             f"periods or its residual exceeds {float(recorded(attrs, 'residual_outlier')):g} "
-            "times the run's median; omega_n and zeta fitted on up to "
+            "times the run's median and "
+            f"{100 * float(recorded(attrs, 'residual_floor')):g} % of the typical strike; "
+            "omega_n and zeta fitted on up to "
             f"{int(recorded(attrs, 'ringing_events_max'))} events")
 
 

@@ -9,7 +9,7 @@ standard errors (``N_u1_event_stderr``, ``N_u2_event_stderr``: ``N_u1_stderr``
 is the run's), ``peak1``, ``peak2`` (first-peak heights) [N] and ``status``;
 run-level statistics (``N_u1_median``, ``N_u1_iqr``, ...), the branch's
 fitted natural frequency and damping and the clipping levels as scalars; the
-settings of the extraction (:func:`extraction_settings`) as attributes.
+settings of the extraction (:func:`pipeline.fit.impact.extraction_settings`) as attributes.
 """
 
 from __future__ import annotations
@@ -23,9 +23,7 @@ import pandas as pd
 import xarray as xr
 
 from pipeline.condition.engagement import EngagementEvents
-from pipeline.fit import impact as extraction
-from pipeline.fit import windows
-from pipeline.fit.impact import ImpactResult, ImpactStatistics
+from pipeline.fit.impact import ImpactResult, ImpactStatistics, extraction_settings
 from pipeline.fit.windows import Ringing
 from pipeline.results.notes import joined, lines
 
@@ -89,30 +87,6 @@ def decimated_signal(table: pd.DataFrame) -> tuple[np.ndarray, np.ndarray, int]:
     return table["time"].to_numpy()[::stride], table["force"].to_numpy()[::stride], stride
 
 
-def extraction_settings() -> dict[str, float]:
-    """The settings the impact extraction applies, as attributes.
-
-    The constants of :mod:`pipeline.fit.windows` (an event's window, how far an
-    onset may move) and :mod:`pipeline.fit.impact` (the ringing fit, the
-    residual rule).
-
-    Returns
-    -------
-    dict
-        ``event_window_pre`` and ``event_window_guard`` [1, fractions of tau]:
-        an event's window runs from ``event_window_pre`` tau before impact 1 to
-        ``event_window_guard`` tau before the next seating; ``max_onset_shift``
-        [ringing periods] and ``residual_outlier`` [1, times the run's median
-        residual]: beyond them an event's fit has failed; ``ringing_events_max``
-        [1]: events the natural frequency and damping are fitted on.
-    """
-    return {"event_window_pre": windows.WINDOW_PRE,
-            "event_window_guard": windows.WINDOW_GUARD,
-            "max_onset_shift": windows.MAX_ONSET_SHIFT,
-            "residual_outlier": extraction.RESIDUAL_OUTLIER,
-            "ringing_events_max": extraction.RINGING_EVENTS}
-
-
 @dataclass(frozen=True, eq=False)
 class EngagementResult:
     """What one engagement run gave, as its run file holds it (SI units).
@@ -123,7 +97,7 @@ class EngagementResult:
         Global attributes: provenance (:func:`pipeline.store.netcdf.provenance_attrs`),
         the run's identity (``campaign``, ``run_id``, ``kind``, ``chain``,
         ``wheel``, ``layout``) and the extraction's settings
-        (:func:`extraction_settings`).
+        (:func:`pipeline.fit.impact.extraction_settings`).
     time : numpy.ndarray
         Times of the stored signal [s].
     force : numpy.ndarray
