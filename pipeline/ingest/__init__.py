@@ -1,7 +1,23 @@
 """Readers: one raw file in, one canonical table (SI units, role-named columns) out.
 
-:func:`read_table` is the entry point: it recognises the file's format and
-layout and hands it to the reader of that layout, one module each:
+Three entry points, one set of readers:
+
+* :func:`read_table` reads a file: it recognises the file's format and
+  layout and hands it to the reader of that layout;
+* :func:`parse_table` reads the same from bytes in memory (an upload, a zip
+  member, a test's literal); errors name the buffer's ``name``. It is the
+  parse path of ``read_table``, which only opens the file, hands it on
+  (:class:`~pipeline.ingest.source.FileSource`, read in blocks as the parsers
+  ask) and closes it, so that ``parse_table(path.read_bytes())`` and
+  ``read_table(path)`` give the same table and metadata;
+* :func:`open_log` opens a long log to read it by row ranges
+  (:class:`LogReader`, :mod:`pipeline.ingest.stream`): roles and units settled
+  once at open, then ``reader.read(start, stop)`` gives rows ``[start, stop)``
+  as ``read_table`` would, with the memory of those rows; picklable, for
+  chunks read by dask tasks.
+
+One module per layout, each reading a :class:`~pipeline.ingest.source.Source`
+(a file or a buffer):
 
 ==================  =========================================================
 layout              reader
@@ -15,7 +31,11 @@ layout              reader
 ==================  =========================================================
 
 The three delimited layouts share one reader and differ only in how they are
-recognised (:data:`pipeline.ingest.delimited.LAYOUTS`).
+recognised (:data:`pipeline.ingest.delimited.LAYOUTS`); which reader reads a
+file is decided in :mod:`pipeline.ingest.formats`. By row range, delimited
+text is read through an index of every 65,536th row
+(:mod:`pipeline.ingest.rowindex`), TDMS through npTDMS's channel slices, and
+MTS and ``.xlsx`` (small logs) by reading the whole file and slicing it.
 
 Nothing here knows physics: the table says what the file holds, in SI units,
 and the warnings say what looked odd; the conditioning stage decides.
@@ -28,22 +48,14 @@ from pathlib import Path
 
 import pandas as pd
 
-from pipeline.errors import IngestError, LayoutError
-from pipeline.ingest import canonical, delimited, mts, tdms, xlsx
-from pipeline.ingest.raw import RawTable
-from pipeline.ingest.sniff import detect_dialect, find_table, read_head
+from pipeline.ingest import canonical
+from pipeline.ingest.formats import FORMATS, check_options, read_raw, sniff
+from pipeline.ingest.source import BufferSource, Source, opened
+from pipeline.ingest.stream import LogReader, open_log
 from pipeline.ingest.table import ROLES, ColumnInfo, TableMetadata
 
-__all__ = ["FORMATS", "ROLES", "ColumnInfo", "TableMetadata", "read_table"]
-
-#: Text layouts, in the order they are tried on a file.
-TEXT_LAYOUTS = {mts.LAYOUT: mts, **{layout.name: layout for layout in delimited.LAYOUTS}}
-
-#: Values of ``format``: auto-detection, a file format, or one text layout.
-FORMATS = ("auto", "csv", "xlsx", "tdms", *TEXT_LAYOUTS)
-
-_MAGIC = {b"PK\x03\x04": "xlsx", b"TDSm": "tdms"}
-_OLD_EXCEL = b"\xd0\xcf\x11\xe0"
+__all__ = ["FORMATS", "ROLES", "ColumnInfo", "LogReader", "TableMetadata", "open_log",
+           "parse_table", "read_table"]
 
 
 def read_table(
@@ -57,6 +69,9 @@ def read_table(
     strict: bool = True,
 ) -> tuple[pd.DataFrame, TableMetadata]:
     """Read a raw test-machine file into the canonical table.
+
+    The file is opened, handed to the parse path of :func:`parse_table`
+    (read in blocks as the parsers ask, never whole nor mapped), and closed.
 
     Parameters
     ----------
@@ -117,47 +132,74 @@ def read_table(
         :class:`~pipeline.errors.ColumnError`,
         :class:`~pipeline.errors.UnitError`,
         :class:`~pipeline.errors.ValueParseError`), each naming the file, the
-        line and column where known, and what to do.
+        line and column where known, and what to do; a file that cannot be
+        opened or read gives an :class:`~pipeline.errors.IngestError`.
+    ValueError
+        For an unknown `kind` or `format`.
     """
-    path = Path(path)
-    if format not in FORMATS:
-        raise ValueError(f"format must be one of {FORMATS}, not {format!r}")
-    if kind not in canonical.REQUIRED:
-        raise ValueError(f"kind must be one of {tuple(canonical.REQUIRED)}, not {kind!r}")
-    try:
-        resolved = _format_of(path) if format == "auto" else format
-        if resolved == "xlsx":
-            raw = xlsx.read(path, sheet, columns)
-        elif resolved == "tdms":
-            raw = tdms.read(path, columns)
-        else:
-            raw = _read_text(path, resolved, columns)
-    except OSError as error:
-        raise IngestError(
-            f"cannot read the file: {error.strerror or error}",
-            file=path, hint="check the run sheet's file entry and the file's permissions",
-        ) from error
+    check_options(kind, format)
+    with opened(Path(path)) as source:
+        return _table(source, kind, columns, units, format, sheet, strict)
+
+
+def parse_table(
+    buffer: bytes | bytearray | memoryview,
+    kind: str = "tensile",
+    columns: Mapping | None = None,
+    units: Mapping | None = None,
+    format: str = "auto",
+    sheet: str | int | None = None,
+    *,
+    strict: bool = True,
+    name: str = "<buffer>",
+) -> tuple[pd.DataFrame, TableMetadata]:
+    """Parse the bytes of a raw test-machine file into the canonical table.
+
+    The same readers as :func:`read_table`, on bytes in memory (an upload, a
+    member of a zip archive, a test's literal): ``parse_table(path.read_bytes())``
+    gives what ``read_table(path)`` gives, but for the file's name.
+
+    Parameters
+    ----------
+    buffer : bytes-like
+        The file's content (``bytes``, ``bytearray``, ``memoryview`` or
+        ``mmap``), read without a copy; it must not change during the call.
+        pyarrow's reading threads may hold a view of it for a moment after
+        the call returns, so an ``mmap`` closed at once may refuse
+        (``BufferError``): read from ``bytes``, or let the map be collected.
+    kind, columns, units, format, sheet, strict
+        As for :func:`read_table`.
+    name : str
+        The name errors and :attr:`TableMetadata.file` give the buffer; its
+        suffix counts as a file's would (``"run.tdms"``) when ``format="auto"``.
+
+    Returns
+    -------
+    table : pandas.DataFrame
+        As :func:`read_table`.
+    metadata : TableMetadata
+        As :func:`read_table`, with ``file`` = `name`.
+
+    Raises
+    ------
+    IngestError
+        As :func:`read_table`, naming `name` instead of a path.
+    ValueError
+        For an unknown `kind` or `format`.
+    """
+    check_options(kind, format)
+    return _table(BufferSource(buffer, name), kind, columns, units, format, sheet, strict)
+
+
+def _table(
+    source: Source,
+    kind: str,
+    columns: Mapping | None,
+    units: Mapping | None,
+    format: str,
+    sheet: str | int | None,
+    strict: bool,
+) -> tuple[pd.DataFrame, TableMetadata]:
+    """The parse path of :func:`read_table` and :func:`parse_table`."""
+    raw = read_raw(source, sniff(source, format), columns, sheet)
     return canonical.build(raw, kind=kind, units=units, strict=strict)
-
-
-def _format_of(path: Path) -> str:
-    """``"xlsx"``, ``"tdms"`` or ``"csv"`` from the file's first bytes, then its suffix."""
-    with path.open("rb") as stream:
-        magic = stream.read(4)
-    if magic == _OLD_EXCEL or path.suffix.lower() == ".xls":
-        raise LayoutError(
-            "old binary Excel files (.xls) are not read",
-            file=path, hint="save the workbook as .xlsx, or export the sheet as CSV",
-        )
-    suffix = {".xlsx": "xlsx", ".xlsm": "xlsx", ".tdms": "tdms"}.get(path.suffix.lower())
-    return _MAGIC.get(magic, suffix or "csv")
-
-
-def _read_text(path: Path, layout: str, columns: Mapping | None) -> RawTable:
-    head = read_head(path)
-    delimiter, decimal, width = detect_dialect(head.lines, path)
-    spec = find_table(head.lines, path, delimiter, decimal, width)
-    if layout == "csv":
-        layout = next(name for name, reader in TEXT_LAYOUTS.items()
-                      if reader.matches(head, spec))
-    return TEXT_LAYOUTS[layout].read(head, spec, columns)

@@ -20,18 +20,24 @@ layout are handled once:
 
 With ``strict=False`` (``chainbench inspect``) role and unit problems become
 warnings and the table holds only the columns that could be converted.
+
+Roles and units are settled once per file (:func:`settle`, a
+:class:`Conversion`), then applied to the whole file (:func:`build`, for
+``read_table``) or to some of its rows (:func:`convert_rows`, for the
+row-range reader of :mod:`pipeline.ingest.stream`): the same values either way.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
 
 from pipeline.errors import ChainbenchError, ColumnError, UnitError
 from pipeline.ingest.names import gauge_kind
-from pipeline.ingest.raw import RawTable
+from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import SHEET_KEY, display_name, role_of_key
 from pipeline.ingest.table import GAP_FACTOR, ROLES, ColumnInfo, TableMetadata
 from pipeline.ingest.unitparse import (
@@ -81,15 +87,46 @@ def _run_sheet_units(units: Mapping | None, file: str) -> dict[str, list[str]]:
     return resolved
 
 
-def build(
-    raw: RawTable, *, kind: str, units: Mapping | None = None, strict: bool = True
-) -> tuple[pd.DataFrame, TableMetadata]:
-    """Settle roles and units of `raw` and return the canonical table.
+@dataclass(frozen=True)
+class Conversion:
+    """How a file's raw columns become its canonical table: settled once for the whole file.
+
+    Attributes
+    ----------
+    columns : tuple of (int, str, float)
+        Raw column index, canonical name and SI factor of each column of the
+        table, in table order.
+    infos : tuple of ColumnInfo
+        Every raw column and what it became (:attr:`TableMetadata.columns`).
+    """
+
+    columns: tuple[tuple[int, str, float], ...]
+    infos: tuple[ColumnInfo, ...]
+
+    def table(self, raw: RawTable) -> pd.DataFrame:
+        """The canonical table of `raw` (its arrays converted in place), indexed by file row."""
+        data = {}
+        for index, name, factor in self.columns:
+            array = raw.arrays[index]
+            if factor != 1.0:
+                np.multiply(array, factor, out=array)
+            data[name] = array
+        rows = pd.RangeIndex(raw.first_row, raw.first_row + raw.rows)
+        return pd.DataFrame(data, index=rows, copy=False)
+
+
+def settle(
+    raw: RawColumns, empty: set[int], *, kind: str, units: Mapping | None = None,
+    strict: bool = True,
+) -> Conversion:
+    """Settle the roles and SI units of a file's columns.
 
     Parameters
     ----------
-    raw : RawTable
-        What the layout reader found.
+    raw : RawColumns
+        The file's header; warnings go to its metadata.
+    empty : set of int
+        Columns holding no value in the whole file (they take no role).
     kind : {"tensile", "engagement"}
         The run kind: tensile runs need force and a gauge, engagement runs
         time and force.
@@ -99,13 +136,6 @@ def build(
     strict : bool
         Raise on role and unit problems (True) or turn them into warnings.
 
-    Returns
-    -------
-    table : pandas.DataFrame
-        Canonical columns in SI units (see :mod:`pipeline.ingest.table`).
-    metadata : TableMetadata
-        The reader's metadata with ``columns``, ``rows`` and the checks filled in.
-
     Raises
     ------
     ColumnError, UnitError
@@ -114,7 +144,6 @@ def build(
     meta = raw.metadata
     problems = _Problems(strict, meta.warnings)
     sheet_units = _run_sheet_units(units, meta.file)
-    empty = _clean(raw, meta.warnings)
     assigned = _settle_roles(raw, empty, problems)
     rejected: dict[str, UnitError] = {}
     factors, found_units, strains = _settle_units(raw, assigned, sheet_units, problems,
@@ -129,32 +158,83 @@ def build(
             "the file has: " + ", ".join(display_name(raw.names, i)
                                           for i in range(len(raw.names))),
         ))
-    data: dict[str, np.ndarray] = {}
     canonical = _canonical_names(assigned, strains)
-    for role in ROLES:
-        for index in assigned.get(role, []):
-            name = canonical[index]
-            if index in factors:
-                array = raw.arrays[index]
-                if factors[index] != 1.0:
-                    np.multiply(array, factors[index], out=array)
-                data[name] = array
-    table = pd.DataFrame(data, index=pd.RangeIndex(raw.rows), copy=False)
-    _report_missing(table, raw, meta.warnings)
-    _check_time(table, raw, meta)
-    meta.rows = raw.rows
-    meta.columns = [
+    columns = tuple((index, canonical[index], factors[index]) for role in ROLES
+                    for index in assigned.get(role, []) if index in factors)
+    kept = {index for index, _, _ in columns}
+    infos = tuple(
         ColumnInfo(
             name=display_name(raw.names, index),
             role=canonical.get(index),
             unit=found_units.get(index, raw.units[index]),
-            si_unit=_si_unit(canonical[index]) if canonical.get(index) in data else None,
+            si_unit=_si_unit(canonical[index]) if index in kept else None,
             kind=gauge_kind(raw.names[index]) if canonical.get(index, "").startswith(
                 ("gauge_", "strain_")) else None,
         )
         for index in range(len(raw.names))
-    ]
+    )
+    return Conversion(columns, infos)
+
+
+def build(
+    raw: RawTable, *, kind: str, units: Mapping | None = None, strict: bool = True
+) -> tuple[pd.DataFrame, TableMetadata]:
+    """Settle roles and units of `raw` and return the canonical table.
+
+    Parameters
+    ----------
+    raw : RawTable
+        What the layout reader found: the whole file.
+    kind, units, strict
+        See :func:`settle`.
+
+    Returns
+    -------
+    table : pandas.DataFrame
+        Canonical columns in SI units (see :mod:`pipeline.ingest.table`).
+    metadata : TableMetadata
+        The reader's metadata with ``columns``, ``rows`` and the checks filled in.
+
+    Raises
+    ------
+    ColumnError, UnitError
+        In strict mode, as listed in the module docstring.
+    """
+    meta = raw.metadata
+    empty = raw.empty | clean(raw, meta.warnings)
+    if empty:
+        meta.warnings.append(empty_warning(raw.names, empty))
+    conversion = settle(raw, empty, kind=kind, units=units, strict=strict)
+    table = conversion.table(raw)
+    meta.time_monotonic, meta.time_gaps = _check_rows(table, raw, meta.warnings)
+    meta.rows = raw.rows
+    meta.columns = list(conversion.infos)
     return table, meta
+
+
+def convert_rows(raw: RawTable, conversion: Conversion) -> tuple[pd.DataFrame, list[str]]:
+    """The canonical table of some rows of a file, converted as settled for the whole file.
+
+    Parameters
+    ----------
+    raw : RawTable
+        The rows, as read (:attr:`RawTable.first_row` says where they start).
+    conversion : Conversion
+        The file's :func:`settle`.
+
+    Returns
+    -------
+    table : pandas.DataFrame
+        As :func:`build` would give these rows, indexed by file row.
+    warnings : list of str
+        What these rows gave: sentinels, missing values, time steps back and
+        gaps, each counted within the rows.
+    """
+    warnings: list[str] = []
+    clean(raw, warnings)
+    table = conversion.table(raw)
+    _check_rows(table, raw, warnings)
+    return table, warnings
 
 
 def _canonical_names(assigned: dict[str, list[int]], strains: set[int]) -> dict[int, str]:
@@ -178,9 +258,9 @@ def _si_unit(name: str) -> str:
                         else name]
 
 
-def _clean(raw: RawTable, warnings: list[str]) -> set[int]:
-    """Sentinels to NaN; returns the empty columns (noted in `warnings`)."""
-    empty = set(raw.empty)
+def clean(raw: RawTable, warnings: list[str]) -> set[int]:
+    """Sentinels to NaN (noted in `warnings`); returns the arrays left without a value."""
+    empty = set()
     for index, array in raw.arrays.items():
         low = np.fmin.reduce(array) if array.size else np.nan
         if low <= _LOWEST_NEGATIVE or (array.size and np.fmax.reduce(array) >= _LOWEST_POSITIVE):
@@ -195,15 +275,16 @@ def _clean(raw: RawTable, warnings: list[str]) -> set[int]:
                 low = np.fmin.reduce(array)
         if np.isnan(low):
             empty.add(index)
-    if empty:
-        warnings.append(
-            f"{len(empty)} empty column(s) dropped: "
-            + ", ".join(display_name(raw.names, index) for index in sorted(empty))
-        )
     return empty
 
 
-def _settle_roles(raw: RawTable, empty: set[int], problems: _Problems) -> dict[str, list[int]]:
+def empty_warning(names: list[str], empty: set[int]) -> str:
+    """The warning listing the empty columns, dropped."""
+    return (f"{len(empty)} empty column(s) dropped: "
+            + ", ".join(display_name(names, index) for index in sorted(empty)))
+
+
+def _settle_roles(raw: RawColumns, empty: set[int], problems: _Problems) -> dict[str, list[int]]:
     file = raw.metadata.file
     assigned: dict[str, list[int]] = {}
     for role, indexes in raw.candidates.roles.items():
@@ -232,7 +313,7 @@ def _settle_roles(raw: RawTable, empty: set[int], problems: _Problems) -> dict[s
 
 
 def _settle_units(
-    raw: RawTable,
+    raw: RawColumns,
     assigned: dict[str, list[int]],
     sheet_units: dict[str, list[str]],
     problems: _Problems,
@@ -318,35 +399,43 @@ def _report_missing(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> 
         )
 
 
-def _check_time(table: pd.DataFrame, raw: RawTable, meta: TableMetadata) -> None:
+def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tuple[bool | None, int]:
+    """Report missing values and time problems of `table` in `warnings`.
+
+    Returns
+    -------
+    time_monotonic : bool or None
+        False if time steps back, None without time (or with one row).
+    time_gaps : int
+        Time steps longer than :data:`GAP_FACTOR` x the median step.
+    """
+    _report_missing(table, raw, warnings)
     if "time" not in table or len(table) < 2:
-        return
+        return None, 0
     steps = np.diff(table["time"].to_numpy())
     backwards = steps < 0
     count = int(np.count_nonzero(backwards))
-    meta.time_monotonic = count == 0
     if count:
         first = int(np.argmax(backwards)) + 1
-        meta.warnings.append(
-            f"time: steps back {count} times, first at {raw.where(first)}"
-        )
+        warnings.append(f"time: steps back {count} times, first at {raw.where(first)}")
     repeated = steps == 0
     if repeated.any():
         first = int(np.argmax(repeated)) + 1
-        meta.warnings.append(
+        warnings.append(
             f"time: {int(np.count_nonzero(repeated))} repeated time stamp(s), first at "
             f"{raw.where(first)}"
         )
     sample = steps[:: max(1, steps.size // 100_000)]
     sample = sample[sample > 0]
     if not sample.size:
-        return
+        return count == 0, 0
     median = float(np.median(sample))
     gaps = steps > GAP_FACTOR * median
-    meta.time_gaps = int(np.count_nonzero(gaps))
-    if meta.time_gaps:
+    count_gaps = int(np.count_nonzero(gaps))
+    if count_gaps:
         first = int(np.argmax(gaps)) + 1
-        meta.warnings.append(
-            f"time: {meta.time_gaps} gaps longer than {GAP_FACTOR:g} x the median step "
+        warnings.append(
+            f"time: {count_gaps} gaps longer than {GAP_FACTOR:g} x the median step "
             f"({median:.3g} s), first before {raw.where(first)}"
         )
+    return count == 0, count_gaps

@@ -61,7 +61,7 @@ import pyarrow as pa
 from pipeline.errors import EmptyFileError, LayoutError
 from pipeline.ingest.names import split_name_unit
 from pipeline.ingest.preamble import parse_preamble
-from pipeline.ingest.raw import RawTable
+from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import Candidates, find_candidates
 from pipeline.ingest.sniff import Head, TableSpec
 from pipeline.ingest.table import TableMetadata
@@ -72,7 +72,11 @@ from pipeline.ingest.textbody import (
     parse_body,
     split_table,
     trim_truncated_tail,
+    truncated_warning,
 )
+
+#: The warning of a file whose decimal comma is also its delimiter.
+PAIRS_WARNING = "the decimal comma is also the delimiter: values were rejoined in pairs"
 
 
 def header_columns(spec: TableSpec) -> tuple[list[str], list[str | None]]:
@@ -88,7 +92,7 @@ def header_columns(spec: TableSpec) -> tuple[list[str], list[str | None]]:
 def metadata(head: Head, spec: TableSpec, layout: str, preamble: dict[str, str]) -> TableMetadata:
     """The metadata every text layout reports."""
     return TableMetadata(
-        file=str(head.path),
+        file=head.name,
         layout=layout,
         encoding=head.encoding,
         delimiter=spec.delimiter,
@@ -104,19 +108,38 @@ def units_line(spec: TableSpec) -> int:
     return (spec.units_index if spec.units_index is not None else spec.header_index) + 1
 
 
-def candidates(head: Head, spec: TableSpec, columns: Mapping | None) -> Candidates:
-    """Role candidates of a text table (see :func:`~pipeline.ingest.roles.find_candidates`)."""
+def text_header(
+    head: Head, spec: TableSpec, layout: str, preamble: dict[str, str], columns: Mapping | None
+) -> RawColumns:
+    """What the header of a text table says: names, units, role candidates, metadata.
+
+    Parameters
+    ----------
+    head, spec
+        The sniffed head and table.
+    layout : str
+        The layout's name, for the metadata.
+    preamble : dict
+        The parsed preamble, for the metadata.
+    columns : mapping, optional
+        Run-sheet ``columns`` (see :func:`~pipeline.ingest.roles.find_candidates`).
+    """
     names, units = header_columns(spec)
-    return find_candidates(names, units, columns, file=head.path,
-                           header_line=spec.header_index + 1)
+    return RawColumns(
+        names=names,
+        units=units,
+        candidates=find_candidates(names, units, columns, file=head.name,
+                                   header_line=spec.header_index + 1),
+        metadata=metadata(head, spec, layout, preamble),
+        units_line=units_line(spec),
+    )
 
 
 def raw_table(
     parsed: tuple[dict[int, pa.ChunkedArray], int, set[int]],
     region: Region,
-    spec: TableSpec,
-    found: Candidates,
-    meta: TableMetadata,
+    header: RawColumns,
+    first_row: int = 0,
 ) -> RawTable:
     """Wrap a parsed body as a :class:`RawTable` (float candidates, empty others).
 
@@ -128,52 +151,48 @@ def raw_table(
         freed as they are converted.
     region : Region
         Where the rows are in the file.
-    spec : TableSpec
-        The sniffed table.
-    found : Candidates
-        Role candidates.
-    meta : TableMetadata
-        The reader's metadata.
+    header : RawColumns
+        The table's header.
+    first_row : int
+        The file's 0-based row number of the region's first row.
 
     Raises
     ------
     EmptyFileError
         If the body holds no row.
     """
-    names, units = header_columns(spec)
     chunks, rows, empty = parsed
+    require_rows(rows, region)
+    return header.table(arrays=float_arrays(chunks), rows=rows, line_of=region.line_of,
+                        empty=empty, first_row=first_row)
+
+
+def require_rows(rows: int, region: Region) -> None:
+    """Raise :class:`~pipeline.errors.EmptyFileError` if `region` holds no data row."""
     if rows == 0:
         raise EmptyFileError(
             "the file has a header but no data rows",
-            file=region.path, row=region.first_line,
+            file=region.name, row=region.first_line,
             hint="the machine wrote no measurements: export the test again",
         )
-    return RawTable(
-        names=names,
-        units=units,
-        arrays=float_arrays(chunks),
-        rows=rows,
-        candidates=found,
-        metadata=meta,
-        line_of=region.line_of,
-        empty=empty,
-        units_line=units_line(spec),
-    )
 
 
-def read_contiguous(
-    head: Head, spec: TableSpec, columns: Mapping | None, meta: TableMetadata
-) -> RawTable:
-    """Read a table whose data rows run from the first data row to the end of the file.
+def body(head: Head, spec: TableSpec) -> Region:
+    """The region from the first data row to the end of the file."""
+    return Region(head.source, head.offsets[spec.data_index], head.size, spec.data_index + 1,
+                  head.codec)
 
-    A truncated last line is dropped with a warning (see
-    :func:`~pipeline.ingest.textbody.trim_truncated_tail`).
+
+def parse_rows(
+    region: Region, spec: TableSpec, found: Candidates
+) -> tuple[dict[int, pa.ChunkedArray], int, set[int]]:
+    """Parse the rows of `region` with pyarrow (values split by a decimal comma rejoined).
+
+    Returns
+    -------
+    tuple
+        :func:`~pipeline.ingest.textbody.split_table` of the parsed rows.
     """
-    found = candidates(head, spec, columns)
-    whole = Region(head.path, head.offsets[spec.data_index], head.size, spec.data_index + 1,
-                   head.codec)
-    region, truncated = trim_truncated_tail(whole.read, whole, spec.width, spec.delimiter,
-                                            spec.decimal)
     names = header_columns(spec)[0]
     try:
         table = parse_body(
@@ -197,16 +216,23 @@ def read_contiguous(
         ) from error
     if spec.pairs:
         table = join_comma_pairs(table, region, names)
-        meta.warnings.append(
-            "the decimal comma is also the delimiter: values were rejoined in pairs"
-        )
-    parsed = split_table(table, found.indexes(), len(names))
-    del table
+    return split_table(table, found.indexes(), len(names))
+
+
+def read_contiguous(head: Head, spec: TableSpec, header: RawColumns) -> RawTable:
+    """Read a table whose data rows run from the first data row to the end of the file.
+
+    A truncated last line is dropped with a warning (see
+    :func:`~pipeline.ingest.textbody.trim_truncated_tail`).
+    """
+    whole = body(head, spec)
+    region, truncated = trim_truncated_tail(whole, spec.width, spec.delimiter, spec.decimal)
+    parsed = parse_rows(region, spec, header.candidates)
+    if spec.pairs:
+        header.metadata.warnings.append(PAIRS_WARNING)
     if truncated:
-        meta.warnings.append(
-            f"line {whole.line_of(parsed[1])} is truncated (a half-written last row): dropped"
-        )
-    return raw_table(parsed, region, spec, found, meta)
+        header.metadata.warnings.append(truncated_warning(whole.line_of(parsed[1])))
+    return raw_table(parsed, region, header)
 
 
 @dataclass(frozen=True)
@@ -219,10 +245,15 @@ class TextLayout:
     #: the free-text lines above the table are parsed into the metadata's preamble
     preamble: bool = False
 
+    def header(self, head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawColumns:
+        """The header of a file sniffed as `head` / `spec` in this layout (see
+        :func:`text_header`)."""
+        preamble = parse_preamble(spec.preamble, spec.delimiter) if self.preamble else {}
+        return text_header(head, spec, self.name, preamble, columns)
+
     def read(self, head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTable:
         """Read a file sniffed as `head` / `spec` in this layout (see the module docstring)."""
-        found = parse_preamble(spec.preamble, spec.delimiter) if self.preamble else {}
-        return read_contiguous(head, spec, columns, metadata(head, spec, self.name, found))
+        return read_contiguous(head, spec, self.header(head, spec, columns))
 
 
 #: The delimited layouts, in the order they are tried; the last one matches any table.

@@ -32,14 +32,19 @@ from __future__ import annotations
 import re
 from collections.abc import Mapping
 
-import pyarrow as pa
-
 from pipeline.errors import LayoutError
-from pipeline.ingest.delimited import candidates, header_columns, metadata, raw_table
+from pipeline.ingest.delimited import raw_table, text_header
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.sniff import Head, TableSpec, split_fields
-from pipeline.ingest.textbody import Region, parse_body, split_table, trim_truncated_tail
+from pipeline.ingest.source import BufferSource
+from pipeline.ingest.textbody import (
+    Region,
+    parse_body,
+    split_table,
+    trim_truncated_tail,
+    truncated_warning,
+)
 
 LAYOUT = "mts"
 
@@ -62,38 +67,31 @@ def matches(head: Head, spec: TableSpec) -> bool:
 
 def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTable:
     """Read an MTS cyclic-acquisition export sniffed as `head` / `spec`."""
-    found = candidates(head, spec, columns)
+    header = text_header(head, spec, LAYOUT, parse_preamble(spec.preamble, spec.delimiter), columns)
     start = head.offsets[spec.data_index]
-    data = head.path.read_bytes()[start:]
+    data = head.source.read(start, head.size)
     if not head.ascii_compatible:
         data = data.decode(head.codec, errors="replace").encode("utf-8")
-    blocks = 1 + _check_blocks(head, spec, data)
-    body = _HEADER_LINE.sub(b"", data)
+    header.metadata.preamble["blocks"] = str(1 + _check_blocks(head, spec, data))
+    points = BufferSource(_HEADER_LINE.sub(b"", data), head.name)
     del data
-    kept, truncated = trim_truncated_tail(
-        lambda begin, stop: body[begin:stop], Region(head.path, 0, len(body), 1, "utf-8"),
-        spec.width, spec.delimiter, spec.decimal,
-    )
-    region = Region(head.path, start, head.size, spec.data_index + 1, head.codec, _is_data)
+    kept, truncated = trim_truncated_tail(Region(points, 0, points.size, 1, "utf-8"),
+                                          spec.width, spec.delimiter, spec.decimal)
+    region = Region(head.source, start, head.size, spec.data_index + 1, head.codec, _is_data)
     table = parse_body(
-        pa.BufferReader(pa.py_buffer(body).slice(0, kept.end)),
+        kept.open(),
         region,
-        names=header_columns(spec)[0],
+        names=header.names,
         width=spec.width,
         delimiter=spec.delimiter,
         decimal=spec.decimal,
-        float_columns=found.indexes(),
+        float_columns=header.candidates.indexes(),
     )
-    preamble = parse_preamble(spec.preamble, spec.delimiter)
-    preamble["blocks"] = str(blocks)
-    meta = metadata(head, spec, LAYOUT, preamble)
-    parsed = split_table(table, found.indexes(), spec.width)
+    parsed = split_table(table, header.candidates.indexes(), spec.width)
     del table
     if truncated:
-        meta.warnings.append(
-            f"line {region.line_of(parsed[1])} is truncated (a half-written last row): dropped"
-        )
-    return raw_table(parsed, region, spec, found, meta)
+        header.metadata.warnings.append(truncated_warning(region.line_of(parsed[1])))
+    return raw_table(parsed, region, header)
 
 
 def _check_blocks(head: Head, spec: TableSpec, data: bytes) -> int:
@@ -109,7 +107,7 @@ def _check_blocks(head: Head, spec: TableSpec, data: bytes) -> int:
         if line != names_row:
             raise LayoutError(
                 "a block names other columns than the first block",
-                file=head.path, row=spec.data_index + 1 + data.count(b"\n", 0, match.start()),
+                file=head.name, row=spec.data_index + 1 + data.count(b"\n", 0, match.start()),
                 hint="the export joins different tests: split it into one file per test",
             )
         later += 1

@@ -20,11 +20,11 @@ import re
 import unicodedata
 from collections import Counter
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import pyarrow.csv as pacsv
 
 from pipeline.errors import EmptyFileError, EncodingError, LayoutError
+from pipeline.ingest.source import Source
 from pipeline.ingest.unitparse import looks_like_unit
 
 #: Bytes read to sniff a file.
@@ -57,10 +57,8 @@ class Head:
 
     Attributes
     ----------
-    path : Path
-        The file.
-    size : int
-        Its size in bytes.
+    source : Source
+        The file or buffer (its name is the one messages give).
     encoding : str
         The encoding as reported (``"utf-8-sig"`` when a BOM was found).
     codec : str
@@ -73,13 +71,22 @@ class Head:
         True if the sample is the whole file.
     """
 
-    path: Path
-    size: int
+    source: Source
     encoding: str
     codec: str
     lines: list[str]
     offsets: list[int]
     complete: bool
+
+    @property
+    def name(self) -> str:
+        """The source's name, for messages."""
+        return self.source.name
+
+    @property
+    def size(self) -> int:
+        """The source's length [bytes]."""
+        return self.source.size
 
     @property
     def ascii_compatible(self) -> bool:
@@ -150,7 +157,7 @@ def _line_of(raw: bytes, position: int) -> int:
     return raw.count(b"\n", 0, position) + 1
 
 
-def detect_encoding(raw: bytes, complete: bool, file: Path) -> tuple[str, str, int]:
+def detect_encoding(raw: bytes, complete: bool, file: str) -> tuple[str, str, int]:
     """Find the encoding of a file from its head.
 
     Parameters
@@ -159,8 +166,8 @@ def detect_encoding(raw: bytes, complete: bool, file: Path) -> tuple[str, str, i
         The head sample.
     complete : bool
         True if `raw` is the whole file (otherwise its last line may be cut).
-    file : Path
-        The file, for messages.
+    file : str
+        The file's or buffer's name, for messages.
 
     Returns
     -------
@@ -234,7 +241,7 @@ def _letter_score(raw: bytes, codec: str) -> int | None:
 
 
 def _check_decodes(
-    raw: bytes, bom: int, codec: str, complete: bool, file: Path, *, bom_name: str
+    raw: bytes, bom: int, codec: str, complete: bool, file: str, *, bom_name: str
 ) -> None:
     decoder = codecs.getincrementaldecoder(codec)()
     try:
@@ -247,8 +254,8 @@ def _check_decodes(
         ) from error
 
 
-def read_head(path: Path) -> Head:
-    """Read and decode the head of a text file.
+def read_head(source: Source) -> Head:
+    """Read and decode the head of a text file or buffer.
 
     Raises
     ------
@@ -257,16 +264,14 @@ def read_head(path: Path) -> Head:
     EncodingError
         See :func:`detect_encoding`.
     """
-    size = path.stat().st_size
-    with path.open("rb") as stream:
-        raw = stream.read(HEAD_BYTES)
-    complete = len(raw) == size
+    raw = source.read(0, HEAD_BYTES)
+    complete = len(raw) == source.size
     if not raw.strip():
         raise EmptyFileError(
-            "the file is empty" if size == 0 else "the file holds only blank lines",
-            file=path, hint="the machine wrote no data: export the test again",
+            "the file is empty" if source.size == 0 else "the file holds only blank lines",
+            file=source.name, hint="the machine wrote no data: export the test again",
         )
-    encoding, codec, bom = detect_encoding(raw, complete, path)
+    encoding, codec, bom = detect_encoding(raw, complete, source.name)
     text = codecs.getincrementaldecoder(codec)(errors="replace").decode(raw[bom:], final=complete)
     lines, offsets, position = [], [bom], bom
     for match in _LINE.finditer(text):
@@ -278,11 +283,11 @@ def read_head(path: Path) -> Head:
     if not complete and lines:
         lines.pop()
         offsets.pop()
-    return Head(path, size, encoding, codec, lines, offsets, complete)
+    return Head(source, encoding, codec, lines, offsets, complete)
 
 
 def detect_dialect(
-    lines: list[str], path: Path, delimiters: tuple[str, ...] = DELIMITERS
+    lines: list[str], name: str, delimiters: tuple[str, ...] = DELIMITERS
 ) -> tuple[str, str, int]:
     """Find the delimiter and decimal mark that make the most rows numeric.
 
@@ -293,8 +298,8 @@ def detect_dialect(
     ----------
     lines : list of str
         The head's lines.
-    path : Path
-        The file, for messages.
+    name : str
+        The file's or buffer's name, for messages.
     delimiters : tuple of str
         The delimiters to try, preferred first.
 
@@ -329,12 +334,12 @@ def detect_dialect(
         if not any(_has_two_numbers(line) for line in sample):
             raise EmptyFileError(
                 "no data rows: the file holds only text lines",
-                file=path, row=len(lines) + 1,
+                file=name, row=len(lines) + 1,
                 hint="the machine wrote no measurements: export the test again",
             )
         raise LayoutError(
             "no table of numbers found at the start of the file",
-            file=path,
+            file=name,
             hint="the readers expect rows of numbers separated by ',', ';' or tabs; "
             'give the format in the run sheet (format = "xlsx" or "tdms") if it is not text',
         )
@@ -385,7 +390,7 @@ def _kind(row: list[str], line: str, decimal: str) -> str:
 
 
 def find_table(
-    lines: list[str], path: Path, delimiter: str, decimal: str, width: int
+    lines: list[str], name: str, delimiter: str, decimal: str, width: int
 ) -> TableSpec:
     """Locate the names row, units row and first data row among a head's lines.
 
@@ -418,7 +423,7 @@ def find_table(
     if above < 0 or kinds[above] != "text":
         raise LayoutError(
             "no names row above the first data row",
-            file=path, row=data + 1,
+            file=name, row=data + 1,
             hint="add a header row naming the columns, e.g. 'time [s],force [kN],gauge1 [mm]'",
         )
     names = rows[above]
@@ -429,7 +434,7 @@ def find_table(
     if len(names) > columns:
         raise LayoutError(
             f"the names row has {len(names)} fields but the data rows have {width}",
-            file=path, row=above + 1,
+            file=name, row=above + 1,
             hint="the header and the data do not match: check the delimiter and the export",
         )
     names = names + [""] * (columns - len(names))

@@ -8,12 +8,10 @@ wrong) and to turn a row number into a line number for a warning.
 
 from __future__ import annotations
 
-import mmap
 import re
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
-from pathlib import Path
 
 import numpy as np
 import pyarrow as pa
@@ -22,11 +20,11 @@ import pyarrow.csv as pacsv
 
 from pipeline.errors import LayoutError, ValueParseError
 from pipeline.ingest.sniff import NULL_VALUES, is_missing, is_number, split_fields
+from pipeline.ingest.source import Source, contains, text_lines
 
 #: Bytes of the file's end searched for a truncated last line.
 TAIL_BYTES = 1 << 16
 
-_LINE = re.compile(rb"([^\r\n]*)(\r\n|\r|\n|\Z)")
 _INVALID = re.compile(r"column #(\d+).*invalid value '(.*)'", re.DOTALL)
 #: A number without exponent; group 1 or 2 holds its decimals.
 _PLAIN_NUMBER = {
@@ -42,12 +40,12 @@ def column_label(index: int) -> str:
 
 @dataclass(frozen=True)
 class Region:
-    """A byte range of a text file holding table rows.
+    """A byte range of a text file or buffer holding table rows.
 
     Attributes
     ----------
-    path : Path
-        The file.
+    source : Source
+        The file or buffer.
     start, end : int
         Byte offsets of the first data line and of the end of the rows.
     first_line : int
@@ -59,51 +57,33 @@ class Region:
         default; block headers for layouts that filter them out).
     """
 
-    path: Path
+    source: Source
     start: int
     end: int
     first_line: int
     codec: str
     is_data: Callable[[str], bool] | None = None
 
+    @property
+    def name(self) -> str:
+        """The file's or buffer's name, for messages."""
+        return self.source.name
+
     def lines(self) -> Iterator[tuple[int, str]]:
         """``(line number, text)`` of every data line, in order (Python speed: error path)."""
         keep = self.is_data or bool
-        with self.path.open("rb") as stream:
-            # not closed explicitly: the match iterator may outlive an early-closed generator
-            view = mmap.mmap(stream.fileno(), 0, access=mmap.ACCESS_READ)
-        if self.codec.startswith("utf-16"):
-            text = view[self.start : self.end].decode(self.codec, errors="replace")
-            matches = (
-                (match.group(1).encode("utf-8"), match)
-                for match in re.finditer(r"([^\r\n]*)(\r\n|\r|\n|\Z)", text)
-            )
-            codec = "utf-8"
-        else:
-            matches = (
-                (match.group(1), match) for match in _LINE.finditer(view, self.start, self.end)
-            )
-            codec = self.codec
-        for number, (raw, match) in enumerate(matches, start=self.first_line):
-            if not match.group(0):
-                return
-            line = raw.decode(codec, errors="replace")
+        lines = text_lines(self.source, self.start, self.end, self.codec)
+        for number, line in enumerate(lines, start=self.first_line):
             if keep(line):
                 yield number, line
 
     def read(self, start: int, stop: int) -> bytes:
-        """The file's bytes from `start` to `stop`."""
-        with self.path.open("rb") as stream:
-            stream.seek(start)
-            return stream.read(stop - start)
+        """The source's bytes from `start` to `stop`."""
+        return self.source.read(start, stop)
 
     def open(self) -> pa.NativeFile:
-        """A pyarrow stream of the region's bytes (read in blocks, not mapped)."""
-        if self.end == self.path.stat().st_size:
-            stream = pa.OSFile(str(self.path))
-            stream.seek(self.start)
-            return stream
-        return pa.BufferReader(pa.py_buffer(self.read(self.start, self.end)))
+        """A pyarrow stream of the region's bytes (read in blocks, not copied whole)."""
+        return self.source.stream(self.start, self.end)
 
     def line_of(self, row: int) -> int | None:
         """1-based line number of table row `row` (0-based), or None if past the end."""
@@ -116,20 +96,19 @@ class Region:
 
     @cached_property
     def _has_blank_lines(self) -> bool:
-        with self.path.open("rb") as stream, mmap.mmap(
-            stream.fileno(), 0, access=mmap.ACCESS_READ
-        ) as view:
-            end = self.end
-            while end > self.start and view[end - 1 : end] in (b"\r", b"\n", b"\x00"):
-                end -= 1
-            return any(
-                view.find(pattern.encode(self.codec), self.start, end) >= 0
-                for pattern in ("\n\n", "\r\n\r\n", "\r\r")
-            )
+        end = self.end
+        while end > self.start:
+            tail = self.read(max(self.start, end - TAIL_BYTES), end)
+            kept = tail.rstrip(b"\r\n\x00")
+            end -= len(tail) - len(kept)
+            if kept:
+                break
+        patterns = tuple(pattern.encode(self.codec) for pattern in ("\n\n", "\r\n\r\n", "\r\r"))
+        return contains(self.source, patterns, self.start, end)
 
 
 def trim_truncated_tail(
-    read: Callable[[int, int], bytes], region: Region, width: int, delimiter: str, decimal: str
+    region: Region, width: int, delimiter: str, decimal: str
 ) -> tuple[Region, bool]:
     """Cut a truncated last line off the region.
 
@@ -142,9 +121,6 @@ def trim_truncated_tail(
 
     Parameters
     ----------
-    read : callable
-        ``read(start, stop)`` returns the bytes between two offsets of the
-        region's text (:meth:`Region.read` for a file).
     region : Region
         The rows.
     width : int
@@ -163,7 +139,7 @@ def trim_truncated_tail(
     start = max(region.start, region.end - TAIL_BYTES)
     if not single_byte:
         start += (start - region.start) % 2
-    raw = read(start, region.end)
+    raw = region.read(start, region.end)
     text = raw.decode("latin-1" if single_byte else region.codec, errors="replace")
     body = text.rstrip("\r\n")
     lines = re.split(r"\r\n|\r|\n", body)
@@ -175,8 +151,12 @@ def trim_truncated_tail(
         return region, False
     kept = body[: len(body) - len(lines[-1])]
     end = start + (len(kept) if single_byte else len(kept.encode(region.codec)))
-    return Region(region.path, region.start, end, region.first_line, region.codec,
-                  region.is_data), True
+    return replace(region, end=end), True
+
+
+def truncated_warning(line: int | None) -> str:
+    """The warning of a half-written last row at `line`, dropped."""
+    return f"line {line} is truncated (a half-written last row): dropped"
 
 
 def _is_half_written(last: list[str], rows: list[list[str]], width: int, decimal: str) -> bool:
@@ -312,7 +292,7 @@ def locate_defect(
         if len(fields) != width:
             return LayoutError(
                 f"the row has {len(fields)} fields where the data rows have {width}",
-                file=region.path, row=number,
+                file=region.name, row=number,
                 hint="a row is broken, or two tables were joined: fix or delete the line",
             )
         for index in sorted(float_columns):
@@ -324,7 +304,7 @@ def locate_defect(
         return _bad_cell(region, names, None, index, reported.group(2), decimal)
     return LayoutError(
         f"the table cannot be read: {error}",
-        file=region.path, row=region.first_line,
+        file=region.name, row=region.first_line,
         hint="check the export; give columns and units in the run sheet if detection failed",
     )
 
@@ -341,7 +321,7 @@ def _bad_cell(
     )
     return ValueParseError(
         f"{cell.strip()[:40]!r} is not a number",
-        file=region.path, row=line, column=names[index] or f"#{index + 1}", hint=hint,
+        file=region.name, row=line, column=names[index] or f"#{index + 1}", hint=hint,
     )
 
 
@@ -422,7 +402,7 @@ def join_comma_pairs(table: pa.Table, region: Region, names: list[str]) -> pa.Ta
             raise LayoutError(
                 "the decimal comma is also the delimiter and this value cannot be split "
                 "unambiguously",
-                file=region.path, row=region.line_of(row), column=names[index] or None,
+                file=region.name, row=region.line_of(row), column=names[index] or None,
                 hint="export with ';' or tab as delimiter, or with quoted numbers",
             )
         joined[column_label(index)] = pc.cast(

@@ -20,7 +20,6 @@ from __future__ import annotations
 import math
 import numbers
 from collections.abc import Mapping
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -31,6 +30,7 @@ from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.roles import display_name, find_candidates
 from pipeline.ingest.sniff import detect_dialect, find_table, is_missing, is_number
+from pipeline.ingest.source import Source
 from pipeline.ingest.table import TableMetadata
 
 LAYOUT = "xlsx"
@@ -58,19 +58,20 @@ def _sniffed(text: str) -> str:
     return text.replace(",", ".") if is_number(text, ",") else text
 
 
-def _unreadable(path: Path, error: Exception) -> LayoutError:
+def _unreadable(name: str, error: Exception) -> LayoutError:
     """The error for a workbook openpyxl cannot read."""
     return LayoutError(
         f"not a readable .xlsx workbook ({type(error).__name__}: {error})",
-        file=path, hint="open it in a spreadsheet program and save it again as .xlsx",
+        file=name, hint="open it in a spreadsheet program and save it again as .xlsx",
     )
 
 
-def _open_sheet(path: Path, sheet: str | int | None) -> tuple[pd.DataFrame, str]:
+def _open_sheet(source: Source, sheet: str | int | None) -> tuple[pd.DataFrame, str]:
+    file = source.name
     try:
-        workbook = pd.ExcelFile(path, engine="openpyxl")
+        workbook = pd.ExcelFile(source.file(), engine="openpyxl")
     except Exception as error:  # openpyxl / zipfile raise many kinds on a broken file
-        raise _unreadable(path, error) from error
+        raise _unreadable(file, error) from error
     with workbook:
         names = workbook.sheet_names
         wanted = 0 if sheet is None else sheet
@@ -79,23 +80,23 @@ def _open_sheet(path: Path, sheet: str | int | None) -> tuple[pd.DataFrame, str]
         ):
             raise LayoutError(
                 f"no sheet {wanted!r} in the workbook",
-                file=path, hint="the workbook has the sheets: " + ", ".join(map(repr, names)),
+                file=file, hint="the workbook has the sheets: " + ", ".join(map(repr, names)),
             )
         name = names[wanted] if isinstance(wanted, int) else wanted
         try:
             frame = pd.read_excel(workbook, sheet_name=name, header=None)
         except Exception as error:  # the sheet's XML is parsed only now, and may be broken
-            raise _unreadable(path, error) from error
+            raise _unreadable(file, error) from error
     frame = frame.dropna(axis=1, how="all")
     if frame.empty:
         raise EmptyFileError(
-            f"sheet {name!r} is empty", file=path,
+            f"sheet {name!r} is empty", file=file,
             hint="give the sheet holding the data in the run sheet (sheet = \"...\")",
         )
     return frame, name
 
 
-def _to_float(cells: pd.Series, path: Path, column: str) -> np.ndarray:
+def _to_float(cells: pd.Series, file: str, column: str) -> np.ndarray:
     """A column of cells as float64; raises on a cell that is not a number.
 
     Numbers stored as text may use either decimal mark (``"1,5"`` or ``"1.5"``).
@@ -111,21 +112,21 @@ def _to_float(cells: pd.Series, path: Path, column: str) -> np.ndarray:
             continue
         raise ValueParseError(
             f"{text[:40]!r} is not a number",
-            file=path, row=int(cells.index[position]) + 1, column=column,
+            file=file, row=int(cells.index[position]) + 1, column=column,
             hint="fix or delete the cell (missing values may be left empty)",
         )
     return values
 
 
-def read(
-    path: Path, sheet: str | int | None = None, columns: Mapping | None = None
+def parse(
+    source: Source, sheet: str | int | None = None, columns: Mapping | None = None
 ) -> RawTable:
     """Read the table of one sheet of an ``.xlsx`` workbook.
 
     Parameters
     ----------
-    path : Path
-        The workbook.
+    source : Source
+        The workbook (a file or a buffer).
     sheet : str or int, optional
         Sheet name or 0-based index; the first sheet by default.
     columns : mapping, optional
@@ -135,27 +136,28 @@ def read(
     -------
     RawTable
     """
-    frame, sheet_name = _open_sheet(path, sheet)
+    file = source.name
+    frame, sheet_name = _open_sheet(source, sheet)
     cells = [[_text(value) for value in row]
              for row in frame.head(HEAD_ROWS).itertuples(index=False)]
     lines = ["\t".join(_sniffed(text) for text in row) for row in cells]
-    _, point, width = detect_dialect(lines, path, delimiters=("\t",))
-    spec = find_table(lines, path, "\t", point, width)
+    _, point, width = detect_dialect(lines, file, delimiters=("\t",))
+    spec = find_table(lines, file, "\t", point, width)
     decimal = "," if any(_sniffed(text) != text for row in cells[spec.data_index:]
                          for text in row) else "."
     preamble = [line for line in ("\t".join(row) for row in cells[: spec.header_index])
                 if line.strip()]
     names, units = header_columns(spec)
-    found = find_candidates(names, units, columns, file=path, header_line=spec.header_index + 1)
+    found = find_candidates(names, units, columns, file=file, header_line=spec.header_index + 1)
     body = frame.iloc[spec.data_index:, : len(names)].dropna(axis=0, how="all")
     if body.empty:
         raise EmptyFileError(
             f"sheet {sheet_name!r} has a header but no data rows",
-            file=path, row=spec.data_index + 1, hint="the sheet holds no measurements",
+            file=file, row=spec.data_index + 1, hint="the sheet holds no measurements",
         )
     sheet_rows = body.index.to_numpy() + 1
     arrays = {
-        index: _to_float(body.iloc[:, index], path, display_name(names, index))
+        index: _to_float(body.iloc[:, index], file, display_name(names, index))
         for index in sorted(found.indexes())
     }
     empty = {
@@ -163,7 +165,7 @@ def read(
         if index not in arrays and body.iloc[:, index].isna().all()
     }
     meta = TableMetadata(
-        file=str(path),
+        file=file,
         layout=LAYOUT,
         decimal=decimal,
         preamble=parse_preamble(preamble, "\t"),

@@ -1,10 +1,25 @@
-"""Fixtures of the reader tests: tiny files written on the fly, the real exports."""
+"""Fixtures of the reader tests: tiny files written on the fly, a corpus of every layout.
+
+The corpus (:func:`corpus`) holds an engagement log (time, force, angle) in
+every delimited layout, dialect, encoding and line end, with the defects the
+readers handle (blank lines, quoted cells and a trailing delimiter, a sentinel,
+a NaN run, a time gap, a truncated last line, a decimal comma that is also the
+delimiter), an MTS export, a workbook and a TDMS file; the buffer and row-range
+tests compare each reader with ``read_table`` on all of them.
+"""
 
 from __future__ import annotations
 
+import io
 from pathlib import Path
 
+import numpy as np
+import openpyxl
 import pytest
+from nptdms import ChannelObject, GroupObject, TdmsWriter
+
+#: Data rows of each delimited log of the corpus.
+ROWS = 37
 
 
 @pytest.fixture
@@ -18,3 +33,139 @@ def write(tmp_path):
 
     return _write
 
+
+def _cells(rows: int, gaps: bool) -> list[tuple[str, str, str]]:
+    """Time [s], force [kN] and angle [deg] cells: a time gap after row 20, a sentinel in
+    row 11 and, with `gaps`, no force in rows 5 to 7."""
+    cells = []
+    for row in range(rows):
+        force = f"{1.5 + row % 7 * 0.25:.2f}"
+        if row == 11:
+            force = "-1000000.0"
+        elif gaps and 5 <= row < 8:
+            force = ""
+        cells.append((f"{row * 0.005 + (0.5 if row > 20 else 0.0):.3f}", force, f"{row * 1.5:.1f}"))
+    return cells
+
+
+def _delimited(
+    *,
+    delimiter: str = ",",
+    decimal: str = ".",
+    newline: str = "\n",
+    names: tuple[str, ...] = ("time [s]", "force [kN]", "angle [deg]"),
+    above: tuple[str, ...] = (),
+    units_row: str | None = None,
+    quote: bool = False,
+    row_end: str = "",
+    blank_every: int = 0,
+    gaps: bool = True,
+    tail: str = "",
+) -> str:
+    """An engagement log in one delimited dialect: `above` are the lines above the names
+    row, `units_row` the line below it, `row_end` ends each data row (a trailing
+    delimiter), `tail` follows the last line."""
+    lines = [*above, delimiter.join(names), *([units_row] if units_row is not None else [])]
+    for row, cells in enumerate(_cells(ROWS, gaps)):
+        cells = [cell.replace(".", decimal) for cell in cells]
+        lines.append(delimiter.join(f'"{cell}"' if quote else cell for cell in cells) + row_end)
+        if blank_every and row % blank_every == blank_every - 1:
+            lines.append("")
+    return newline.join(lines) + newline + tail
+
+
+POLISH = ("czas [s]", "siła [kN]", "kąt [deg]")
+
+#: file name -> (text, encoding) of the delimited logs of the corpus.
+TEXT_LOGS = {
+    "plain_lf.csv": (_delimited(), "utf-8"),
+    "plain_crlf.csv": (_delimited(newline="\r\n"), "utf-8"),
+    "plain_cr.csv": (_delimited(newline="\r"), "utf-8"),
+    "blank_lines.csv": (_delimited(newline="\r\n", blank_every=4), "utf-8"),
+    "quoted_trailing_delimiter.csv": (_delimited(quote=True, row_end=","), "utf-8"),
+    "truncated.csv": (_delimited(tail="9.999,1.2"), "utf-8"),
+    "european.csv": (_delimited(delimiter=";", decimal=",", newline="\r\n", names=POLISH),
+                     "cp1250"),
+    "european_truncated.csv": (_delimited(delimiter=";", decimal=",", names=POLISH,
+                                          tail="9,999;1,25;0,"), "cp1250"),
+    "tab_utf16.txt": (_delimited(delimiter="\t", decimal=",", newline="\r\n",
+                                 names=("Zeit [s]", "Kraft [kN]", "Winkel [deg]")), "utf-16"),
+    "utf16_be_blank_lines.txt": (_delimited(delimiter=";", decimal=",", blank_every=5),
+                                 "utf-16-be"),
+    "bom.csv": (_delimited(delimiter=";", decimal=","), "utf-8-sig"),
+    "comma_pairs.csv": (_delimited(decimal=",", gaps=False), "utf-8"),
+    "machine_export.csv": (_delimited(above=('Machine : Rig 2,"E-7"', ""),
+                                      names=("Time", "Load", "Angle", ""),
+                                      units_row="(sec),(kN),(deg),", row_end=",",
+                                      newline="\r\n"), "latin-1"),
+}
+
+
+def _mts(blocks: int = 3, points: int = 9) -> str:
+    """An MTS TestWare cyclic-acquisition export (Spanish, tab, decimal comma, CRLF)."""
+    lines = ["MTS***|MPT|**|*|*", ""]
+    for block in range(blocks):
+        lines += [f"Adquisición cíclica\t\t\tTiempo\t{10 * block},0\tSec",
+                  f"Puntos: \t{points}", "Tiempo\tFuerza\tÁngulo", "Sec\tkgf\tdeg"]
+        lines += [f"{10 * block + point / 100:.2f}\t{point},5\t{point * 3},0".replace(".", ",")
+                  for point in range(points)]
+        lines.append("")
+    return "\r\n".join(lines[:-1])
+
+
+def _workbook() -> bytes:
+    """An engagement log as a workbook: a preamble, a units row, empty cells."""
+    book = openpyxl.Workbook()
+    sheet = book.active
+    for row in (["Rig", "E-7"], [], ["Time", "Force", "Angle"], ["s", "kN", "deg"]):
+        sheet.append(row)
+    for time, force, angle in _cells(ROWS, gaps=True):
+        sheet.append([float(time), float(force) if force else None, float(angle)])
+    stream = io.BytesIO()
+    book.save(stream)
+    return stream.getvalue()
+
+
+def _write_tdms(path: Path, channels: dict[str, tuple[np.ndarray, dict]], segments: int = 1
+                ) -> Path:
+    """Write channels (name -> (data, properties)) of group ``Rig`` in `segments` segments."""
+    with TdmsWriter(path) as writer:
+        for part in range(segments):
+            writer.write_segment([GroupObject("Rig")] + [
+                ChannelObject("Rig", name, np.array_split(data, segments)[part],
+                              properties=properties)
+                for name, (data, properties) in channels.items()
+            ])
+    return path
+
+
+#: Waveform properties of a TDMS force channel in kN (time from them).
+WAVE = {"wf_increment": 5e-5, "wf_start_offset": 0.25, "unit_string": "kN"}
+
+
+@pytest.fixture
+def tdms_writer():
+    """``write(path, {name: (data, properties)}, segments=1)``: a TDMS file of group ``Rig``."""
+    return _write_tdms
+
+
+def _engagement_tdms(path: Path) -> Path:
+    """A TDMS engagement log of 1000 samples in 4 segments: force (a sentinel at sample 17,
+    time from its waveform properties) and wheel angle."""
+    force = 1.5 + 0.25 * np.sin(np.arange(1000) / 7.0)
+    force[17] = -1e6
+    return _write_tdms(path, {"Branch tension": (force, WAVE),
+                              "Wheel angle": (np.arange(1000) * 0.01, {"unit_string": "rad"})},
+                       segments=4)
+
+
+@pytest.fixture(scope="session")
+def corpus(tmp_path_factory) -> dict[Path, dict]:
+    """Every log of the corpus, written once: path -> ``read_table`` options."""
+    folder = tmp_path_factory.mktemp("corpus")
+    for name, (text, encoding) in TEXT_LOGS.items():
+        (folder / name).write_bytes(text.encode(encoding))
+    (folder / "cyclic.dat").write_bytes(_mts().encode("latin-1"))
+    (folder / "book.xlsx").write_bytes(_workbook())
+    _engagement_tdms(folder / "rig.tdms")
+    return {path: {"kind": "engagement"} for path in sorted(folder.iterdir())}

@@ -12,6 +12,12 @@ from pipeline.ingest.sniff import (
     is_number,
     read_head,
 )
+from pipeline.ingest.source import BufferSource
+
+
+def head_of(path):
+    """The sniffed head of a file, read as a buffer."""
+    return read_head(BufferSource(path.read_bytes(), str(path)))
 
 POLISH = "czas [s];siła [kN];wydłużenie [mm]\r\n0,0;1,5;0,01\r\n0,1;1,6;0,02\r\n"
 SPANISH = "Tiempo\tFuerza\tDesplazamiento\r\nSec\tkgf\tmm\r\n0,0\t1,5\t0,01\r\n0,1\t1,6\t0,02\r\n"
@@ -29,14 +35,14 @@ SPANISH = "Tiempo\tFuerza\tDesplazamiento\r\nSec\tkgf\tmm\r\n0,0\t1,5\t0,01\r\n0
     ],
 )
 def test_encoding(write, text, encoding, expected):
-    head = read_head(write("f.csv", text, encoding))
+    head = head_of(write("f.csv", text, encoding))
     assert head.encoding == expected
     assert head.lines[0] == text.splitlines()[0]
 
 
 def test_offsets_are_bytes_of_line_starts(write):
     path = write("f.csv", POLISH, "utf-16")
-    head = read_head(path)
+    head = head_of(path)
     raw = path.read_bytes()
     assert raw[head.offsets[1] : head.offsets[2]].decode("utf-16-le") == "0,0;1,5;0,01\r\n"
 
@@ -44,7 +50,7 @@ def test_offsets_are_bytes_of_line_starts(write):
 def test_long_file_head_drops_the_cut_line(write):
     line = "1.5,2.5,3.5\n"
     header = "a [s],b [kN],c [mm]\n"
-    head = read_head(write("f.csv", header + line * (HEAD_BYTES // len(line) + 50)))
+    head = head_of(write("f.csv", header + line * (HEAD_BYTES // len(line) + 50)))
     assert not head.complete
     assert all(text in ("1.5,2.5,3.5",) for text in head.lines[1:])
     assert head.offsets[-1] % len(line) == len(header) % len(line)
@@ -52,19 +58,19 @@ def test_long_file_head_drops_the_cut_line(write):
 
 def test_binary_file(write):
     with pytest.raises(EncodingError, match="binary"):
-        read_head(write("f.csv", b"\x00\x01\x02\x03" * 100))
+        head_of(write("f.csv", b"\x00\x01\x02\x03" * 100))
 
 
 def test_bom_contradicted(write):
     with pytest.raises(EncodingError, match="byte-order mark") as caught:
-        read_head(write("f.csv", codecs.BOM_UTF8 + POLISH.encode("cp1250")))
+        head_of(write("f.csv", codecs.BOM_UTF8 + POLISH.encode("cp1250")))
     assert caught.value.row == 1
 
 
 @pytest.mark.parametrize(("content", "message"), [(b"", "empty"), (b"\r\n \n", "blank")])
 def test_empty(write, content, message):
     with pytest.raises(EmptyFileError, match=message):
-        read_head(write("f.csv", content))
+        head_of(write("f.csv", content))
 
 
 @pytest.mark.parametrize(

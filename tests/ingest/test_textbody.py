@@ -4,12 +4,14 @@ import pyarrow as pa
 import pytest
 
 from pipeline.errors import LayoutError
+from pipeline.ingest.source import BufferSource
 from pipeline.ingest.textbody import Region, join_comma_pairs, parse_body, trim_truncated_tail
 
 
 def region_of(path, codec="utf-8", first_line=2, start=None):
     start = len("h,h\n".encode(codec)) if start is None else start
-    return Region(path, start, path.stat().st_size, first_line, codec)
+    source = BufferSource(path.read_bytes(), str(path))
+    return Region(source, start, source.size, first_line, codec)
 
 
 def test_line_of_contiguous_and_with_blank_lines(write):
@@ -32,7 +34,7 @@ def test_line_of_utf16(write):
 def test_trim_truncated_tail(write, tail, cut):
     path = write("t.csv", "h,h\n1,2\n3,4\n" + tail)
     region = region_of(path)
-    trimmed, truncated = trim_truncated_tail(region.read, region, 2, ",", ".")
+    trimmed, truncated = trim_truncated_tail(region, 2, ",", ".")
     assert truncated is cut
     assert trimmed.end == (path.stat().st_size - len(tail) if cut else region.end)
 
@@ -53,13 +55,13 @@ def test_trim_truncated_tail(write, tail, cut):
 def test_trim_number_cut_short(write, rows, tail, cut):
     path = write("t.csv", "h,h\n" + rows + tail)
     region = region_of(path)
-    assert trim_truncated_tail(region.read, region, 2, ",", ".")[1] is cut
+    assert trim_truncated_tail(region, 2, ",", ".")[1] is cut
 
 
 def test_trailing_empty_column_without_line_end_is_kept(write):
     path = write("t.csv", "h,h,h\n1,2,\n3,4,")
     region = region_of(path, start=len("h,h,h\n"))
-    assert trim_truncated_tail(region.read, region, 3, ",", ".")[1] is False
+    assert trim_truncated_tail(region, 3, ",", ".")[1] is False
 
 
 def test_join_comma_pairs(write):

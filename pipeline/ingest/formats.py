@@ -1,0 +1,116 @@
+"""Which reader reads a file or buffer: its format, then its text layout.
+
+The format comes from the first bytes (zip magic: ``.xlsx``; ``TDSm``:
+TDMS), then from the name's suffix; anything else is delimited text, whose
+layout is recognised from its sniffed head (:data:`TEXT_LAYOUTS`, tried in
+order). :func:`~pipeline.ingest.read_table`, :func:`~pipeline.ingest.parse_table`
+and :func:`~pipeline.ingest.open_log` all choose their reader here.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import PurePath
+
+from pipeline.errors import LayoutError
+from pipeline.ingest import canonical, delimited, mts, tdms, xlsx
+from pipeline.ingest.raw import RawTable
+from pipeline.ingest.sniff import Head, TableSpec, detect_dialect, find_table, read_head
+from pipeline.ingest.source import Source
+
+#: Text layouts, in the order they are tried on a file.
+TEXT_LAYOUTS = {mts.LAYOUT: mts, **{layout.name: layout for layout in delimited.LAYOUTS}}
+
+#: Values of ``format``: auto-detection, a file format, or one text layout.
+FORMATS = ("auto", "csv", "xlsx", "tdms", *TEXT_LAYOUTS)
+
+_MAGIC = {b"PK\x03\x04": "xlsx", b"TDSm": "tdms"}
+_OLD_EXCEL = b"\xd0\xcf\x11\xe0"
+_SUFFIXES = {".xlsx": "xlsx", ".xlsm": "xlsx", ".tdms": "tdms"}
+
+
+def check_options(kind: str, format: str) -> None:
+    """Raise ValueError for a run kind or format the readers do not know."""
+    if format not in FORMATS:
+        raise ValueError(f"format must be one of {FORMATS}, not {format!r}")
+    if kind not in canonical.REQUIRED:
+        raise ValueError(f"kind must be one of {tuple(canonical.REQUIRED)}, not {kind!r}")
+
+
+def format_of(source: Source) -> str:
+    """``"xlsx"``, ``"tdms"`` or ``"csv"`` from the first bytes, then the name's suffix.
+
+    Raises
+    ------
+    LayoutError
+        For an old binary Excel file (``.xls``).
+    """
+    magic = source.read(0, 4)
+    suffix = PurePath(source.name).suffix.lower()
+    if magic == _OLD_EXCEL or suffix == ".xls":
+        raise LayoutError(
+            "old binary Excel files (.xls) are not read",
+            file=source.name, hint="save the workbook as .xlsx, or export the sheet as CSV",
+        )
+    return _MAGIC.get(magic, _SUFFIXES.get(suffix, "csv"))
+
+
+@dataclass(frozen=True)
+class Sniffed:
+    """The reader chosen for a file: ``"xlsx"``, ``"tdms"`` or a text layout.
+
+    Attributes
+    ----------
+    layout : str
+        A name of :data:`FORMATS` other than ``"auto"`` and ``"csv"``.
+    head, spec : Head and TableSpec, or None
+        The sniffed head and table of a text file.
+    """
+
+    layout: str
+    head: Head | None = None
+    spec: TableSpec | None = None
+
+
+def sniff(source: Source, format: str = "auto") -> Sniffed:
+    """Choose the reader of `source`, forced by `format` (a value of :data:`FORMATS`).
+
+    Raises
+    ------
+    IngestError
+        If the file is old Excel, empty, binary text, or holds no table.
+    """
+    layout = format_of(source) if format == "auto" else format
+    if layout in ("xlsx", "tdms"):
+        return Sniffed(layout)
+    head = read_head(source)
+    delimiter, decimal, width = detect_dialect(head.lines, source.name)
+    spec = find_table(head.lines, source.name, delimiter, decimal, width)
+    if layout == "csv":
+        layout = next(name for name, reader in TEXT_LAYOUTS.items()
+                      if reader.matches(head, spec))
+    return Sniffed(layout, head, spec)
+
+
+def read_raw(
+    source: Source, sniffed: Sniffed, columns: Mapping | None, sheet: str | int | None
+) -> RawTable:
+    """Read the whole of `source` with the reader `sniffed` chose.
+
+    Parameters
+    ----------
+    source : Source
+        The file or buffer.
+    sniffed : Sniffed
+        Its :func:`sniff`.
+    columns : mapping, optional
+        Run-sheet ``columns``.
+    sheet : str or int, optional
+        Sheet of an ``.xlsx`` workbook.
+    """
+    if sniffed.layout == "xlsx":
+        return xlsx.parse(source, sheet, columns)
+    if sniffed.layout == "tdms":
+        return tdms.parse(source, columns)
+    return TEXT_LAYOUTS[sniffed.layout].read(sniffed.head, sniffed.spec, columns)

@@ -1,0 +1,91 @@
+"""parse_table: every reader on bytes in memory gives what read_table gives on the file."""
+
+from dataclasses import asdict
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+from pipeline.errors import EmptyFileError, IngestError, LayoutError
+from pipeline.ingest import parse_table, read_table
+
+BAD = Path(__file__).parents[1] / "data" / "bad"
+#: Real exports and the options they need (see tests/ingest/test_realdata.py).
+REALDATA_OPTIONS = {"EPFL-ENAC__CCFatiguePlatform__TST_2021-10_FA_22.csv":
+                    {"units": {"force": "kN", "gauges": "mm"}}}
+
+
+def outcome(read, *args, **options):
+    """``(table, metadata as a dict without its file)`` of a read, or its error's fields."""
+    try:
+        table, meta = read(*args, **options)
+    except IngestError as error:
+        return type(error), error.file, (error.message, error.row, error.column, error.hint)
+    return table, meta.file, {**asdict(meta), "file": None}
+
+
+def assert_buffer_reads_as_file(path, **options):
+    """parse_table of the file's bytes equals read_table of the file, but for the name."""
+    name = f"upload of {path.name}"
+    from_buffer = outcome(parse_table, path.read_bytes(), name=name, **options)
+    from_file = outcome(read_table, path, **options)
+    assert from_buffer[1] == name and from_file[1] == str(path)
+    if isinstance(from_file[0], pd.DataFrame):
+        pd.testing.assert_frame_equal(from_buffer[0], from_file[0], check_exact=True,
+                                      obj=path.name)
+    else:
+        assert from_buffer[0] is from_file[0], path.name
+    assert from_buffer[2] == from_file[2], path.name
+
+
+def test_every_layout(corpus):
+    for path, options in corpus.items():
+        assert_buffer_reads_as_file(path, **options)
+
+
+def test_broken_files():
+    for path in sorted(BAD.iterdir()):
+        assert_buffer_reads_as_file(path)
+
+
+@pytest.mark.realdata
+def test_real_exports(realdata):
+    for path in sorted(realdata.glob("*.*")):
+        if path.suffix != ".md":
+            assert_buffer_reads_as_file(path, **REALDATA_OPTIONS.get(path.name, {}))
+
+
+def test_errors_name_the_buffer():
+    with pytest.raises(EmptyFileError) as caught:
+        parse_table(b"")
+    assert caught.value.file == "<buffer>"
+    with pytest.raises(LayoutError, match="no names row") as caught:
+        parse_table(b"1,2\n3,4\n", name="upload.csv")
+    assert (caught.value.file, caught.value.row) == ("upload.csv", 1)
+    assert str(caught.value).startswith("upload.csv, line 1: ")
+
+
+def test_the_name_suffix_counts_as_a_file_suffix():
+    with pytest.raises(LayoutError, match=r"\.xls"):
+        parse_table(b"time [s],force [kN]\n0,1\n", name="old.xls")
+    with pytest.raises(LayoutError, match="TDMS") as caught:
+        parse_table(b"time [s],force [kN]\n0,1\n", name="log.tdms")
+    assert caught.value.file == "log.tdms"
+    _, meta = parse_table(b"time [s],force [kN],gauge [mm]\n0,1,2\n", name="log.dat")
+    assert meta.layout == "plain_csv"
+
+
+def test_options_are_checked():
+    with pytest.raises(ValueError, match="format"):
+        parse_table(b"t,f\n1,2\n", format="json")
+    with pytest.raises(ValueError, match="kind"):
+        parse_table(b"t,f\n1,2\n", kind="fatigue")
+
+
+def test_bytes_like_buffers(corpus):
+    path = next(path for path in corpus if path.name == "european.csv")
+    whole, _ = read_table(path, kind="engagement")
+    content = path.read_bytes()
+    for buffer in (bytearray(content), memoryview(content)):
+        table, _ = parse_table(buffer, kind="engagement")
+        pd.testing.assert_frame_equal(table, whole, check_exact=True)
