@@ -61,12 +61,13 @@ from pipeline.runs import (
 from pipeline.runsheet import ChainDef, RunDef, RunSheet, load_run_sheet
 from pipeline.store import layout
 from pipeline.store.fingerprint import code_fingerprint
+from pipeline.store.freshness import HashCache, forget_rerun
+from pipeline.store.layout import PROCESSED_FOLDER, RAW_FOLDER, project_root
 from pipeline.store.lock import campaign_lock, remove_stale_temporaries
 from pipeline.store.netcdf import (
     provenance_attrs,
     read_attrs,
     read_dataset,
-    sha256_of,
     write_atomic,
     write_text_atomic,
 )
@@ -77,8 +78,6 @@ if TYPE_CHECKING:
 
 #: Name of the attribute holding the key of the inputs a file was made from.
 INPUT_KEY = "input_key"
-#: The folder holding the campaigns' raw files, and the one holding their outputs.
-RAW_FOLDER, PROCESSED_FOLDER = "raw", "processed"
 #: The ``[campaign]`` fields a run's dataset records (its provenance): the only ones in
 #: a run's input key, so that editing the title or the band redoes no run.
 RUN_CAMPAIGN_FIELDS = {"id", "machine", "synthetic"}
@@ -115,6 +114,7 @@ class CampaignResult:
     reused: list[str] = field(default_factory=list)  #: runs whose stored result was current
     removed: list[str] = field(default_factory=list)  #: stale run files deleted
     warnings: dict[str, list[str]] = field(default_factory=dict)  #: per run
+    inputs: list[Path] = field(default_factory=list)  #: the files the outputs were made from
 
     @property
     def implausible(self) -> list[str]:
@@ -137,19 +137,6 @@ class _Plan:
     raw_sha256: str
     E0: float | None  #: chain stiffness of an engagement run [N]
     key: str
-
-
-def project_root(campaign_folder: Path) -> Path:
-    """The project folder of a campaign: the parent of the ``raw/`` folder holding it.
-
-    A campaign outside any ``raw/`` folder belongs to the current folder's
-    project (the current folder, or the parent of the ``raw/`` folder it lies in).
-    """
-    for folder in (Path(campaign_folder).resolve(), Path.cwd().resolve()):
-        for parent in (folder, *folder.parents):
-            if parent.name.casefold() == RAW_FOLDER:
-                return parent.parent
-    return Path.cwd().resolve()
 
 
 def default_output(campaign: RunSheet | str | Path) -> Path:
@@ -175,8 +162,8 @@ def _digest(document) -> str:
     return hashlib.sha256(text.encode()).hexdigest()
 
 
-def _plan(sheet: RunSheet, run: RunDef, output: Path) -> _Plan:
-    raw_sha256 = sha256_of(existing_run_file(sheet, run))
+def _plan(sheet: RunSheet, run: RunDef, output: Path, hashes: HashCache) -> _Plan:
+    raw_sha256 = hashes.sha256(existing_run_file(sheet, run))
     E0 = chain_stiffness_for(sheet, run, output) if run.kind == "engagement" else None
     key = _digest({
         "raw_sha256": raw_sha256, "entry": sheet.entries[run.id], "E0": E0,
@@ -511,6 +498,7 @@ def process_campaign(
     debug: bool = False,
     force: bool = False,
     client: Client | None = None,
+    rehash: bool = False,
 ) -> CampaignResult:
     """Process the runs of a campaign whose inputs changed, and write its results.
 
@@ -529,6 +517,9 @@ def process_campaign(
         Redo every run, the summary and the report, changed or not.
     client : distributed.Client, optional
         Process the runs as tasks on this dask cluster (default: in this process).
+    rehash : bool
+        Read every raw file for its SHA-256, however unchanged its size,
+        modification time and inode (:class:`~pipeline.store.freshness.HashCache`).
 
     Returns
     -------
@@ -552,13 +543,16 @@ def process_campaign(
     _check_output_folder(output, sheet)
     with campaign_lock(output):
         remove_stale_temporaries(output)
+        forget_rerun(output)  # whatever happens next, the last run's record may not hold
         failures = sheet_failures(sheet)
         plans: dict[str, _Plan] = {}
+        hashes = HashCache(output, rehash)
         for run in sheet.runs:
             try:
-                plans[run.id] = _plan(sheet, run, output)
+                plans[run.id] = _plan(sheet, run, output, hashes)
             except Exception as error:
                 failures.append(_failure(sheet, run, error, debug))
+        hashes.save()
         stored = {run_id: _stored(layout.run_output(output, run_id)) for run_id in plans}
         current = {run_id: found for run_id, found in stored.items()
                    if not force and found is not None and found.get(INPUT_KEY) == plans[
@@ -580,7 +574,8 @@ def process_campaign(
             sheet.campaign.id, output, xr.Dataset(), files, failures,
             redone=[plan.run.id for plan in todo if plan.run.id in done],
             reused=[run_id for run_id in plans if run_id in current and run_id not in done],
-            removed=removed, warnings=_warnings({run_id: current[run_id] for run_id in files}))
+            removed=removed, warnings=_warnings({run_id: current[run_id] for run_id in files}),
+            inputs=_input_files(sheet, output))
         if not force and _outputs_current(output, key):
             result.summary = read_dataset(output / layout.SUMMARY)
             result.report = output / layout.REPORT
@@ -606,6 +601,15 @@ def process_campaign(
             (output / layout.REPORT).unlink(missing_ok=True)  # an old report is not current
         _write_manifest(output, key, written)
     return result
+
+
+def _input_files(sheet: RunSheet, output: Path) -> list[Path]:
+    """The files a campaign's outputs are computed from, besides its run sheet: the raw
+    files there are, and the summaries of the campaigns a stiffness is taken from."""
+    files = [sheet.run_file(run) for run in sheet.runs]
+    files += [output.parent / run.stiffness_from.partition("/")[0] / layout.SUMMARY
+              for run in sheet.runs if run.stiffness_from]
+    return sorted({path for path in files if path.is_file()})
 
 
 def check_campaign(path: str | Path, output: str | Path | None = None,

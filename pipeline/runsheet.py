@@ -40,10 +40,9 @@ from pydantic import (
 
 from pipeline.catalog import chain as catalog_chain
 from pipeline.errors import RunSheetError
-from pipeline.store.layout import reserved_id_reason, unportable_name_reason
+from pipeline.store.layout import RUN_SHEET_NAME, reserved_id_reason, unportable_name_reason
 from pipeline.units import to_si
 
-RUN_SHEET_NAME = "campaign.toml"
 #: Ids become file and folder names: letters, digits, '.', '_', '-' (and not only dots).
 SAFE_ID = r"^[A-Za-z0-9._-]+$"
 #: ``stiffness_from``: ``<campaign>/<chain>``, both safe names (it names a processed folder).

@@ -75,9 +75,9 @@ def kill_after(monkeypatch, renames: int) -> None:
     monkeypatch.setattr(os, "replace", replace)
 
 
-#: Renames of a re-run after one raw file changed: that run, summary.nc, 2 tables, report,
-#: manifest.
-RENAMES = 6
+#: Renames of a re-run after one raw file changed: the raw-file hash cache, that run,
+#: summary.nc, 2 tables, report, manifest.
+RENAMES = 7
 
 
 @pytest.mark.parametrize("renames", range(1, RENAMES + 1))

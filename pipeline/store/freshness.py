@@ -8,17 +8,18 @@ loads the stages only when something must be computed.
 
 Two records in a campaign's output folder (``docs/outputs.md``):
 
-* ``.hashes.json``, the raw files' SHA-256 (kept for provenance), each with the
-  file's size, modification time and inode it was computed at: a file whose
-  three are unchanged is not read again (:func:`sha256_cached`; ``--rehash``
-  reads every file).
-* ``.rerun.json`` (:func:`write_rerun`), written by ``chainbench run`` after
-  the campaign's outputs: the run sheet's SHA-256, the identity of every input
-  (raw files, the summaries of the campaigns a stiffness is taken from) and of
-  every output, the code fingerprint, the manifest's key, and what a re-run
-  with nothing changed prints. :func:`current_rerun` gives it back only when
-  every one of them still holds; anything else (a changed byte, a touched or
-  replaced file, a deleted output, other code) sends the run down the full path.
+* ``.hashes.json`` (:data:`~pipeline.store.layout.HASHES`), the raw files'
+  SHA-256 (kept for provenance), each with the file's size, modification time
+  and inode it was computed at: a file whose three are unchanged is not read
+  again (:class:`HashCache`; ``--rehash`` reads every file).
+* ``.rerun.json`` (:data:`~pipeline.store.layout.RERUN`, :func:`write_rerun`),
+  written by ``chainbench run`` after the campaign's outputs: the run sheet's
+  SHA-256, the identity of every input (raw files, the summaries of the
+  campaigns a stiffness is taken from) and of every output, the code
+  fingerprint, the manifest's key, and what a re-run with nothing changed
+  prints. :func:`current_rerun` gives it back only when every one of them
+  still holds; anything else (a changed byte, a touched or replaced file, a
+  deleted output, other code) sends the run down the full path.
 """
 
 from __future__ import annotations
@@ -33,15 +34,7 @@ from pathlib import Path
 
 from pipeline.store import layout
 from pipeline.store.fingerprint import code_fingerprint
-
-#: The campaign's raw-file hash cache, in its output folder.
-HASHES = ".hashes.json"
-#: What a re-run with nothing changed prints, and what it checks first.
-RERUN = ".rerun.json"
-#: Folders of a project: the campaigns' raw files, and their outputs.
-RAW_FOLDER, PROCESSED_FOLDER = "raw", "processed"
-#: The run sheet's file name in a campaign folder.
-RUN_SHEET_NAME = "campaign.toml"
+from pipeline.store.layout import PROCESSED_FOLDER, RUN_SHEET_NAME, project_root
 
 
 def identity(path: Path) -> list[int]:
@@ -69,10 +62,20 @@ def _read_json(path: Path) -> dict:
 
 
 def _write_json(document: dict, path: Path) -> None:
-    """Write `document` to `path` through a temporary file and a rename."""
+    """Write `document` to `path` through a temporary file and a rename.
+
+    Raises
+    ------
+    OSError
+        When it cannot be written (the temporary file is removed).
+    """
     temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    temporary.write_text(json.dumps(document, indent=1, sort_keys=True), encoding="utf-8")
-    os.replace(temporary, path)
+    try:
+        temporary.write_text(json.dumps(document, indent=1, sort_keys=True), encoding="utf-8")
+        os.replace(temporary, path)
+    except OSError:
+        temporary.unlink(missing_ok=True)
+        raise
 
 
 class HashCache:
@@ -81,13 +84,13 @@ class HashCache:
     Parameters
     ----------
     folder : Path
-        The campaign's output folder (the cache is :data:`HASHES` in it).
+        The campaign's output folder (the cache is :data:`~pipeline.store.layout.HASHES` in it).
     rehash : bool
         Read every file again, whatever the cache holds.
     """
 
     def __init__(self, folder: Path, rehash: bool = False) -> None:
-        self.path = Path(folder) / HASHES
+        self.path = Path(folder) / layout.HASHES
         self.rehash = rehash
         self.entries: dict[str, dict] = {} if rehash else _read_json(self.path)
         self.changed = False
@@ -105,23 +108,17 @@ class HashCache:
         return digest
 
     def save(self) -> None:
-        """Write the cache when it learnt something (call while holding the folder's lock)."""
+        """Write the cache when it learnt something (call while holding the folder's lock).
+
+        A cache that cannot be written costs only reading the files again next
+        time: the failure is left to the outputs, whose writes report it.
+        """
         if self.changed and self.path.parent.is_dir():
-            _write_json(self.entries, self.path)
+            try:
+                _write_json(self.entries, self.path)
+            except OSError:
+                return
             self.changed = False
-
-
-def project_root(campaign_folder: Path) -> Path:
-    """The project folder of a campaign: the parent of the ``raw/`` folder holding it.
-
-    A campaign outside any ``raw/`` folder belongs to the current folder's
-    project (the current folder, or the parent of the ``raw/`` folder it lies in).
-    """
-    for folder in (Path(campaign_folder).resolve(), Path.cwd().resolve()):
-        for parent in (folder, *folder.parents):
-            if parent.name.casefold() == RAW_FOLDER:
-                return parent.parent
-    return Path.cwd().resolve()
 
 
 def run_sheet_path(campaign: Path) -> Path:
@@ -187,12 +184,12 @@ def write_rerun(output: Path, sheet_file: Path, inputs: Iterable[Path], text: st
         "inputs": _identities(inputs), "outputs": _identities(outputs),
         "manifest": manifest.get("input_key"), "code": code_fingerprint(),
         "text": text, "document": document, "exit_code": exit_code,
-    }, output / RERUN)
+    }, output / layout.RERUN)
 
 
 def forget_rerun(output: Path) -> None:
     """Remove the re-run record (before anything in the folder is rewritten)."""
-    (Path(output) / RERUN).unlink(missing_ok=True)
+    (Path(output) / layout.RERUN).unlink(missing_ok=True)
 
 
 def _unchanged(recorded: dict) -> bool:
@@ -242,7 +239,7 @@ def current_rerun(campaign: Path, output_root: Path | None = None) -> Rerun | No
     output = campaign_output(campaign, output_root)
     if output is None:
         return None
-    record = _read_json(output / RERUN)
+    record = _read_json(output / layout.RERUN)
     sheet = run_sheet_path(campaign)
     try:
         same_sheet = (record.get("run_sheet", {}).get("path") == str(sheet.resolve())

@@ -10,6 +10,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
+#: The run sheet's file name in a campaign folder.
+RUN_SHEET_NAME = "campaign.toml"
+#: Folders of a project: the campaigns' raw files, and their outputs.
+RAW_FOLDER, PROCESSED_FOLDER = "raw", "processed"
+
 SUMMARY = "summary.nc"  #: the campaign summary dataset
 CHAIN_TABLE = "summary.csv"  #: one row per chain
 SPECIMEN_TABLE = "specimens.csv"  #: one row per tensile specimen
@@ -18,6 +23,10 @@ REPORT = "report.html"  #: the campaign report
 LOCK = ".lock"  #: held while a process writes the folder
 #: The input key the campaign outputs were built from; written after the last of them.
 MANIFEST = ".outputs.json"
+#: The raw files' SHA-256, keyed by their size, modification time and inode.
+HASHES = ".hashes.json"
+#: What a re-run with nothing changed checks and prints (:mod:`pipeline.store.freshness`).
+RERUN = ".rerun.json"
 
 #: Every campaign-level output of a processed folder.
 CAMPAIGN_OUTPUTS = (SUMMARY, CHAIN_TABLE, SPECIMEN_TABLE, IMPACT_TABLE, REPORT)
@@ -28,6 +37,19 @@ WINDOWS_DEVICE_NAMES = frozenset(
     | {f"com{digit}" for digit in range(10)}
     | {f"lpt{digit}" for digit in range(10)}
 )
+
+
+def project_root(campaign_folder: Path) -> Path:
+    """The project folder of a campaign: the parent of the ``raw/`` folder holding it.
+
+    A campaign outside any ``raw/`` folder belongs to the current folder's
+    project (the current folder, or the parent of the ``raw/`` folder it lies in).
+    """
+    for folder in (Path(campaign_folder).resolve(), Path.cwd().resolve()):
+        for parent in (folder, *folder.parents):
+            if parent.name.casefold() == RAW_FOLDER:
+                return parent.parent
+    return Path.cwd().resolve()
 
 
 def run_output(output: Path, run_id: str) -> Path:

@@ -10,7 +10,6 @@ place, so a crash never leaves a half-written result.
 
 from __future__ import annotations
 
-import hashlib
 import json
 import os
 import tempfile
@@ -30,15 +29,6 @@ CONVENTIONS = "CF-1.10"
 
 #: Permissions of written outputs (``mkstemp`` creates its files private: 0600).
 FILE_MODE = 0o644
-
-
-def sha256_of(path: str | Path) -> str:
-    """SHA-256 hex digest of a file's bytes, read in chunks."""
-    digest = hashlib.sha256()
-    with open(path, "rb") as stream:
-        for block in iter(lambda: stream.read(1 << 20), b""):
-            digest.update(block)
-    return digest.hexdigest()
 
 
 def provenance_attrs(

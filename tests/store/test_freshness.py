@@ -95,6 +95,13 @@ def test_an_unreadable_run_sheet_is_left_to_the_full_path(project):
     assert freshness.current_rerun(campaign) is None
 
 
+def test_sha256_file_matches_hashlib_across_blocks(tmp_path):
+    data = bytes(range(256)) * 8193  # a little over 2 MiB: three blocks
+    path = tmp_path / "log.bin"
+    path.write_bytes(data)
+    assert freshness.sha256_file(path) == hashlib.sha256(data).hexdigest()
+
+
 def test_hash_cache_reads_a_file_once_until_it_changes(tmp_path, monkeypatch):
     data = tmp_path / "log.csv"
     data.write_bytes(b"1,2\n" * 1000)
@@ -123,3 +130,17 @@ def test_the_check_imports_no_numerical_library(project):
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                           check=True)
     assert done.stdout.strip() == "[]"
+
+
+def test_a_cache_that_cannot_be_written_is_left_behind_without_a_trace(tmp_path, monkeypatch):
+    data = tmp_path / "log.csv"
+    data.write_bytes(b"1,2\n")
+    cache = freshness.HashCache(tmp_path)
+    cache.sha256(data)
+
+    def full(*args):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(os, "replace", full)
+    cache.save()  # no error: the next run reads the file again
+    assert not (tmp_path / layout.HASHES).exists() and not list(tmp_path.glob(".*.tmp"))

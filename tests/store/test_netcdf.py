@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import hashlib
 import json
 
 import numpy as np
@@ -14,7 +13,6 @@ from pipeline.store.netcdf import (
     provenance_attrs,
     read_attrs,
     read_dataset,
-    sha256_of,
     write_atomic,
     write_text_atomic,
 )
@@ -73,14 +71,6 @@ def test_text_write_replaces_whole_file(tmp_path):
     assert [p.name for p in tmp_path.iterdir()] == ["r.csv"]
 
 
-def test_sha256_of_matches_hashlib(tmp_path):
-    path = tmp_path / "blob"
-    data = bytes(range(256)) * 5000
-    path.write_bytes(data)
-    assert sha256_of(path) == hashlib.sha256(data).hexdigest()
-
-
-@pytest.mark.posix_only  # Windows has no permission bits beyond read-only
 def test_outputs_are_readable_by_others(tmp_path):
     netcdf = write_atomic(sample(), tmp_path / "run.nc")
     text = write_text_atomic("a\n", tmp_path / "report.html")
