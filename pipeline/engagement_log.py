@@ -112,6 +112,16 @@ class LogAnalysis:
     warnings: tuple[str, ...] = ()
 
 
+def preview_stride(n_rows: int, preview_samples: int | None) -> int:
+    """The smallest stride keeping at most `preview_samples` of `n_rows` samples (only the
+    first without a number).
+
+    >>> preview_stride(450_000, 200_000), preview_stride(200_000, 200_000)
+    (3, 1)
+    """
+    return max(1, n_rows if preview_samples is None else math.ceil(n_rows / preview_samples))
+
+
 def _map(function: Callable, items: Sequence, client: Client | None) -> list:
     """`function` of every item, in order: here, or as dask tasks on `client`."""
     if client is None:
@@ -132,10 +142,11 @@ def _setup(source: LogSource, *, z: int, omega: float, natural_frequency: float 
     step = (end_time - start_time) / (n - 1)
     head_rows = setup_samples(1.0 / step, z, omega) if step > 0 else 3
     head = source.read(0, min(n, head_rows))[0]
-    stride = n if preview_samples is None else max(1, math.ceil(n / preview_samples))
     return engagement_setup(head, n_samples=n, end_time=end_time, z=z, omega=omega,
                             natural_frequency=natural_frequency, impact_angle=impact_angle,
-                            use_angle=use_angle, preview_stride=stride, clip_level=clip_level,
+                            use_angle=use_angle,
+                            preview_stride=preview_stride(n, preview_samples),
+                            clip_level=clip_level,
                             file=None if file is None else str(file))
 
 

@@ -19,7 +19,7 @@ import pandas as pd
 
 from pipeline.condition.engagement import SpeedMismatchWarning
 from pipeline.condition.tensile import TensileRun, condition_tensile
-from pipeline.engagement_log import TableSource, analyse_log
+from pipeline.engagement_log import LogSource, TableSource, analyse_log
 from pipeline.errors import IngestError, RunSheetError, SignalError
 from pipeline.fit.stiffness import (
     SpecimenStiffness,
@@ -28,16 +28,16 @@ from pipeline.fit.stiffness import (
     specimen_stiffness,
 )
 from pipeline.fit.strength import Strength, specimen_strength
-from pipeline.ingest import TableMetadata, read_table
+from pipeline.ingest import TableMetadata, open_log, read_table
 from pipeline.results import EngagementResult, TensileResult
-from pipeline.results.engagement import decimated_signal
+from pipeline.results.engagement import MAX_STORED_SAMPLES
 from pipeline.runsheet import RunDef, RunSheet
 from pipeline.store.netcdf import provenance_attrs, read_dataset
 from pipeline.units import to_si
 
-#: Engagement logs longer than this are processed in chunks of this many samples
-#: (with overlap; :mod:`pipeline.engagement_log`): the same events and values, with
-#: a fifth of the working memory on a 10^7-sample log.
+#: Engagement logs longer than this are read from their file and processed in chunks
+#: of this many samples (with overlap; :mod:`pipeline.engagement_log`): the same
+#: events and values, in the memory of a chunk whatever the log's length.
 CHUNK_SAMPLES = 1_000_000
 
 #: Called as ``progress(run_id, stage)`` while a run is processed.
@@ -57,12 +57,31 @@ def existing_run_file(sheet: RunSheet, run: RunDef) -> Path:
     return raw
 
 
+def _reading(run: RunDef) -> dict:
+    """How a run's raw file is read, as its run-sheet entry says."""
+    return {"kind": run.kind, "format": run.format, "sheet": run.sheet,
+            "columns": run.columns.model_dump(exclude_none=True) if run.columns else None,
+            "units": run.units.model_dump(exclude_none=True) if run.units else None}
+
+
 def read_run(sheet: RunSheet, run: RunDef):
     """Read a run's raw file into the canonical table, as its run-sheet entry says."""
-    columns = run.columns.model_dump(exclude_none=True) if run.columns else None
-    units = run.units.model_dump(exclude_none=True) if run.units else None
-    return read_table(existing_run_file(sheet, run), kind=run.kind, columns=columns,
-                      units=units, format=run.format, sheet=run.sheet)
+    return read_table(existing_run_file(sheet, run), **_reading(run))
+
+
+def open_run_log(sheet: RunSheet, run: RunDef) -> tuple[LogSource, list[str], str]:
+    """An engagement run's log as a source, the reader's warnings and the file's layout.
+
+    A log of up to :data:`CHUNK_SAMPLES` samples is read whole into memory; a
+    longer one is left in its file and read a chunk at a time
+    (:func:`pipeline.ingest.open_log`), so its memory is that of a chunk.
+    """
+    reader = open_log(existing_run_file(sheet, run), **_reading(run))
+    said = list(reader.metadata.warnings)
+    if reader.n_rows > CHUNK_SAMPLES:
+        return reader, said, reader.metadata.layout
+    table, more = reader.read(0, reader.n_rows)
+    return TableSource(table), list(dict.fromkeys([*said, *more])), reader.metadata.layout
 
 
 def _attrs(sheet: RunSheet, run: RunDef, title: str, raw_sha256: str) -> dict[str, str]:
@@ -232,7 +251,7 @@ def process_engagement_run(
     """
     progress(run.id, "ingest")
     raw = sheet.run_file(run)
-    table, metadata = read_run(sheet, run)
+    source, read_warnings, file_layout = open_run_log(sheet, run)
     point = operating_point(sheet, run, E0)
     natural = math.sqrt(E0 / (point["mass_per_length"] * run.branch_length_m ** 2))
     clip = to_si(run.clip_level_kN, "kN") if run.clip_level_kN is not None else None
@@ -240,11 +259,14 @@ def process_engagement_run(
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", SpeedMismatchWarning)  # kept in events.messages
         analysis = analyse_log(
-            TableSource(table), z=point["teeth"], omega=run.omega,
-            chunk_samples=CHUNK_SAMPLES if len(table) > CHUNK_SAMPLES else None,
-            natural_frequency=natural, clip_level=clip, file=raw)
+            source, z=point["teeth"], omega=run.omega,
+            chunk_samples=CHUNK_SAMPLES if source.n_rows > CHUNK_SAMPLES else None,
+            natural_frequency=natural, clip_level=clip, preview_samples=MAX_STORED_SAMPLES,
+            file=raw)
     events, result = analysis.events, analysis.impacts
     attrs = _attrs(sheet, run, f"Engagement log {run.id} of campaign {sheet.campaign.id}",
                    raw_sha256)
-    attrs.update(wheel=run.wheel, layout=metadata.layout)
-    return EngagementResult.of(events, result, decimated_signal(table), attrs, metadata.warnings)
+    attrs.update(wheel=run.wheel, layout=file_layout)
+    signal = analysis.preview_time, analysis.preview_force, analysis.preview_stride
+    warned = list(dict.fromkeys([*read_warnings, *analysis.warnings]))
+    return EngagementResult.of(events, result, signal, attrs, warned)

@@ -21,7 +21,13 @@ import pytest
 
 from pipeline.condition.engagement import SpeedMismatchWarning
 from pipeline.condition.scan import engagement_setup, plan_chunks, setup_samples
-from pipeline.engagement_log import TableSource, analyse_log, detect_events, extract_impacts
+from pipeline.engagement_log import (
+    TableSource,
+    analyse_log,
+    detect_events,
+    extract_impacts,
+    preview_stride,
+)
 from pipeline.simulate.engagement import EngagementSettings, simulate_engagement
 
 RELATIVE = 1e-6
@@ -220,3 +226,10 @@ def test_chunks_as_dask_tasks_give_the_same_result(log):
     in_process = whole(table, chunk_samples=100_003)[1]
     pd.testing.assert_frame_equal(analysis.impacts.events, in_process.events)
     assert analysis.events.count == reference[0].count
+
+
+@pytest.mark.parametrize(("rows", "stride"), [(200_000, 1), (200_001, 2), (1_000_007, 6)])
+def test_the_preview_keeps_at_most_the_samples_asked_for_with_the_smallest_stride(rows, stride):
+    assert preview_stride(rows, 200_000) == stride
+    assert -(-rows // stride) <= 200_000  # samples kept
+    assert stride == 1 or -(-rows // (stride - 1)) > 200_000  # a smaller stride keeps too many

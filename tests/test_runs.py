@@ -61,3 +61,32 @@ def test_missing_stiffness_source_fails_the_run_with_its_key(lab, tmp_path, refe
     (failure,) = result.failures
     assert words in failure.message
     assert failure.error.column == "stiffness_from"
+
+
+def test_a_log_longer_than_a_chunk_is_read_from_its_file_in_chunks_with_the_same_result(
+        lab, tmp_path, monkeypatch):
+    import numpy as np
+
+    from pipeline import runs
+
+    wheel = lab / "raw" / "wheel"
+    whole = process_campaign(wheel, tmp_path / "whole")
+    reads = []
+    real_read = runs.open_log
+
+    def counting(*args, **kwargs):
+        reader = real_read(*args, **kwargs)
+        reads.append(reader.n_rows)
+        return reader
+
+    monkeypatch.setattr(runs, "open_log", counting)
+    monkeypatch.setattr(runs, "CHUNK_SAMPLES", 3_000)  # the 1 s logs hold 10 001 samples
+    chunked = process_campaign(wheel, tmp_path / "chunked")
+    assert reads and all(n > 3_000 for n in reads)
+    assert chunked.failures == [] and whole.failures == []
+    for name in ("N_u1_meas", "N_u2_meas"):
+        np.testing.assert_allclose(chunked.summary[name], whole.summary[name], rtol=1e-6)
+    run_id = next(iter(chunked.run_files))
+    a, b = (read_dataset(result.run_files[run_id]) for result in (whole, chunked))
+    np.testing.assert_allclose(a["event_time"], b["event_time"], rtol=0, atol=1e-9)
+    np.testing.assert_array_equal(a["time"], b["time"])  # the stored preview

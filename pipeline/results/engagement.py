@@ -59,34 +59,6 @@ DERIVED_ATTRS = ("ingest_warnings", "signal_decimation", "event_source", "compar
 _STATISTIC_UNITS = {"count": "1", "tau": "s"}
 
 
-def decimated_signal(table: pd.DataFrame) -> tuple[np.ndarray, np.ndarray, int]:
-    """The signal a run file stores: every `stride`-th sample of ``time`` and ``force``.
-
-    Parameters
-    ----------
-    table : pandas.DataFrame
-        The canonical table of the log: ``time`` [s], ``force`` [N].
-
-    Returns
-    -------
-    time : numpy.ndarray
-        Times of the kept samples [s].
-    force : numpy.ndarray
-        Branch tension at the kept samples [N].
-    stride : int
-        The smallest integer stride that keeps at most :data:`MAX_STORED_SAMPLES` [1].
-
-    Examples
-    --------
-    >>> table = pd.DataFrame({"time": np.arange(450_000) / 1e4, "force": 0.0})
-    >>> time, force, stride = decimated_signal(table)
-    >>> stride, time.size, float(time[1])
-    (3, 150000, 0.0003)
-    """
-    stride = max(1, math.ceil(len(table) / MAX_STORED_SAMPLES))
-    return table["time"].to_numpy()[::stride], table["force"].to_numpy()[::stride], stride
-
-
 @dataclass(frozen=True, eq=False)
 class EngagementResult:
     """What one engagement run gave, as its run file holds it (SI units).
@@ -140,7 +112,8 @@ class EngagementResult:
         impact : ImpactResult
             The impact extraction.
         signal : (numpy.ndarray, numpy.ndarray, int)
-            Time [s], force [N] and stride [1] of the stored signal (:func:`decimated_signal`).
+            Time [s], force [N] and stride [1] of the stored signal: every
+            stride-th sample of the log, at most :data:`MAX_STORED_SAMPLES`.
         attrs : dict
             Provenance and identity (see :attr:`attrs`).
         ingest_warnings : list of str

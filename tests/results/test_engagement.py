@@ -18,7 +18,6 @@ from pipeline.fit import impact, windows
 from pipeline.fit.impact import ImpactResult, ImpactStatistics
 from pipeline.fit.windows import Ringing
 from pipeline.results import EngagementResult, result_from_dataset
-from pipeline.results.engagement import MAX_STORED_SAMPLES, decimated_signal
 from pipeline.store.netcdf import read_dataset, write_atomic
 
 N_U1 = np.array([1010.0, 990.0, 1000.0, np.nan])
@@ -49,7 +48,8 @@ def extraction() -> ImpactResult:
 def result() -> EngagementResult:
     detected = SimpleNamespace(seating_period=0.05, omega=15.7, source="force")
     table = pd.DataFrame({"time": np.arange(1000) / 1e4, "force": 2e4 + np.arange(1000.0)})
-    return EngagementResult.of(detected, extraction(), decimated_signal(table),
+    signal = table["time"].to_numpy(), table["force"].to_numpy(), 1
+    return EngagementResult.of(detected, extraction(), signal,
                                {"run_id": "E1", "kind": "engagement", "wheel": "w8"},
                                ["line 7: a repeated time stamp"])
 
@@ -104,12 +104,3 @@ def test_the_run_file_has_the_documented_layout_and_settings(result):
     assert dataset.attrs["ringing_events_max"] == impact.RINGING_EVENTS
 
 
-@pytest.mark.parametrize(("rows", "stride"), [(MAX_STORED_SAMPLES, 1),
-                                              (MAX_STORED_SAMPLES + 1, 2),
-                                              (5 * MAX_STORED_SAMPLES + 7, 6)])
-def test_a_long_log_is_stored_decimated_by_the_smallest_stride(rows, stride):
-    table = pd.DataFrame({"time": np.arange(rows) / 1e4, "force": np.arange(rows) * 2.0})
-    time, force, found = decimated_signal(table)
-    assert found == stride
-    assert time.size == -(-rows // stride) <= MAX_STORED_SAMPLES
-    np.testing.assert_array_equal(force, 2.0 * stride * np.arange(time.size))
