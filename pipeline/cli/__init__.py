@@ -1,35 +1,33 @@
-"""The ``chainbench`` command line: it only wires the pipeline's stages."""
+"""The ``chainbench`` command line: it only wires the pipeline's stages.
+
+:data:`app` (built in :mod:`pipeline.cli.commands`) is the whole command tree.
+The entry point, :func:`main`, loads only the ``run`` command when that is the
+one asked for, so that a re-run with nothing changed answers before any stage
+or numerical library is imported (:mod:`pipeline.store.freshness`).
+"""
 
 from __future__ import annotations
 
-import typer
-
-from pipeline import __version__
-from pipeline.cli import init, inspect, report, run
-from pipeline.cli.simulate import simulate_app
-from pipeline.cli.theory import theory_app
-
-app = typer.Typer(
-    help="chainbench: test-bench data analysis for chain-drive laboratories.",
-    pretty_exceptions_enable=False,
-)
-app.add_typer(theory_app, name="theory")
-app.command("init")(init.command)
-app.command("inspect")(inspect.command)
-app.command("run")(run.run_command)
-app.command("validate")(run.validate_command)
-app.command("report")(report.command)
-app.add_typer(simulate_app, name="simulate")
+import sys
 
 
-@app.callback(invoke_without_command=True)
-def _main(
-    context: typer.Context,
-    version: bool = typer.Option(False, "--version", help="Print the version and exit."),
-) -> None:
-    if version:
-        typer.echo(__version__)
-        raise typer.Exit()
-    if context.invoked_subcommand is None:
-        typer.echo(context.get_help())
-        raise typer.Exit()
+def main() -> None:
+    """The ``chainbench`` console script."""
+    args = sys.argv[1:]
+    if args[:1] == ["run"]:
+        from pipeline.cli.run import run_app
+
+        run_app(args=args[1:], prog_name="chainbench run")
+        return
+    from pipeline.cli.commands import app
+
+    app()
+
+
+def __getattr__(name: str):
+    """``pipeline.cli.app``, the whole command tree, built on first use."""
+    if name == "app":
+        from pipeline.cli.commands import app
+
+        return app
+    raise AttributeError(f"module 'pipeline.cli' has no attribute {name!r}")

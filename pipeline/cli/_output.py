@@ -10,8 +10,8 @@ from __future__ import annotations
 import json
 import math
 from collections.abc import Mapping, Sequence
+from numbers import Integral, Real
 
-import numpy as np
 from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
@@ -21,7 +21,8 @@ console = Console()
 error_console = Console(stderr=True)
 
 
-def say(tag: str, style: str, text: str, *, stderr: bool = False) -> None:
+def say(tag: str, style: str, text: str, *, stderr: bool = False,
+        to: Console | None = None) -> None:
     """Print `text` after a coloured `tag` (``error``, ``warning``, ``note``...).
 
     Parameters
@@ -35,13 +36,17 @@ def say(tag: str, style: str, text: str, *, stderr: bool = False) -> None:
         the terminal wraps.
     stderr : bool
         Print to standard error (beside a JSON document on standard output).
+    to : rich.console.Console, optional
+        Print there instead (e.g. a console recording the text).
     """
-    target = error_console if stderr else console
+    target = to or (error_console if stderr else console)
     target.print(f"[{style}]{tag}[/{style}] {escape(text)}", highlight=False, soft_wrap=True)
 
 
 def json_ready(value):
     """A JSON-friendly copy of `value` (numpy scalars and arrays become Python)."""
+    import numpy as np  # here: printing a stored re-run must not load numpy
+
     if isinstance(value, Mapping):
         return {str(key): json_ready(item) for key, item in value.items()}
     if isinstance(value, (list, tuple, np.ndarray)):
@@ -54,7 +59,7 @@ def json_ready(value):
 
 
 def _cell(value, digits: int) -> str:
-    if isinstance(value, (float, np.floating)):
+    if isinstance(value, Real) and not isinstance(value, Integral):  # numpy's floats too
         return f"{value:.{digits}g}"
     return str(value)
 

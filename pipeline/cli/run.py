@@ -1,21 +1,32 @@
-"""``chainbench run`` and ``chainbench validate``: process or check campaigns."""
+"""``chainbench run`` and ``chainbench validate``: process or check campaigns.
+
+``run`` first asks :func:`pipeline.store.freshness.current_rerun` whether
+anything a campaign's outputs depend on changed since its last run; when
+nothing did, it prints what that run recorded, having loaded neither the
+stages nor the numerical libraries. Only a campaign with something to compute
+loads them.
+"""
 
 from __future__ import annotations
 
+import dataclasses
+import io
 import json
-from contextlib import contextmanager
+import math
+from contextlib import ExitStack, contextmanager
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated
 
-import numpy as np
 import typer
+from rich.console import Console
 from rich.markup import escape
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
 from pipeline.cli._output import console, say
 from pipeline.errors import ChainbenchError
-from pipeline.runsheet import RUN_SHEET_NAME, load_run_sheet
+from pipeline.store.freshness import Rerun, current_rerun, write_rerun
+from pipeline.store.layout import RUN_SHEET_NAME
 
 if TYPE_CHECKING:
     import xarray as xr
@@ -135,7 +146,7 @@ def _progress_reporter(total_runs: int):
 
 
 def _fmt(value: float, scale: float = 1.0, digits: int = 4) -> str:
-    return "-" if not np.isfinite(value) else f"{value / scale:.{digits}g}"
+    return "-" if not math.isfinite(value) else f"{value / scale:.{digits}g}"
 
 
 def _chain_table(summary) -> Table:
@@ -237,36 +248,37 @@ def _shows_specimens(summary) -> bool:
     return declared or bool(summary["specimen_single_pull"].any())
 
 
-def _print_result(result: CampaignResult) -> None:
+def _print_result(result: CampaignResult, out: Console = console) -> None:
+    """Print a processed campaign's tables, findings and where its results are, to `out`."""
     summary = result.summary
     if summary.sizes.get("chain", 0):
-        console.print(_chain_table(summary))
+        out.print(_chain_table(summary))
     if _shows_specimens(summary):
-        console.print(_specimen_table(summary))
+        out.print(_specimen_table(summary))
         acceptance = _acceptance_table(summary)
         if acceptance is not None:
-            console.print(acceptance)
+            out.print(acceptance)
         for chain in summary["chain"].values:
             verdicts = _verdicts(summary.sel(chain=chain), "accept_")
             if verdicts != "-":
-                console.print(f"chain {escape(str(chain))} acceptance: {escape(verdicts)}",
+                out.print(f"chain {escape(str(chain))} acceptance: {escape(verdicts)}",
                               highlight=False)
     if summary.sizes.get("operating_point", 0):
-        console.print(_impact_table(summary))
-        if np.isfinite(float(summary["k_fit"])):
-            console.print(
+        out.print(_impact_table(summary))
+        if math.isfinite(float(summary["k_fit"])):
+            out.print(
                 f"fitted mass share k = {float(summary['k_fit']):.4g} "
                 f"(95 % interval {float(summary['k_fit_ci_low']):.4g} .. "
                 f"{float(summary['k_fit_ci_high']):.4g}; Ryabov: k = 2)", highlight=False)
     for note in filter(None, summary.attrs.get("notes", "").split("\n")):
-        say("note", "yellow", note)
-    _print_findings(result, failure_tag="failed")
-    console.print(f"{_counts(result)}; results in {result.output} (summary tables in SI "
+        say("note", "yellow", note, to=out)
+    _print_findings(result, failure_tag="failed", out=out)
+    out.print(f"{_counts(result)}; results in {result.output} (summary tables in SI "
                   "units: forces in N)", markup=False, highlight=False, soft_wrap=True)
     if result.report is not None:
-        console.print(f"report: {result.report}", markup=False, highlight=False)
+        out.print(f"report: {result.report}", markup=False, highlight=False)
     else:
-        say("report not written:", "red", str(result.report_error))
+        say("report not written:", "red", str(result.report_error), to=out)
 
 
 def _counts(result: CampaignResult) -> str:
@@ -335,6 +347,9 @@ def run_command(
     campaigns: CampaignArgs = None,
     output_root: OutputRoot = None,
     force: Annotated[bool, typer.Option("--force", help="Redo every run, changed or not.")] = False,
+    rehash: Annotated[bool, typer.Option(
+        "--rehash", help="Read every raw file again for its SHA-256, even those whose size, "
+                         "modification time and inode are unchanged.")] = False,
     workers: Annotated[int | None, typer.Option(
         "--workers", min=1, help="Process runs on a local dask cluster of N workers.")] = None,
     scheduler: Annotated[str | None, typer.Option(
@@ -344,23 +359,29 @@ def run_command(
 ) -> None:
     """Process campaigns: ingest, condition, fit, store, compare and report.
 
-    Runs whose inputs did not change since the last run are not redone.
+    Runs whose inputs did not change since the last run are not redone; when
+    nothing a campaign depends on changed (run sheet, raw files, code, outputs),
+    what its last run printed is printed again.
     """
-    from pipeline.campaign import process_campaign
-
     all_ok, documents = True, []
     folders = _campaigns_or_exit(campaigns, debug, stderr=as_json)
-    with _dask_client(workers, scheduler) as client:
+    with ExitStack() as stack:
+        client, started = None, False
         for folder in folders:
             if not as_json:
                 console.print(f"[bold]campaign {escape(str(folder))}[/bold]", highlight=False)
+            rerun = None if force or rehash else current_rerun(folder, output_root)
+            if rerun is not None:
+                all_ok &= rerun.exit_code == 0
+                if as_json:
+                    documents.append(rerun.document)
+                else:
+                    _print_rerun(rerun)
+                continue
+            if not started:  # the cluster starts when a campaign has something to compute
+                client, started = stack.enter_context(_dask_client(workers, scheduler)), True
             try:
-                sheet = load_run_sheet(folder)
-                with _progress_reporter(len(sheet.runs)) as progress:
-                    result = process_campaign(
-                        folder, _output_folder(sheet, output_root),
-                        progress=None if as_json else progress, debug=debug, force=force,
-                        client=client)
+                result = _process(folder, output_root, force, rehash, debug, client, as_json)
             except ChainbenchError as error:
                 if debug:
                     raise
@@ -378,21 +399,51 @@ def run_command(
     raise typer.Exit(0 if all_ok else 1)
 
 
-def _print_findings(result: CampaignResult, failure_tag: str) -> None:
+def _process(folder: Path, output_root: Path | None, force: bool, rehash: bool, debug: bool,
+             client, as_json: bool) -> CampaignResult:
+    """Process one campaign; then record what a re-run with nothing changed prints."""
+    from pipeline.campaign import process_campaign
+    from pipeline.runsheet import load_run_sheet
+
+    sheet = load_run_sheet(folder)
+    with _progress_reporter(len(sheet.runs)) as progress:
+        result = process_campaign(
+            folder, _output_folder(sheet, output_root), progress=None if as_json else progress,
+            debug=debug, force=force, client=client, rehash=rehash)
+    if not result.failures and result.report is not None:
+        again = dataclasses.replace(result, redone=[], reused=list(result.run_files),
+                                    removed=[])
+        recorder = Console(file=io.StringIO(), width=console.width, color_system=None,
+                           force_terminal=False, highlight=False)
+        _print_result(again, out=recorder)
+        write_rerun(result.output, sheet.path, result.inputs, recorder.file.getvalue(),
+                    _result_json(again), 0 if again.ok else 1)
+    return result
+
+
+def _print_rerun(rerun: Rerun) -> None:
+    """Say that nothing changed, and print what the campaign's last run printed."""
+    say("unchanged", "green", "run sheet, raw files, code and outputs are as the last run "
+        f"left them: its results in {rerun.output} are current")
+    console.print(rerun.text, markup=False, highlight=False, soft_wrap=True, end="")
+
+
+def _print_findings(result: CampaignResult, failure_tag: str, out: Console = console) -> None:
     """The runs' warnings, the failures (tagged `failure_tag`) and the open plausibility
     flags of a processed or checked campaign."""
     for run_id, found in result.warnings.items():
         for warning in found:
-            say("warning", "yellow", f"{run_id}: {warning}")
+            say("warning", "yellow", f"{run_id}: {warning}", to=out)
     for failure in result.failures:
-        say(failure_tag, "red", f"{failure.run_id}: {failure.message}")
+        say(failure_tag, "red", f"{failure.run_id}: {failure.message}", to=out)
     for message in result.implausible:
-        say("implausible", "red", message)
+        say("implausible", "red", message, to=out)
 
 
 def _validate_campaign(folder: Path, output_root: Path | None) -> bool:
     """Check one campaign as `run` would process it, print what is found; True when clean."""
     from pipeline.campaign import check_campaign
+    from pipeline.runsheet import load_run_sheet
 
     try:
         sheet = load_run_sheet(folder)
@@ -426,3 +477,8 @@ def validate_command(
     for folder in _campaigns_or_exit(campaigns, debug=False, stderr=False):
         all_ok &= _validate_campaign(folder, output_root)
     raise typer.Exit(0 if all_ok else 1)
+
+
+#: ``chainbench run`` on its own: what the entry point loads for it (:func:`pipeline.cli.main`).
+run_app = typer.Typer(add_completion=False, pretty_exceptions_enable=False)
+run_app.command()(run_command)
