@@ -233,3 +233,4 @@ def test_the_preview_keeps_at_most_the_samples_asked_for_with_the_smallest_strid
     assert preview_stride(rows, 200_000) == stride
     assert -(-rows // stride) <= 200_000  # samples kept
     assert stride == 1 or -(-rows // (stride - 1)) > 200_000  # a smaller stride keeps too many
+

@@ -131,8 +131,9 @@ def summarise_samples(time: np.ndarray, force: np.ndarray, start: int, *, n_samp
         at_max=runs_of(force == maximum, start), at_min=runs_of(force == minimum, start),
         above_clip=NO_RUNS if clip_level is None else runs_of(force >= clip_level, start),
         maximum=maximum, minimum=minimum,
-        offset_sample=force[_multiples(start, stop, offset_stride(n_samples))],
-        preview_time=time[preview], preview_force=force[preview])
+        # copies: a view would keep the whole chunk alive as long as the summary
+        offset_sample=force[_multiples(start, stop, offset_stride(n_samples))].copy(),
+        preview_time=time[preview].copy(), preview_force=force[preview].copy())
 
 
 def _flat_extreme(values: list[float], runs: list[Runs], pick) -> tuple[float | None, Runs]:

@@ -8,7 +8,6 @@ import math
 import numpy as np
 import pytest
 
-from pipeline.condition.samples import clipping_levels
 from pipeline.engagement_log import detect_events, extract_impacts
 from pipeline.errors import FitError
 from pipeline.fit.impact import EXCLUSIONS, Ringing
@@ -138,12 +137,6 @@ def test_given_clip_level_excludes_events_reaching_it():
     clipped = extract_impacts(table, events, clip_level=23.8e3)
     assert 0 < clipped.excluded["clipped"] < len(clipped.events)
     assert clipped.clip_levels == (None, 23.8e3)
-
-
-def test_clipping_levels_need_flat_extremes():
-    force = np.sin(np.linspace(0, 20, 1000))
-    assert clipping_levels(force) == (None, None)
-    assert clipping_levels(np.clip(force, -0.5, 0.9)) == (-0.5, 0.9)
 
 
 def test_missing_samples_and_log_ends_are_excluded():
