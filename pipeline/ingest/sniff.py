@@ -31,6 +31,10 @@ from pipeline.ingest.unitparse import looks_like_unit
 HEAD_BYTES = 1 << 16
 #: Delimiters tried, in order of preference when several fit.
 DELIMITERS = ("\t", ";", ",", "|")
+#: Non-blank lines at the end of the head that the dialect is chosen on.
+DIALECT_LINES = 128
+#: Lines of the head first classified to find the table (more when they do not tell).
+FIND_LINES = 256
 #: Cell texts read as missing values (pyarrow's defaults).
 NULL_VALUES = frozenset(pacsv.ConvertOptions().null_values)
 #: Single-byte encodings tried when a file is not UTF-8, in order of preference on a tie.
@@ -317,7 +321,7 @@ def detect_dialect(
     LayoutError
         If no dialect gives numeric rows.
     """
-    sample = [line for line in lines if line.strip()][-400:]
+    sample = [line for line in lines if line.strip()][-DIALECT_LINES:]
     best: tuple[tuple[int, int], str, str, int] = ((0, 0), ",", ".", 0)
     for delimiter in delimiters:
         rows = [split_fields(line, delimiter) for line in sample]
@@ -403,9 +407,16 @@ def find_table(
     LayoutError
         If there is no names row, or it does not fit the data rows.
     """
-    rows = [split_fields(line, delimiter) for line in lines]
-    kinds = [_kind(row, line, decimal) for row, line in zip(rows, lines, strict=True)]
-    data = _first_data_row(rows, kinds, width)
+    # Rows are classified from the top, as far as it takes to find the table (the head
+    # holds thousands of lines; the table usually starts within the first few).
+    limit = FIND_LINES
+    while True:
+        rows = [split_fields(line, delimiter) for line in lines[:limit]]
+        kinds = [_kind(row, line, decimal) for row, line in zip(rows, lines, strict=False)]
+        data = _first_data_row(rows, kinds, width, complete=limit >= len(lines))
+        if data is not None:
+            break
+        limit *= 4
     while data > 0 and kinds[data - 1] in _DATA_KINDS:
         data -= 1
     above = data - 1
@@ -456,11 +467,18 @@ def find_table(
     )
 
 
-def _first_data_row(rows: list[list[str]], kinds: list[str], width: int) -> int:
-    """The first numeric row of `width` fields followed by a data row (or by nothing)."""
+def _first_data_row(rows: list[list[str]], kinds: list[str], width: int,
+                    complete: bool = True) -> int | None:
+    """The first numeric row of `width` fields followed by a data row (or by nothing).
+
+    `rows` and `kinds` are the head's first lines, all of them when `complete`;
+    otherwise None when those lines do not tell (more lines are needed).
+    """
     candidates = [i for i, kind in enumerate(kinds) if kind == "numeric" and len(rows[i]) == width]
     for i in candidates:
         following = next((j for j in range(i + 1, len(kinds)) if kinds[j] != "blank"), None)
+        if following is None and not complete:
+            return None
         if following is None or (kinds[following] in _DATA_KINDS and len(rows[following]) == width):
             return i
-    return candidates[0]
+    return candidates[0] if complete else None

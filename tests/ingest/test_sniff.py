@@ -136,3 +136,13 @@ def test_names_row_too_wide(tmp_path):
 )
 def test_is_number(text, decimal, expected):
     assert is_number(text, decimal) is expected
+
+
+@pytest.mark.parametrize("preamble", [0, 255, 256, 700])
+def test_a_table_below_a_preamble_of_any_length_is_found(tmp_path, preamble):
+    lines = [f"Comment {i} : value {i}" for i in range(preamble)]
+    lines += ["t [s],f [kN]", "(s),(kN)"] + [f"{i / 10:.1f},{i:.1f}" for i in range(300)]
+    spec = find_table(lines, tmp_path, ",", ".", 2)
+    assert (spec.header_index, spec.units_index, spec.data_index) == (
+        preamble, preamble + 1, preamble + 2)
+    assert len(spec.preamble) == preamble
