@@ -18,23 +18,33 @@ Sizes (:data:`SIZES`): ``quick`` (a minute or so to write and to process) and
 
     .venv/bin/python bench/large_campaign.py --out /tmp/large           # full
     .venv/bin/python bench/large_campaign.py --out /tmp/large --quick
+
+:func:`write_many_small` writes instead one campaign of many small runs of both
+kinds (the growth benchmark, ``bench/bench_growth.py``)::
+
+    .venv/bin/python bench/large_campaign.py --out /tmp/many --many 100
 """
 
 from __future__ import annotations
 
 import argparse
+import json
 import math
 import time
+import tomllib
 from pathlib import Path
 from typing import NamedTuple
 
 import numpy as np
 
+from pipeline.runsheet import RUN_SHEET_NAME
 from pipeline.simulate.campaign import (
+    TRUTH_NAME,
     CampaignSpec,
     EngagementRunSpec,
     TensileRunSpec,
     engagement_settings,
+    run_sheet_text,
     write_engagement_campaign,
     write_tensile_campaign,
 )
@@ -130,13 +140,102 @@ def write_campaign(out: Path, size: CampaignSize) -> Campaigns:
     return campaigns
 
 
+#: The small runs of :func:`write_many_small`: tensile logging rate [Hz], engagement
+#: sampling rate [Hz] and engagement log length [s] (the engagement demo's: at least
+#: 11 seating periods a run).
+SMALL_TENSILE_RATE, SMALL_ENGAGEMENT_RATE, SMALL_ENGAGEMENT_SECONDS = 5.0, 5e3, 1.2
+
+
+def small_tensile_runs(count: int, rng: np.random.Generator) -> list[TensileRunSpec]:
+    """`count` short cyclic tensile runs (``T0001``...), the chains of Paper 001 in turn."""
+    chains = list(LOADING_RATES_KGF_PER_S)
+    runs = []
+    for index in range(count):
+        chain = chains[index % len(chains)]
+        base = TensileTruth.for_chain(chain, sample_rate=SMALL_TENSILE_RATE,
+                                      loading_rate=to_si(LOADING_RATES_KGF_PER_S[chain],
+                                                         "kgf/s"))
+        run_id = f"T{index + 1:04d}"
+        runs.append(TensileRunSpec(
+            id=run_id, chain=chain, specimen=f"{chain}-{index // len(chains) + 1}",
+            truth=base.with_(E0=base.E0 * (1.0 + rng.uniform(-0.004, 0.004)),
+                             gauge_length=to_si(float(rng.integers(896, 905)), "mm")),
+            seed=int(rng.integers(2**31)), file=f"{run_id}.csv"))
+    return runs
+
+
+def small_engagement_runs(count: int, rng: np.random.Generator) -> list[EngagementRunSpec]:
+    """`count` short engagement logs (``E0001``...) of an 18x64 chain, CSV: z = 6, 8, 10,
+    apex angles 20 to 60 deg and omega 10 to 30 1/s in turn."""
+    runs = []
+    for index in range(count):
+        z, apex = (6, 8, 10)[index % 3], (20, 40, 60)[index // 3 % 3]
+        settings = engagement_settings(
+            "18x64", z=z, psi=math.radians(apex), omega=(10.0, 20.0, 30.0)[index // 9 % 3],
+            E0=2.26e7, branch_length=2.0, sample_rate=SMALL_ENGAGEMENT_RATE,
+            duration=SMALL_ENGAGEMENT_SECONDS, snr=20.0, amplitude_scatter=0.02)
+        run_id = f"E{index + 1:04d}"
+        runs.append(EngagementRunSpec(id=run_id, chain="18x64", settings=settings,
+                                      seed=int(rng.integers(2**31)), file=f"{run_id}.csv",
+                                      format="csv"))
+    return runs
+
+
+def _sheet(folder: Path) -> dict:
+    with open(folder / RUN_SHEET_NAME, "rb") as stream:
+        return tomllib.load(stream)
+
+
+def write_many_small(folder: Path, runs: int, campaign_id: str) -> Path:
+    """Write one campaign of `runs` small runs, half tensile and half engagement.
+
+    Parameters
+    ----------
+    folder : Path
+        Campaign folder (created).
+    runs : int
+        Number of runs (at least 2): ``runs // 2`` tensile, the others engagement.
+    campaign_id : str
+        The campaign id.
+
+    Returns
+    -------
+    Path
+        The run sheet written (both kinds of runs; ``truth.json`` of both beside it).
+    """
+    rng = np.random.default_rng(SEED)
+    campaign = CampaignSpec(id=campaign_id, title=f"Benchmark: {runs} small runs",
+                            note="Synthetic benchmark campaign (bench/large_campaign.py).")
+    write_tensile_campaign(folder, small_tensile_runs(runs // 2, rng), campaign)
+    tensile = _sheet(folder), json.loads((folder / TRUTH_NAME).read_text(encoding="utf-8"))
+    write_engagement_campaign(folder, small_engagement_runs(runs - runs // 2, rng), campaign)
+    engagement = _sheet(folder), json.loads((folder / TRUTH_NAME).read_text(encoding="utf-8"))
+    chains = [table["catalog"] for sheet, _ in (tensile, engagement)
+              for table in sheet["chains"].values()]
+    wheels = {key: (table["teeth"], table["apex_angle_deg"])
+              for key, table in engagement[0]["wheels"].items()}
+    text = run_sheet_text(campaign, chains, tensile[0]["runs"] + engagement[0]["runs"], wheels)
+    (folder / RUN_SHEET_NAME).write_text(text, encoding="utf-8")
+    truth = {"campaign": campaign_id, "runs": {**tensile[1]["runs"], **engagement[1]["runs"]}}
+    (folder / TRUTH_NAME).write_text(json.dumps(truth, indent=2) + "\n", encoding="utf-8")
+    return folder / RUN_SHEET_NAME
+
+
 def main() -> None:
     """Write the campaign and say where it is."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", type=Path, required=True, help="folder to write into")
     parser.add_argument("--quick", action="store_true", help="the quick size")
+    parser.add_argument("--many", type=int, metavar="N",
+                        help="write instead one campaign of N small runs of both kinds")
     args = parser.parse_args()
     start = time.perf_counter()
+    if args.many:
+        sheet = write_many_small(args.out / f"bench-many-{args.many}", args.many,
+                                 f"bench-many-{args.many}")
+        print(f"{sheet}: {args.many} small runs, written in "
+              f"{time.perf_counter() - start:.0f} s")
+        return
     size = SIZES["quick" if args.quick else "full"]
     campaigns = write_campaign(args.out, size)
     print(f"{campaigns.tensile}: 16 tensile runs at {size.tensile_rate:g} Hz")

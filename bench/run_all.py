@@ -19,6 +19,10 @@ demo re-run                 the first ``chainbench run`` of a copy of the
 peak memory                 the decoded arrays of the campaign's largest log
 scale-out                   ``chainbench run --workers 1`` on the engagement
                             campaign (many runs)
+growth                      the time per run of a campaign of 100 small runs,
+                            against 1,000 (``--quick``: 30 and 300); with the
+                            campaign page's size and whether headless Chromium
+                            opens it (:mod:`bench_growth`)
 ==========================  ====================================================
 
 The machine's load average is printed with the figures: other work on the
@@ -63,6 +67,8 @@ from bench_campaign import (
     scale_out,
 )
 from bench_engagement import TARGET as DETECTION_TARGET
+from bench_growth import PAGE_TARGET, TIME_TARGET, measure, open_in_chromium
+from bench_growth import SIZES as GROWTH_SIZES
 from bench_ingest import ReadFigure
 from bench_ingest import measure as measure_reads
 from large_campaign import SIZES, CampaignSize, write_campaign
@@ -236,6 +242,32 @@ def demo_rerun_row(folder: Path) -> Row:
     )
 
 
+def growth_row(folder: Path, mode: str) -> Row:
+    """Row of the time per run of a large campaign of small runs against a small one."""
+    small, large = (measure(folder / "growth", runs) for runs in GROWTH_SIZES[mode])
+    browser = open_in_chromium(folder / "growth" / "processed" / f"bench-many-{large.runs}"
+                               / "report.html")
+    ratio = large.per_run / small.per_run
+    met = ratio <= TIME_TARGET and large.page_bytes < PAGE_TARGET and browser.startswith(
+        "opened")
+    return Row(
+        figure=f"growth, {small.runs} to {large.runs} runs",
+        measured=f"{large.per_run:.3f} s a run",
+        baseline=f"{small.per_run:.3f} s a run",
+        ratio=f"{ratio:.2f}x",
+        target=f"<= {TIME_TARGET:g}x; page < {PAGE_TARGET / 1e6:g} MB",
+        verdict=verdict(met),
+        peak=f"{large.peak_mib:.0f} MiB",
+        note=f"chainbench run on campaigns of small tensile and engagement runs; campaign page "
+             f"{large.page_bytes / 1e6:.2f} MB at {large.runs} runs, {large.run_pages} run pages "
+             f"of {large.run_pages_bytes / 1e6:.1f} MB in all; report build "
+             f"{1e3 * small.report_per_run:.0f} and {1e3 * large.report_per_run:.0f} ms a run; "
+             f"headless Chromium: {browser}",
+        values={"small": small._asdict(), "large": large._asdict(), "ratio": ratio,
+                "browser": browser},
+    )
+
+
 def memory_row(memory: PeakMemory, size: CampaignSize) -> Row:
     """Row of the peak memory of processing the engagement campaign."""
     return Row(
@@ -341,6 +373,8 @@ def main() -> None:
         rows.append(detection_row(mode.samples, mode.repeat))
         progress("campaign: generate, fits, re-run, memory, workers")
         rows += campaign_rows(folder, mode.campaign)
+        progress("growth: campaigns of many small runs")
+        rows.append(growth_row(folder, name))
     seconds, load_after = time.perf_counter() - start, os.getloadavg()[0]
     title = (f"chainbench {pipeline.__version__} performance ({name} mode, "
              f"{mode.samples:.0e}-sample logs; {os.cpu_count()} CPUs, Python "

@@ -5,7 +5,8 @@
    (:mod:`pipeline.results`) -> one netCDF file
 -> compare (:mod:`pipeline.compare`) -> ``summary.nc``, CSV tables (``summary.csv``
    per chain, ``specimens.csv`` per tensile specimen, ``impact_summary.csv``)
--> report (:mod:`pipeline.report`) -> ``report.html``,
+-> report (:mod:`pipeline.report`) -> ``report.html`` and a page per run in
+   ``report-runs/``,
 all in ``<project>/processed/<campaign id>/`` (``raw/`` is only read).
 
 * One bad run does not stop a campaign: its error is recorded, the other runs
@@ -46,7 +47,7 @@ from pipeline.errors import ChainbenchError, FitError, OutputError
 from pipeline.fit.impact_model import ImpactModelFit, fit_impact_model
 from pipeline.fit.stiffness import SpecimenStiffness
 from pipeline.plausibility import check_operating_points, check_specimens, excluded, flags_dataset
-from pipeline.report.build import build_report
+from pipeline.report.build import build_report, remove_report
 from pipeline.results import EngagementResult, RunResult, TensileResult, result_from_dataset
 from pipeline.results.notes import run_notes
 from pipeline.results.tensile import STRENGTH_VARIABLES
@@ -137,6 +138,7 @@ class _Plan:
     raw_sha256: str
     E0: float | None  #: chain stiffness of an engagement run [N]
     key: str
+    raw_bytes: int  #: size of the raw file [bytes]: on a cluster, the largest start first
 
 
 def default_output(campaign: RunSheet | str | Path) -> Path:
@@ -163,7 +165,8 @@ def _digest(document) -> str:
 
 
 def _plan(sheet: RunSheet, run: RunDef, output: Path, hashes: HashCache) -> _Plan:
-    raw_sha256 = hashes.sha256(existing_run_file(sheet, run))
+    raw = existing_run_file(sheet, run)
+    raw_sha256 = hashes.sha256(raw)
     E0 = chain_stiffness_for(sheet, run, output) if run.kind == "engagement" else None
     key = _digest({
         "raw_sha256": raw_sha256, "entry": sheet.entries[run.id], "E0": E0,
@@ -172,7 +175,7 @@ def _plan(sheet: RunSheet, run: RunDef, output: Path, hashes: HashCache) -> _Pla
         "campaign": sheet.campaign.model_dump(mode="json", include=RUN_CAMPAIGN_FIELDS),
         "code": code_fingerprint(),
     })
-    return _Plan(run, raw_sha256, E0, key)
+    return _Plan(run, raw_sha256, E0, key, raw.stat().st_size)
 
 
 def _stored(path: Path) -> dict[str, Any] | None:
@@ -201,6 +204,20 @@ def _process(sheet: RunSheet, plan: _Plan, output: Path, progress: Progress | No
     return write_atomic(dataset, layout.run_output(output, plan.run.id))
 
 
+def _run_task(sheet: RunSheet, plan: _Plan, output: Path) -> Path:
+    """:func:`_process` as a dask task: it reads its own raw file and returns the path of
+    the run file it wrote.
+
+    The run file is written under this process's netCDF lock, as in a serial run: inside
+    a worker, xarray would take a lock on the cluster for the write (two round trips to
+    the scheduler per variable), though no other task writes this file.
+    """
+    import dask
+
+    with dask.config.set(scheduler="synchronous"):
+        return _process(sheet, plan, output, None)
+
+
 def _failure(sheet: RunSheet, run: RunDef, error: Exception, debug: bool) -> RunFailure:
     """`error` of `run` as a recorded failure; an output that cannot be written is no fault
     of the run: it stops the campaign, before anything stored is touched."""
@@ -225,7 +242,8 @@ def run_failure(sheet: RunSheet, run: RunDef | None, error: Exception) -> RunFai
 
 def _execute(sheet: RunSheet, plans: list[_Plan], output: Path, progress: Progress | None,
              debug: bool, client: Client | None) -> tuple[dict[str, Path], list[RunFailure]]:
-    """Process `plans` serially, or as dask tasks on `client`."""
+    """Process `plans` serially, or as dask tasks on `client`, the largest raw files first
+    (the short runs fill in at the end, so that the workers finish together)."""
     done, failures = {}, []
     if client is None:
         for plan in plans:
@@ -236,8 +254,8 @@ def _execute(sheet: RunSheet, plans: list[_Plan], output: Path, progress: Progre
         return done, failures
     from distributed import as_completed
 
-    futures = {client.submit(_process, sheet, plan, output, None, key=f"run-{plan.key}"): plan
-               for plan in plans}
+    futures = {client.submit(_run_task, sheet, plan, output, key=f"run-{plan.key}"): plan
+               for plan in sorted(plans, key=lambda plan: plan.raw_bytes, reverse=True)}
     for future in as_completed(futures):
         plan = futures[future]
         try:
@@ -590,15 +608,16 @@ def process_campaign(
         result.summary.attrs[INPUT_KEY] = key
         written = _write_summary(result.summary, output)
         try:  # the results are written: a failing report loses nothing but itself
-            result.report = build_report(output)
-            written.append(layout.REPORT)
+            report = build_report(output)
+            result.report = report.page
+            written += report.outputs  # the campaign page and every run's page
         except OutputError:
             raise
         except Exception as error:
             if debug and not isinstance(error, ChainbenchError):
                 raise
             result.report_error = RunFailure("report", error).message
-            (output / layout.REPORT).unlink(missing_ok=True)  # an old report is not current
+            remove_report(output)  # an old report is not current
         _write_manifest(output, key, written)
     return result
 

@@ -58,7 +58,7 @@ def command(
     try:
         folder = processed_folder(campaign)
         with campaign_lock(folder):  # not while a run writes the same outputs
-            report = build_report(folder)
+            report = build_report(folder).page
     except ChainbenchError as error:
         if debug:
             raise

@@ -1,14 +1,18 @@
-"""The campaign report: ``processed/<campaign>/report.html`` from the processed files alone.
+"""The campaign report: ``report.html`` and ``report-runs/<run id>.html`` from the processed files.
 
 :func:`build_report` reads ``summary.nc`` and the run files of a processed
 campaign folder (never ``raw/``), builds the figures (matplotlib, rendered
 as deterministic inline SVG by :func:`pipeline.report.render.svg`) and fills
-the jinja2 template ``templates/report.html.j2``. The result is one
-self-contained HTML file: CSS inline, no script, no network.
+the jinja2 templates of ``templates/``. Every page is a self-contained HTML
+file: CSS inline, no script, no network.
 
-Sections: summary (what was tested, every check with its verdict), stiffness
-(Paper 001), impact (Paper 000), design checks of Papers 002-004 where the
-campaign's chains fit them, published values not reproduced, provenance.
+The campaign page ``report.html`` has the campaign-level figures and tables:
+summary (what was tested, every check with its verdict), the run table (one
+row per run, linking its page), stiffness (Paper 001), impact (Paper 000),
+design checks of Papers 002-004 where the campaign's chains fit them,
+published values not reproduced, provenance. Its size grows with the runs by
+table rows only: the per-run figures are on the runs' own pages
+(:mod:`pipeline.report.run_pages`), written one run at a time before it.
 
 Safety: the template autoescapes everything; only the SVG of our own renderer
 is inserted verbatim (``|safe`` on ``svg`` fields), and matplotlib escapes
@@ -16,7 +20,7 @@ the text it draws, so a string from an input (run id, specimen, chain key,
 title, note, error message) is always shown as text.
 
 Reproducible: the same processed folder and the same `created` give the same
-bytes; the creation time appears on one line of the report.
+bytes; the creation time appears on one line of each page.
 
 The report only formats: every number, verdict, sentence about a fit and
 setting it shows is read from the processed files (the settings through
@@ -26,14 +30,13 @@ setting it shows is read from the processed files (the settings through
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Iterable, Sequence
+from contextlib import suppress
 from dataclasses import dataclass
 from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
-import jinja2
 import numpy as np
 import xarray as xr
 
@@ -41,19 +44,40 @@ from pipeline import __version__
 from pipeline.acceptance import CHECKS
 from pipeline.errors import ChainbenchError
 from pipeline.report import design_figures, impact_figures, stiffness_figures
+from pipeline.report.formatting import (
+    MISSING,
+    environment,
+    interval,
+    kilonewton_interval,
+    kilonewtons,
+    natural_key,
+    number,
+    percent,
+    plain_number,
+    timestamp,
+    verdict_class,
+)
 from pipeline.report.recorded import level, recorded
 from pipeline.report.render import report_style, svg
+from pipeline.report.run_pages import (
+    RunFile,
+    RunStatus,
+    campaign_runs,
+    plausibility_flags,
+    remove_stale_pages,
+    run_rows,
+    run_statuses,
+    specimen_row,
+    write_run_pages,
+)
 from pipeline.results.notes import lines
 from pipeline.results.tensile import STRENGTH_VARIABLES
 from pipeline.store import layout
 from pipeline.store.netcdf import read_dataset, write_text_atomic
 from pipeline.units import from_si
 
-#: The jinja2 template (``pipeline/report/templates``).
+#: The jinja2 template of the campaign page (``pipeline/report/templates``).
 TEMPLATE_NAME = "report.html.j2"
-
-#: Shown where a value is missing (NaN).
-MISSING = "–"
 
 #: How each acceptance check reads in the report.
 ACCEPTANCE_LABELS = {
@@ -62,87 +86,6 @@ ACCEPTANCE_LABELS = {
     "elongation_at_proof": "elongation at proof force at most the maximum",
     "elongation_at_fracture": "elongation at fracture at least the minimum",
 }
-
-
-@dataclass(frozen=True)
-class RunFile:
-    """A processed run file of the campaign and its global attributes."""
-
-    path: Path
-    attrs: dict[str, Any]
-
-    @property
-    def run_id(self) -> str:
-        return str(self.attrs.get("run_id", self.path.stem))
-
-    @property
-    def kind(self) -> str:
-        return str(self.attrs.get("kind", ""))
-
-    def load(self) -> xr.Dataset:
-        """The whole dataset, in memory."""
-        return read_dataset(self.path)
-
-
-def number(value: float, digits: int = 4) -> str:
-    """`value` to `digits` significant digits, thin-space thousands; :data:`MISSING` for NaN."""
-    value = float(value)
-    if not math.isfinite(value):
-        return MISSING
-    if value == 0:
-        return "0"
-    decimals = max(0, digits - 1 - math.floor(math.log10(abs(value))))
-    return f"{value:,.{decimals}f}".replace(",", "\u2009")
-
-
-def plain_number(value: float) -> str:
-    """`value` in the shortest form (``6``, ``20``, ``2.54``); :data:`MISSING` for NaN."""
-    value = float(value)
-    return f"{value:.6g}" if math.isfinite(value) else MISSING
-
-
-def percent(value: float, decimals: int = 2) -> str:
-    """A ratio as a percentage with `decimals` decimals (``0.0586`` -> ``"5.86 %"``)."""
-    value = float(value)
-    return f"{100 * value:.{decimals}f} %" if math.isfinite(value) else MISSING
-
-
-def interval(low: float, high: float, format_value=number) -> str:
-    """``low … high`` (or :data:`MISSING`)."""
-    if not (math.isfinite(float(low)) and math.isfinite(float(high))):
-        return MISSING
-    return f"{format_value(low)} … {format_value(high)}"
-
-
-def kilonewtons(value: float) -> str:
-    """A force [N] in kN, 5 significant digits."""
-    return number(float(value) / 1e3, 5)
-
-
-def timestamp(created: datetime) -> str:
-    """ISO 8601 UTC stamp of `created` (a naive time is taken as UTC)."""
-    if created.tzinfo is None:
-        created = created.replace(tzinfo=UTC)
-    return created.astimezone(UTC).strftime("%Y-%m-%dT%H:%M:%SZ")
-
-
-def natural_key(text: str) -> list[int | str]:
-    """Sort key putting ``E8-20`` before ``E10-20``: digit runs compare as numbers."""
-    return [int(part) if part.isdigit() else part for part in re.split(r"(\d+)", text)]
-
-
-def campaign_runs(output_dir: Path, summary: xr.Dataset) -> list[RunFile]:
-    """The run files the summary was made from (its ``run`` labels), in natural order of ids.
-
-    Files of runs since removed from the run sheet, or of earlier attempts of
-    runs that failed this time, are not results of this summary and are not shown.
-    """
-    runs = []
-    for run_id in summary["run"].values if "run" in summary.coords else []:
-        path = output_dir / f"{run_id}.nc"
-        with xr.open_dataset(path, engine="netcdf4") as dataset:
-            runs.append(RunFile(path, dict(dataset.attrs)))
-    return sorted(runs, key=lambda run: natural_key(run.run_id))
 
 
 def _band(summary: xr.Dataset) -> tuple[float, float]:
@@ -183,10 +126,6 @@ def _campaign(summary: xr.Dataset, created: datetime) -> dict[str, Any]:
     }
 
 
-def _status(passed: bool | None) -> str:
-    return {True: "pass", False: "fail", None: "info"}[passed]
-
-
 def _band_checks(summary: xr.Dataset) -> Iterable[dict[str, str]]:
     low, high = _band(summary)
     for chain in summary["chain"].values:
@@ -199,7 +138,7 @@ def _band_checks(summary: xr.Dataset) -> Iterable[dict[str, str]]:
                   f"({level(row['discrepancy_ci_low'].attrs)} interval {spread})"
                   if passed is not None else "no experimental or no theoretical E0")
         yield {"check": f"E0 of chain {chain} within {100 * low:g} to {100 * high:g} % "
-                        "above theory", "result": result, "status": _status(passed),
+                        "above theory", "result": result, "status": verdict_class(passed),
                "detail": detail}
 
 
@@ -208,7 +147,7 @@ def _impact_checks(summary: xr.Dataset) -> Iterable[dict[str, str]]:
     fitted = math.isfinite(k)
     k_level = level(summary["k_fit_ci_low"].attrs)
     yield {"check": "impact model (Paper 000, eq. (16)) fitted to the measured N_u1, N_u2",
-           "result": "fitted" if fitted else "not fitted", "status": _status(fitted),
+           "result": "fitted" if fitted else "not fitted", "status": verdict_class(fitted),
            "detail": (f"k = {number(k)} ({k_level} interval {interval(low, high)})" if fitted
                       else "see the notes")}
     if fitted:
@@ -216,7 +155,7 @@ def _impact_checks(summary: xr.Dataset) -> Iterable[dict[str, str]]:
         yield {"check": f"Ryabov's k = {float(recorded(summary.attrs, 'k_theory')):g} inside "
                         f"the {k_level} interval of the fitted k",
                "result": "yes" if inside else "no",
-               "status": _status(inside), "detail": f"interval {interval(low, high)}"}
+               "status": verdict_class(inside), "detail": f"interval {interval(low, high)}"}
 
 
 _VERDICT = {1: ("pass", "pass"), 0: ("fail", "fail"), -1: ("not measured", "info")}
@@ -257,12 +196,9 @@ def _plausibility_checks(summary: xr.Dataset) -> Iterable[dict[str, str]]:
                         "strain limit, the other specimens)", "result": "yes",
                "status": "pass", "detail": "no value far from what is known"}
         return
-    for run, quantity, accepted, message in zip(
-            summary["flag_run"].values, summary["flag_quantity"].values,
-            summary["flag_accepted"].values, summary["flag_message"].values, strict=True):
-        yield {"check": f"run {run}: {quantity} plausible",
-               "result": "accepted in the run sheet" if accepted else "implausible",
-               "status": "info" if accepted else "fail", "detail": str(message)}
+    for flag in plausibility_flags(summary):
+        yield {"check": f"run {flag['run']}: {flag['quantity']} plausible",
+               "result": flag["result"], "status": flag["status"], "detail": flag["message"]}
 
 
 def _checks(summary: xr.Dataset, runs: Sequence[RunFile]) -> list[dict[str, str]]:
@@ -270,7 +206,7 @@ def _checks(summary: xr.Dataset, runs: Sequence[RunFile]) -> list[dict[str, str]
     failures = _failures(summary)
     total = len(runs) + len(failures)
     rows = [{"check": "runs processed", "result": f"{len(runs)} of {total}",
-             "status": _status(not failures),
+             "status": verdict_class(not failures),
              "detail": "" if not failures else f"{len(failures)} failed, listed below"}]
     if _has(summary, "chain"):
         rows.extend(_band_checks(summary))
@@ -308,8 +244,7 @@ def _chain_rows(summary: xr.Dataset) -> list[dict[str, str]]:
             "chain": str(chain),
             "specimens": str(int(row["n_specimens"])),
             "E0_exp": kilonewtons(row["E0_exp"]),
-            "E0_exp_interval": interval(row["E0_exp_ci_low"] / 1e3, row["E0_exp_ci_high"] / 1e3,
-                                        lambda v: number(v, 5)),
+            "E0_exp_interval": kilonewton_interval(row["E0_exp_ci_low"], row["E0_exp_ci_high"]),
             "E0_theory": kilonewtons(row["E0_theory"]),
             "E0_theory_exact": kilonewtons(row["E0_theory_exact"]),
             "published_exp": kilonewtons(published_exp),
@@ -323,25 +258,9 @@ def _chain_rows(summary: xr.Dataset) -> list[dict[str, str]]:
             "published_discrepancy": percent(row["discrepancy_published"]),
             "verdict": ("not checked" if not math.isfinite(verdict)
                         else "in band" if verdict else "out of band"),
-            "status": _status(None if not math.isfinite(verdict) else bool(verdict)),
+            "status": verdict_class(None if not math.isfinite(verdict) else bool(verdict)),
         })
     return rows
-
-
-def _specimen_row(run: xr.Dataset) -> dict[str, str]:
-    return {
-        "run": str(run.attrs.get("run_id", "")),
-        "specimen": str(run.attrs.get("specimen", "")),
-        "chain": str(run.attrs.get("chain", "")),
-        "E0": kilonewtons(run["specimen_E0"]),
-        "E0_interval": interval(run["specimen_E0_ci_low"] / 1e3, run["specimen_E0_ci_high"] / 1e3,
-                                lambda v: number(v, 5)),
-        "cycles": plain_number(run["specimen_n_cycles"]),
-        "E0_first": kilonewtons(run["specimen_E0_first"]),
-        "E0_unloading": kilonewtons(run["specimen_E0_unloading"]),
-        "birge": number(run["specimen_birge_ratio"], 3),
-        "bending": percent(run["gauge_disagreement"], 1),
-    }
 
 
 def _percent_of_length(value: float) -> str:
@@ -374,68 +293,27 @@ def _strength_rows(summary: xr.Dataset) -> list[dict[str, str]]:
     return rows
 
 
-def _channel_rows(run: xr.Dataset) -> list[dict[str, str]]:
-    rows = []
-    for channel in run["channel"].values if "channel" in run.dims else []:
-        row = run.sel(channel=channel)
-        removed = int(row["channel_removed_at"])
-        rows.append({
-            "channel": str(channel), "column": str(row["channel_column"].values),
-            "kind": str(row["channel_kind"].values),
-            "stiffness": kilonewtons(row["channel_stiffness"]),
-            "used": "yes" if int(row["channel_used"]) else "no",
-            "removed": (f"{row['channel_removal'].values} at sample {removed}" if removed >= 0
-                        else MISSING),
-        })
-    return rows
-
-
-def _fit_rows(run: xr.Dataset) -> list[dict[str, str]]:
-    rows = []
-    for cycle in run["cycle"].values:
-        for branch in run["branch"].values:
-            fit = run.sel(cycle=cycle, branch=branch)
-            rows.append({
-                "cycle": str(int(cycle)), "branch": str(branch),
-                "E0": kilonewtons(fit["fit_E0"]),
-                "interval": interval(fit["fit_E0_ci_low"] / 1e3, fit["fit_E0_ci_high"] / 1e3,
-                                     lambda v: number(v, 5)),
-                "window": interval(fit["fit_window_low"] / 1e3, fit["fit_window_high"] / 1e3,
-                                   lambda v: number(v, 3)),
-                "points": plain_number(fit["fit_n_points"]),
-                "r2": f"{float(fit['fit_r2']):.6f}" if math.isfinite(float(fit["fit_r2"]))
-                else MISSING,
-                "rms": number(fit["fit_residual_rms"], 3),
-            })
-    return rows
-
-
 def _stiffness(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
-    """Figures and tables of the stiffness section."""
-    chains = [str(chain) for chain in summary["chain"].values]
-    tensile = [run.load() for run in runs if run.kind == "tensile"]
-    tensile.sort(key=lambda run: (chains.index(run.attrs["chain"])
-                                  if run.attrs.get("chain") in chains else len(chains),
-                                  natural_key(str(run.attrs.get("run_id")))))
+    """Figures and tables of the stiffness section (the tensile runs' results, one at a
+    time; the overview keeps the fits it draws)."""
+    order = {str(chain): index for index, chain in enumerate(summary["chain"].values)}
+    tensile = sorted((run for run in runs if run.kind == "tensile"),
+                     key=lambda run: (order.get(run.attrs.get("chain"), len(order)),
+                                      natural_key(run.run_id)))
+    specimens, drawn = [], []
+    for run in tensile:
+        results = run.results()
+        specimens.append(specimen_row(results))
+        drawn.append(results[[name for name in stiffness_figures.OVERVIEW_VARIABLES
+                              if name in results]])
     low, high = _band(summary)
     return {
         "band": f"{100 * low:g} to {100 * high:g} %",
         "level": level(summary["E0_exp_ci_low"].attrs),
-        "overview_svg": svg(stiffness_figures.stiffness_by_specimen(summary, tensile)),
+        "overview_svg": svg(stiffness_figures.stiffness_by_specimen(summary, drawn)),
         "chains": _chain_rows(summary),
-        "specimens": [_specimen_row(run) for run in tensile],
+        "specimens": specimens,
         "strength": _strength_rows(summary),
-        "runs": [{
-            **_specimen_row(run),
-            "single_pull": bool(int(run["single_pull"])) if "single_pull" in run else False,
-            "level": level(run["fit_E0_ci_low"].attrs),
-            "channels": _channel_rows(run),
-            "warnings": "; ".join([*lines(run.attrs.get("warnings", "")),
-                                   *lines(run.attrs.get("ingest_warnings", ""))]),
-            "curve_svg": svg(stiffness_figures.force_strain(run)),
-            "residual_svg": svg(stiffness_figures.fit_residuals(run)),
-            "fits": _fit_rows(run),
-        } for run in tensile],
     }
 
 
@@ -457,15 +335,8 @@ def _point_rows(summary: xr.Dataset) -> list[dict[str, str]]:
 
 def _impact(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
     """Figures and tables of the impact section."""
-    by_id = {run.run_id: run for run in runs if run.kind == "engagement"}
-    zoomed = next((by_id[str(point)] for point in summary["operating_point"].values
-                   if str(point) in by_id), None)
     figures, k_theory = [], f"{float(recorded(summary.attrs, 'k_theory')):g}"
     with report_style():
-        if zoomed is not None:
-            figures.append({"caption": f"Run {zoomed.run_id}: a stretch of the branch-tension "
-                                       "log with the detected impacts marked.",
-                            "svg": svg(impact_figures.impact_zoom(zoomed.load()))})
         figures.append({"caption": "Measured impact tensions against wheel speed, with the "
                                    f"model for k = {k_theory} and for the fitted k.",
                         "svg": svg(impact_figures.impact_vs_omega(summary))})
@@ -474,7 +345,8 @@ def _impact(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
                         "svg": svg(impact_figures.impact_vs_apex(summary))})
     k = {name: float(summary[name]) for name in
          ("k_fit", "k_fit_stderr", "k_fit_ci_low", "k_fit_ci_high", "k_fit_chi2_reduced")}
-    comparison = sorted({str(run.attrs.get("comparison", "")) for run in by_id.values()} - {""})
+    comparison = sorted({str(run.attrs.get("comparison", "")) for run in runs
+                         if run.kind == "engagement"} - {""})
     return {
         "figures": figures,
         "points": _point_rows(summary),
@@ -585,30 +457,34 @@ def _provenance(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
     }
 
 
-def report_context(summary: xr.Dataset, runs: Sequence[RunFile], created: datetime
-                   ) -> dict[str, Any]:
-    """Everything the template shows, as strings, lists and dicts (figures as SVG).
+def report_context(summary: xr.Dataset, runs: Sequence[RunFile],
+                   statuses: dict[str, RunStatus], created: datetime) -> dict[str, Any]:
+    """Everything the campaign page shows, as strings, lists and dicts (figures as SVG).
 
     Parameters
     ----------
     summary : xarray.Dataset
         The campaign's ``summary.nc``.
     runs : sequence of RunFile
-        Its run files (:func:`campaign_runs`).
+        Its run files (:func:`~pipeline.report.run_pages.campaign_runs`).
+    statuses : dict
+        Run id -> its status (:func:`~pipeline.report.run_pages.run_statuses`).
     created : datetime
         Creation time of the report.
 
     Returns
     -------
     dict
-        ``campaign``, ``checks``, ``notes``, ``stiffness`` (or None),
-        ``impact`` (or None), ``design``, ``not_reproduced``, ``provenance``.
+        ``campaign``, ``checks``, ``notes``, ``runs`` (the run table),
+        ``stiffness`` (or None), ``impact`` (or None), ``design``,
+        ``not_reproduced``, ``provenance``.
     """
     notes = [line for line in str(summary.attrs.get("notes", "")).split("\n") if line]
     return {
         "campaign": _campaign(summary, created),
         "checks": _checks(summary, runs),
         "notes": notes,
+        "runs": run_rows(summary, runs, statuses),
         "stiffness": _stiffness(summary, runs) if _has(summary, "chain") else None,
         "impact": _impact(summary, runs) if _has(summary, "operating_point") else None,
         "design": _design(summary),
@@ -617,20 +493,25 @@ def report_context(summary: xr.Dataset, runs: Sequence[RunFile], created: dateti
     }
 
 
-def environment() -> jinja2.Environment:
-    """The jinja2 environment of the report: package templates, autoescape on."""
-    return jinja2.Environment(
-        loader=jinja2.PackageLoader("pipeline.report", "templates"),
-        autoescape=True,
-        undefined=jinja2.StrictUndefined,
-        trim_blocks=True,
-        lstrip_blocks=True,
-        keep_trailing_newline=True,
-    )
+@dataclass(frozen=True)
+class Report:
+    """The files of a campaign's report."""
+
+    page: Path  #: the campaign page, ``report.html``
+    run_pages: tuple[Path, ...]  #: the runs' pages, ``report-runs/<run id>.html``
+
+    @property
+    def outputs(self) -> list[str]:
+        """The files' names relative to the campaign folder (``/``-separated), the
+        campaign page first: the entries of the folder's manifest."""
+        return [self.page.name, *(f"{layout.RUN_PAGES}/{page.name}" for page in self.run_pages)]
 
 
-def build_report(output_dir: str | Path, created: datetime | None = None) -> Path:
-    """Build ``report.html`` of a processed campaign from its processed files alone.
+def build_report(output_dir: str | Path, created: datetime | None = None) -> Report:
+    """Build the report of a processed campaign from its processed files alone.
+
+    Writes every run's page into ``report-runs/`` (deleting the pages of runs
+    no longer in the summary), then the campaign page ``report.html`` linking them.
 
     Parameters
     ----------
@@ -643,8 +524,8 @@ def build_report(output_dir: str | Path, created: datetime | None = None) -> Pat
 
     Returns
     -------
-    Path
-        The report written (atomically) into `output_dir`.
+    Report
+        The pages written (each atomically) into `output_dir`.
 
     Raises
     ------
@@ -659,6 +540,17 @@ def build_report(output_dir: str | Path, created: datetime | None = None) -> Pat
             hint="process the campaign first: chainbench run raw/<campaign>")
     summary = read_dataset(summary_path)
     runs = campaign_runs(output_dir, summary)
-    context = report_context(summary, runs, created or datetime.now(UTC))
+    statuses = run_statuses(summary, runs)
+    context = report_context(summary, runs, statuses, created or datetime.now(UTC))
+    pages = write_run_pages(output_dir, summary, runs, statuses, context["campaign"])
     html = environment().get_template(TEMPLATE_NAME).render(**context)
-    return write_text_atomic(html, output_dir / layout.REPORT)
+    return Report(write_text_atomic(html, output_dir / layout.REPORT), tuple(pages))
+
+
+def remove_report(output_dir: str | Path) -> None:
+    """Delete the report of a campaign folder: ``report.html`` and every run's page."""
+    output_dir = Path(output_dir)
+    (output_dir / layout.REPORT).unlink(missing_ok=True)
+    remove_stale_pages(output_dir / layout.RUN_PAGES, set())
+    with suppress(OSError):  # a folder someone put other files into is left
+        (output_dir / layout.RUN_PAGES).rmdir()

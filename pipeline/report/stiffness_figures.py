@@ -31,6 +31,13 @@ MAX_POINTS = 600
 #: Force bins over which the residuals of one fit are averaged.
 RESIDUAL_BINS = 30
 
+#: Most specimens of a chain named on the stiffness overview's axis; more are numbered by
+#: their place alone (the run table names them).
+MAX_SPECIMEN_LABELS = 24
+
+#: The variables of a tensile run file the stiffness overview draws.
+OVERVIEW_VARIABLES = ("fit_E0", "fit_E0_ci_low", "fit_E0_ci_high", "single_pull")
+
 #: Newtons per kilonewton: forces are drawn in kN.
 KN = 1e3
 
@@ -183,6 +190,39 @@ def _specimen_label(run: xr.Dataset) -> str:
     return plain(str(run.attrs.get("specimen") or run.attrs.get("run_id", "?")))
 
 
+def _loading_points(runs: Sequence[xr.Dataset]) -> dict[tuple[bool, int], np.ndarray]:
+    """The finite loading fits of `runs` grouped by (single pull, cycle).
+
+    Each group holds one row per fit: position on the specimen axis (the run's
+    index, the cycles of a run spread over +-0.2 around it), E0, and the lower
+    and upper ends of its interval [N]; groups in the order they first appear.
+    """
+    groups: dict[tuple[bool, int], list[np.ndarray]] = {}
+    for position, run in enumerate(runs):
+        pull = "single_pull" in run and bool(int(run["single_pull"]))
+        loading = {name: run[name].sel(branch="loading").values
+                   for name in ("fit_E0", "fit_E0_ci_low", "fit_E0_ci_high")}
+        cycles = run["cycle"].values
+        offsets = np.linspace(-0.2, 0.2, cycles.size) if cycles.size > 1 else np.zeros(1)
+        for index, cycle in enumerate(cycles):
+            row = np.array([position + offsets[index], *(values[index]
+                                                         for values in loading.values())])
+            if np.isfinite(row[1]):
+                groups.setdefault((pull, int(cycle)), []).append(row)
+    return {key: np.array(rows) for key, rows in groups.items()}
+
+
+def _specimen_axis(ax, runs: Sequence[xr.Dataset]) -> None:
+    """One tick per specimen, labelled up to :data:`MAX_SPECIMEN_LABELS` specimens."""
+    ax.set_xlim(-0.6, len(runs) - 0.4)
+    if len(runs) <= MAX_SPECIMEN_LABELS:
+        ax.set_xticks(range(len(runs)), [_specimen_label(run) for run in runs])
+        ax.set_xlabel("specimen")
+    else:
+        ax.set_xticks([])
+        ax.set_xlabel(f"{len(runs)} specimens, in the order of the run table")
+
+
 def _chain_panel(ax, summary: xr.Dataset, chain: str, runs: Sequence[xr.Dataset],
                  band: tuple[float, float]) -> None:
     """One chain: per-cycle loading E0 of its specimens, mean, interval, theory and band."""
@@ -199,28 +239,18 @@ def _chain_panel(ax, summary: xr.Dataset, chain: str, runs: Sequence[xr.Dataset]
                    color="C0", alpha=0.25, lw=0,
                    label=f"{level(summary['E0_exp_ci_low'].attrs)} interval of the chain mean")
         ax.axhline(mean / KN, color="C0", lw=1.4, label="chain mean of the specimens")
-    for position, run in enumerate(runs):
-        pull = "single_pull" in run and bool(int(run["single_pull"]))
-        cycles = run["cycle"].values
-        offsets = np.linspace(-0.2, 0.2, cycles.size) if cycles.size > 1 else np.zeros(1)
-        for offset, cycle in zip(offsets, cycles, strict=True):
-            fit = run.sel(cycle=cycle, branch="loading")
-            e0 = float(fit["fit_E0"])
-            if not np.isfinite(e0):
-                continue
-            error = np.array([[e0 - float(fit["fit_E0_ci_low"])],
-                              [float(fit["fit_E0_ci_high"]) - e0]]) / KN
-            if pull:  # its one loading is its E0
-                ax.errorbar(position + offset, e0 / KN, yerr=error, fmt="s", ms=5, capsize=2,
-                            color="C3", label="single pull (its loading)")
-                continue
-            ax.errorbar(position + offset, e0 / KN, yerr=error, fmt="o", ms=5, capsize=2,
-                        color=_cycle_colour(int(cycle)),
-                        mfc="white" if int(cycle) == 1 else _cycle_colour(int(cycle)),
-                        label=_cycle_label(int(cycle)))
-    ax.set_xticks(range(len(runs)), [_specimen_label(run) for run in runs])
-    ax.set_xlim(-0.6, len(runs) - 0.4)
-    ax.set_xlabel("specimen")
+    for (pull, cycle), points in _loading_points(runs).items():
+        x, e0, low, high = points.T
+        error = np.array([e0 - low, high - e0]) / KN
+        if pull:  # its one loading is its E0
+            ax.errorbar(x, e0 / KN, yerr=error, fmt="s", ms=5, capsize=2, color="C3",
+                        label="single pull (its loading)")
+            continue
+        ax.errorbar(x, e0 / KN, yerr=error, fmt="o", ms=5, capsize=2,
+                    color=_cycle_colour(cycle),
+                    mfc="white" if cycle == 1 else _cycle_colour(cycle),
+                    label=_cycle_label(cycle))
+    _specimen_axis(ax, runs)
     ax.set_ylabel("stiffness E0 [kN]")
     ax.set_title(f"chain {plain(chain)}")
     if np.isfinite(theory):
@@ -239,7 +269,8 @@ def stiffness_by_specimen(summary: xr.Dataset, runs: Sequence[xr.Dataset]) -> Fi
         intervals in their ``confidence_level``) and attribute ``band``
         (``"0.03 0.06"``).
     runs : sequence of xarray.Dataset
-        The processed tensile runs (attribute ``chain`` names their chain).
+        The processed tensile runs, or their :data:`OVERVIEW_VARIABLES` alone
+        (attribute ``chain`` names their chain).
 
     Returns
     -------
@@ -256,9 +287,11 @@ def stiffness_by_specimen(summary: xr.Dataset, runs: Sequence[xr.Dataset]) -> Fi
     with report_style():
         figure = Figure(figsize=(5.0 * columns, 3.6 * rows + 0.9), layout="constrained")
         axes = np.atleast_1d(figure.subplots(rows, columns, squeeze=False)).ravel()
+        by_chain: dict[str, list[xr.Dataset]] = {chain: [] for chain in chains}
+        for run in runs:
+            by_chain.get(run.attrs.get("chain"), []).append(run)
         for ax, chain in zip(axes, chains, strict=False):
-            chain_runs = [run for run in runs if run.attrs.get("chain") == chain]
-            _chain_panel(ax, summary, chain, chain_runs, band)
+            _chain_panel(ax, summary, chain, by_chain[chain], band)
         for ax in axes[len(chains):]:
             ax.set_visible(False)
         labels: dict[str, object] = {}

@@ -20,6 +20,8 @@ CHAIN_TABLE = "summary.csv"  #: one row per chain
 SPECIMEN_TABLE = "specimens.csv"  #: one row per tensile specimen
 IMPACT_TABLE = "impact_summary.csv"  #: one row per engagement operating point
 REPORT = "report.html"  #: the campaign report
+#: The folder of the report's per-run pages (``<run id>.html``), beside ``report.html``.
+RUN_PAGES = "report-runs"
 LOCK = ".lock"  #: held while a process writes the folder
 #: The input key the campaign outputs were built from; written after the last of them.
 MANIFEST = ".outputs.json"
