@@ -324,22 +324,42 @@ def _result_json(result: CampaignResult) -> dict:
     }
 
 
+#: The environment of a local cluster's worker processes, set before each one starts (as
+#: dask's ``distributed.nanny.pre-spawn-environ``): one thread for the numerical libraries
+#: (BLAS, OpenMP, pyarrow), the workers being the parallelism, and no
+#: ``MALLOC_TRIM_THRESHOLD_``: dask's default sets it, which turns off glibc's adaptive
+#: mmap threshold, so that every array over 128 KiB is mapped and zeroed afresh, and a run
+#: takes twice its serial time (docs/quality.md, scale-out).
+WORKER_ENVIRONMENT = {"OMP_NUM_THREADS": 1, "OPENBLAS_NUM_THREADS": 1, "MKL_NUM_THREADS": 1}
+#: What each worker of a local cluster imports once, as it starts: the stages of a run.
+WORKER_PRELOAD = ["pipeline.campaign"]
+
+
 @contextmanager
 def _dask_client(workers: int | None, scheduler: str | None):
-    """A dask.distributed client: a local cluster of `workers` processes, or `scheduler`'s."""
+    """A dask.distributed client: a local cluster of `workers` processes, or `scheduler`'s.
+
+    The local cluster's workers start in the background, importing the stages
+    (:data:`WORKER_PRELOAD`), while this process loads its own and plans the
+    runs; the runs submitted meanwhile wait for them.
+    """
     if workers is None and scheduler is None:
         yield None
         return
     if workers is not None and scheduler is not None:
         raise typer.BadParameter("give --workers or --scheduler, not both")
+    import dask
     from distributed import Client, LocalCluster
 
     if scheduler is not None:
         with Client(scheduler) as client:
             yield client
         return
-    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                      dashboard_address=None) as cluster, Client(cluster) as client:
+    with (dask.config.set({"distributed.nanny.pre-spawn-environ": WORKER_ENVIRONMENT}),
+          LocalCluster(n_workers=0, threads_per_worker=1, processes=True,
+                       dashboard_address=None, preload=WORKER_PRELOAD) as cluster,
+          Client(cluster) as client):
+        cluster.scale(workers)  # returns at once: the workers start in the background
         yield client
 
 

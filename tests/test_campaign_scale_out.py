@@ -1,0 +1,103 @@
+"""``chainbench run --workers N``: how the local cluster runs a campaign.
+
+Its workers use one thread for the numerical libraries and glibc's own memory
+handling, and import the stages as they start; the runs are submitted largest
+raw file first; a run task writes its run file with no lock on the cluster;
+an engagement campaign gives the serial result (docs/quality.md, scale-out).
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import sys
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+import xarray as xr
+
+from pipeline.campaign import process_campaign
+from pipeline.cli.run import _dask_client
+from pipeline.store.netcdf import read_dataset
+
+#: The environment variables the workers are started with, and their expected values.
+WORKER_ENVIRONMENT = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1",
+                      "MKL_NUM_THREADS": "1", "MALLOC_TRIM_THRESHOLD_": None}
+#: The tensile runs of the campaign, by their raw files, largest first (asserted below).
+FILES_BY_SIZE = ["T18-1.csv", "T18-2.csv", "T18-3.csv", "T18-4.csv"]
+
+
+@pytest.fixture(scope="module")
+def client() -> Iterator:
+    """The CLI's local cluster of one worker (started as ``chainbench run`` starts it)."""
+    with pytest.MonkeyPatch.context() as patch:
+        # an earlier cluster of the session leaves dask's defaults in os.environ
+        patch.delenv("MALLOC_TRIM_THRESHOLD_", raising=False)
+        with _dask_client(1, None) as client:
+            client.wait_for_workers(1)
+            yield client
+
+
+def _worker_state(dask_worker) -> tuple[dict[str, str | None], bool, int]:
+    """A worker's environment, whether it has loaded the stages, and its tasks run."""
+    environment = {name: os.environ.get(name) for name in WORKER_ENVIRONMENT}
+    return environment, "pipeline.runs" in sys.modules, dask_worker.state.executed_count
+
+
+def test_workers_start_with_one_thread_and_the_stages_loaded(client):
+    (environment, stages_loaded, tasks_run), = client.run(_worker_state).values()
+    assert tasks_run == 0
+    assert environment == WORKER_ENVIRONMENT
+    assert stages_loaded
+
+
+@pytest.fixture(scope="module")
+def reordered(simulated, tmp_path_factory) -> Path:
+    """The 4-run tensile campaign with the raw files given to the runs in reverse: run
+    T18-1 reads the smallest file, T18-4 the largest."""
+    folder = tmp_path_factory.mktemp("raw") / "c18"
+    shutil.copytree(simulated("tensile", "--specimens", "4", "--seed", "3", "--campaign",
+                              "c18"), folder)
+    sizes = [(folder / name).stat().st_size for name in FILES_BY_SIZE]
+    assert sizes == sorted(sizes, reverse=True) and len(set(sizes)) == 4
+    reverse = dict(zip(FILES_BY_SIZE, reversed(FILES_BY_SIZE), strict=True))
+    sheet = folder / "campaign.toml"
+    text = re.sub(r'file = "(T18-\d\.csv)"', lambda match: f'file = "{reverse[match[1]]}"',
+                  sheet.read_text(encoding="utf-8"))
+    sheet.write_text(text, encoding="utf-8")
+    return folder
+
+
+def test_runs_start_largest_raw_file_first(client, reordered, tmp_path):
+    finished = []
+    result = process_campaign(reordered, tmp_path / "out", client=client,
+                              progress=lambda run_id, stage: finished.append(run_id))
+    assert not result.failures
+    assert finished == ["T18-4", "T18-3", "T18-2", "T18-1"]  # one worker: in submission order
+
+
+def _semaphores(dask_scheduler) -> list[str]:
+    """The names of the locks taken on the cluster (dask semaphores)."""
+    return list(dask_scheduler.extensions["semaphores"].max_leases)
+
+
+def test_run_files_are_written_with_no_lock_on_the_cluster(client, reordered, tmp_path):
+    out = tmp_path / "out"
+    result = process_campaign(reordered, out, client=client)
+    assert sorted(result.redone) == ["T18-1", "T18-2", "T18-3", "T18-4"]
+    locked = [Path(name).name for name in client.run_on_scheduler(_semaphores)
+              if Path(name).parent == out]
+    assert not [name for name in locked if name.startswith(".T18-")], locked
+
+
+def test_an_engagement_campaign_gives_the_serial_result(client, simulated, tmp_path):
+    campaign = simulated("engagement", "--omega", "15", "25", "--seed", "5")
+    serial = process_campaign(campaign, tmp_path / "serial")
+    parallel = process_campaign(campaign, tmp_path / "dask", client=client)
+    assert not serial.failures and sorted(parallel.redone) == sorted(serial.redone)
+    xr.testing.assert_identical(parallel.summary.drop_attrs(), serial.summary.drop_attrs())
+    for run_id, path in serial.run_files.items():
+        xr.testing.assert_identical(read_dataset(parallel.run_files[run_id]).drop_attrs(),
+                                    read_dataset(path).drop_attrs())
