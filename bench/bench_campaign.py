@@ -19,13 +19,18 @@ re-run with nothing changed
 scale-out
     ``chainbench run --workers 1`` and ``--workers 2`` on the engagement
     campaign (many runs; with ``--force`` when the CLI has it), each into a
-    fresh output folder: the speed-up (target >= 1.6x). Reported as not
-    available when ``chainbench run`` has no ``--workers``.
+    fresh output folder, interleaved for ``--rounds`` rounds: the speed-up of
+    the fastest of each (target >= 1.6x), and whether both wrote the same
+    results. Reported as not available when ``chainbench run`` has no
+    ``--workers``. Where the time goes: ``bench/profile_scale_out.py`` and
+    ``bench/SCALE_OUT.md``.
 
-::
+The machine's load average is printed before and after. ::
 
     .venv/bin/python bench/large_campaign.py --out /tmp/large --quick
     .venv/bin/python bench/bench_campaign.py /tmp/large/bench-tensile /tmp/large/bench-engagement
+    .venv/bin/python bench/bench_campaign.py /tmp/large/bench-tensile \
+        /tmp/large/bench-engagement --scale-out-only --rounds 3
 """
 
 from __future__ import annotations
@@ -33,6 +38,7 @@ from __future__ import annotations
 import argparse
 import functools
 import json
+import os
 import re
 import sys
 import tempfile
@@ -49,6 +55,9 @@ FIT_FUNCTIONS = ("fit_stiffness", "specimen_stiffness", "combine_specimens")
 
 #: The ``chainbench`` command of this environment.
 CHAINBENCH = Path(sys.executable).with_name("chainbench")
+
+#: Rounds of ``--workers 1`` and ``--workers 2`` whose fastest give the scale-out figure.
+SCALE_OUT_ROUNDS = 2
 
 
 class StageTimer:
@@ -197,6 +206,7 @@ class Pair:
 
     measured: Timed
     baseline: Timed
+    identical: bool | None = None  #: whether both wrote the same results (None: not compared)
 
 
 def rerun(campaigns: Sequence[Path], output: Path) -> Pair:
@@ -205,14 +215,42 @@ def rerun(campaigns: Sequence[Path], output: Path) -> Pair:
     return Pair(chainbench("run", *campaigns, "--output", output), first)
 
 
-def scale_out(campaigns: Sequence[Path], folder: Path, options: set[str]) -> Pair | None:
-    """``--workers 2`` against ``--workers 1``, fresh outputs; None without ``--workers``."""
+def scale_out(campaigns: Sequence[Path], folder: Path, options: set[str],
+              rounds: int = SCALE_OUT_ROUNDS) -> Pair | None:
+    """``--workers 2`` against ``--workers 1``, the fastest of `rounds` each, interleaved
+    (1, 2, 1, 2...) so that load from other processes hits both alike, each into a fresh
+    output folder; None without ``--workers``."""
     if "--workers" not in options:
         return None
     force = ["--force"] if "--force" in options else []
-    one, two = (chainbench("run", *campaigns, "--output", folder / f"workers-{workers}",
-                           "--workers", str(workers), *force) for workers in (1, 2))
-    return Pair(two, one)
+    runs: dict[int, list[Timed]] = {1: [], 2: []}
+    for round_number in range(rounds):
+        for workers, found in runs.items():
+            found.append(chainbench("run", *campaigns, "--output",
+                                    folder / f"workers-{workers}-{round_number}",
+                                    "--workers", str(workers), *force))
+    one, two = (min(found, key=lambda run: run.seconds) for found in runs.values())
+    return Pair(two, one, same_results(folder / "workers-1-0", folder / "workers-2-0"))
+
+
+def same_results(first: Path, second: Path) -> bool:
+    """Whether the folders hold the same netCDF files with the same values (attributes
+    aside: they record when and from what each was made)."""
+    import xarray as xr
+
+    names = sorted(path.relative_to(first) for path in first.rglob("*.nc"))
+    if not names or names != sorted(path.relative_to(second) for path in second.rglob("*.nc")):
+        return False
+    for name in names:
+        with xr.open_dataset(first / name) as one, xr.open_dataset(second / name) as two:
+            if not one.drop_attrs().identical(two.drop_attrs()):
+                return False
+    return True
+
+
+def load_average() -> str:
+    """The machine's load average over 1, 5 and 15 minutes."""
+    return " ".join(f"{load:.2f}" for load in os.getloadavg())
 
 
 def failures(*runs: Timed) -> str:
@@ -222,11 +260,45 @@ def failures(*runs: Timed) -> str:
         for run in runs if run.returncode != 0)
 
 
+def print_campaign_figures(tensile: Path, engagement: Path, out: Path) -> None:
+    """Measure and print the stiffness fits' share, the peak memory and the re-run."""
+    fits = fit_share(tensile, out / "fits")
+    print(f"stiffness fits: {fits.fit_seconds:.2f} s in {fits.fit_calls} calls of "
+          f"{fits.end_to_end_seconds:.2f} s end to end = {fits.share:.1%} (target < 10 %)")
+    memory = peak_memory(engagement, out / "memory")
+    print(f"peak memory: {memory.growth_mb:.0f} MB over imports = {memory.ratio:.2f}x the "
+          f"{memory.decoded_mb:.0f} MB of decoded arrays of the largest log "
+          f"({memory.largest_rows:,} samples; target < 3x)")
+    options, startup = run_options()
+    again = rerun((tensile, engagement), out / "rerun")
+    share = again.measured.seconds / again.baseline.seconds
+    print(f"re-run: {again.measured.seconds:.2f} s after a first run of "
+          f"{again.baseline.seconds:.2f} s = {share:.1%} (target < 5 %; CLI start-up "
+          f"alone {startup:.2f} s) {failures(again.baseline, again.measured)}")
+
+
+def print_scale_out(engagement: Path, out: Path, rounds: int) -> None:
+    """Measure and print the scale-out figure on the engagement campaign."""
+    workers = scale_out((engagement,), out, run_options()[0], rounds)
+    if workers is None:
+        print("scale-out: not available (chainbench run has no --workers)")
+        return
+    print(f"scale-out: --workers 1 {workers.baseline.seconds:.2f} s, --workers 2 "
+          f"{workers.measured.seconds:.2f} s (fastest of {rounds} each) = "
+          f"{workers.baseline.seconds / workers.measured.seconds:.2f}x (target >= 1.6x); "
+          f"results {'identical' if workers.identical else 'DIFFER'} "
+          f"{failures(workers.baseline, workers.measured)}")
+
+
 def main() -> None:
     """Measure the campaign figures on the given campaign and print them."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("tensile", type=Path, nargs="?", help="the 16-run tensile campaign")
     parser.add_argument("engagement", type=Path, nargs="?", help="the engagement campaign")
+    parser.add_argument("--scale-out-only", action="store_true",
+                        help="measure the scale-out figure alone")
+    parser.add_argument("--rounds", type=int, default=SCALE_OUT_ROUNDS,
+                        help="rounds of --workers 1 and 2 for the scale-out figure")
     parser.add_argument("--worker", action="store_true")
     parser.add_argument("--campaign")
     parser.add_argument("--output")
@@ -236,30 +308,12 @@ def main() -> None:
         return
     if args.tensile is None or args.engagement is None:
         parser.error("give the tensile and the engagement campaign folders")
+    print(f"load average before: {load_average()}")
     with tempfile.TemporaryDirectory(prefix="chainbench-bench-") as folder:
-        out = Path(folder)
-        fits = fit_share(args.tensile, out / "fits")
-        print(f"stiffness fits: {fits.fit_seconds:.2f} s in {fits.fit_calls} calls of "
-              f"{fits.end_to_end_seconds:.2f} s end to end = {fits.share:.1%} (target < 10 %)")
-        memory = peak_memory(args.engagement, out / "memory")
-        print(f"peak memory: {memory.growth_mb:.0f} MB over imports = {memory.ratio:.2f}x the "
-              f"{memory.decoded_mb:.0f} MB of decoded arrays of the largest log "
-              f"({memory.largest_rows:,} samples; target < 3x)")
-        campaigns = (args.tensile, args.engagement)
-        options, startup = run_options()
-        again = rerun(campaigns, out / "rerun")
-        share = again.measured.seconds / again.baseline.seconds
-        print(f"re-run: {again.measured.seconds:.2f} s after a first run of "
-              f"{again.baseline.seconds:.2f} s = {share:.1%} (target < 5 %; CLI start-up "
-              f"alone {startup:.2f} s) {failures(again.baseline, again.measured)}")
-        workers = scale_out((args.engagement,), out, options)
-        if workers is None:
-            print("scale-out: not available (chainbench run has no --workers)")
-        else:
-            print(f"scale-out: --workers 1 {workers.baseline.seconds:.2f} s, --workers 2 "
-                  f"{workers.measured.seconds:.2f} s = "
-                  f"{workers.baseline.seconds / workers.measured.seconds:.2f}x (target >= 1.6x) "
-                  f"{failures(workers.baseline, workers.measured)}")
+        if not args.scale_out_only:
+            print_campaign_figures(args.tensile, args.engagement, Path(folder))
+        print_scale_out(args.engagement, Path(folder), args.rounds)
+    print(f"load average after: {load_average()}")
 
 
 if __name__ == "__main__":

@@ -203,21 +203,6 @@ def _process(sheet: RunSheet, plan: _Plan, output: Path, progress: Progress | No
     dataset.attrs[INPUT_KEY] = plan.key
     return write_atomic(dataset, layout.run_output(output, plan.run.id))
 
-
-def _run_task(sheet: RunSheet, plan: _Plan, output: Path) -> Path:
-    """:func:`_process` as a dask task: it reads its own raw file and returns the path of
-    the run file it wrote.
-
-    The run file is written under this process's netCDF lock, as in a serial run: inside
-    a worker, xarray would take a lock on the cluster for the write (two round trips to
-    the scheduler per variable), though no other task writes this file.
-    """
-    import dask
-
-    with dask.config.set(scheduler="synchronous"):
-        return _process(sheet, plan, output, None)
-
-
 def _failure(sheet: RunSheet, run: RunDef, error: Exception, debug: bool) -> RunFailure:
     """`error` of `run` as a recorded failure; an output that cannot be written is no fault
     of the run: it stops the campaign, before anything stored is touched."""
@@ -254,9 +239,9 @@ def _execute(sheet: RunSheet, plans: list[_Plan], output: Path, progress: Progre
         return done, failures
     from distributed import as_completed
 
-    futures = {client.submit(_run_task, sheet, plan, output, key=f"run-{plan.key}"): plan
+    futures = {client.submit(_process, sheet, plan, output, None, key=f"run-{plan.key}"): plan
                for plan in sorted(plans, key=lambda plan: plan.raw_bytes, reverse=True)}
-    for future in as_completed(futures):
+    for future in as_completed(futures, loop=client.loop):  # the client need not be the default
         plan = futures[future]
         try:
             done[plan.run.id] = future.result()

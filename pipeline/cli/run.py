@@ -331,6 +331,10 @@ def _result_json(result: CampaignResult) -> dict:
 #: mmap threshold, so that every array over 128 KiB is mapped and zeroed afresh, and a run
 #: takes twice its serial time (docs/quality.md, scale-out).
 WORKER_ENVIRONMENT = {"OMP_NUM_THREADS": 1, "OPENBLAS_NUM_THREADS": 1, "MKL_NUM_THREADS": 1}
+#: What each worker sets as it starts: a dask computation inside a task runs in the task's
+#: thread. xarray writing a run file then takes this process's netCDF lock, as in a serial
+#: run, and not a lock on the cluster (two round trips to the scheduler per variable).
+WORKER_SETTINGS = {"DASK_SCHEDULER": "synchronous"}
 #: What each worker of a local cluster imports once, as it starts: the stages of a run.
 WORKER_PRELOAD = ["pipeline.campaign"]
 
@@ -341,7 +345,9 @@ def _dask_client(workers: int | None, scheduler: str | None):
 
     The local cluster's workers start in the background, importing the stages
     (:data:`WORKER_PRELOAD`), while this process loads its own and plans the
-    runs; the runs submitted meanwhile wait for them.
+    runs; the runs submitted meanwhile wait for them. The client is not made
+    dask's default, so that xarray in this process writes the summary under
+    this process's lock, not under a lock on the cluster.
     """
     if workers is None and scheduler is None:
         yield None
@@ -352,13 +358,14 @@ def _dask_client(workers: int | None, scheduler: str | None):
     from distributed import Client, LocalCluster
 
     if scheduler is not None:
-        with Client(scheduler) as client:
+        with Client(scheduler, set_as_default=False) as client:
             yield client
         return
     with (dask.config.set({"distributed.nanny.pre-spawn-environ": WORKER_ENVIRONMENT}),
           LocalCluster(n_workers=0, threads_per_worker=1, processes=True,
-                       dashboard_address=None, preload=WORKER_PRELOAD) as cluster,
-          Client(cluster) as client):
+                       dashboard_address=None, preload=WORKER_PRELOAD,
+                       env=WORKER_SETTINGS) as cluster,
+          Client(cluster, set_as_default=False) as client):
         cluster.scale(workers)  # returns at once: the workers start in the background
         yield client
 
