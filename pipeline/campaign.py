@@ -25,7 +25,10 @@ all in ``<project>/processed/<campaign id>/`` (``raw/`` is only read).
 * One summary for fresh and reused runs: the summary is built from the results
   read back from the run files (``from_dataset``), one run at a time, whether
   they were processed now or before.
-* Scale-out: with a dask.distributed ``client``, each run is a task.
+* Scale-out: with a dask.distributed ``client``, each run is a task that hashes
+  its raw file (when no stored result needs the hash first), processes the run,
+  writes its run file and reads back what the summary needs; the reused runs'
+  read-back and the report's run pages are tasks too (:mod:`pipeline.tasks`).
 """
 
 from __future__ import annotations
@@ -62,7 +65,7 @@ from pipeline.runs import (
 from pipeline.runsheet import ChainDef, RunDef, RunSheet, load_run_sheet
 from pipeline.store import layout
 from pipeline.store.fingerprint import code_fingerprint
-from pipeline.store.freshness import HashCache, forget_rerun
+from pipeline.store.freshness import HashCache, HashedFile, forget_rerun, hash_file
 from pipeline.store.layout import PROCESSED_FOLDER, RAW_FOLDER, project_root
 from pipeline.store.lock import campaign_lock, remove_stale_temporaries
 from pipeline.store.netcdf import (
@@ -72,6 +75,7 @@ from pipeline.store.netcdf import (
     write_atomic,
     write_text_atomic,
 )
+from pipeline.tasks import Mapped
 from pipeline.units import to_si
 
 if TYPE_CHECKING:
@@ -132,13 +136,22 @@ class CampaignResult:
 
 @dataclass(frozen=True)
 class _Plan:
-    """One run to do (or reuse): its inputs and their key."""
+    """One run to do (or reuse): its inputs and their key.
+
+    The raw file's SHA-256 is needed before the run only to compare with a stored
+    result; a run with none (or forced) hashes its file in its own task.
+    """
 
     run: RunDef
-    raw_sha256: str
+    raw: Path
     E0: float | None  #: chain stiffness of an engagement run [N]
-    key: str
+    inputs: dict[str, Any]  #: the inputs of the key but the raw file's SHA-256
     raw_bytes: int  #: size of the raw file [bytes]: on a cluster, the largest start first
+    raw_sha256: str | None  #: None: not hashed yet
+
+    def key(self, raw_sha256: str) -> str:
+        """The key of the run's inputs, its raw file's SHA-256 being `raw_sha256`."""
+        return _digest({**self.inputs, "raw_sha256": raw_sha256})
 
 
 def default_output(campaign: RunSheet | str | Path) -> Path:
@@ -164,18 +177,20 @@ def _digest(document) -> str:
     return hashlib.sha256(text.encode()).hexdigest()
 
 
-def _plan(sheet: RunSheet, run: RunDef, output: Path, hashes: HashCache) -> _Plan:
+def _plan(sheet: RunSheet, run: RunDef, output: Path, hashes: HashCache, hash_now: bool
+          ) -> _Plan:
+    """The plan of `run`; its raw file hashed now when `hash_now` (else only when cached)."""
     raw = existing_run_file(sheet, run)
-    raw_sha256 = hashes.sha256(raw)
     E0 = chain_stiffness_for(sheet, run, output) if run.kind == "engagement" else None
-    key = _digest({
-        "raw_sha256": raw_sha256, "entry": sheet.entries[run.id], "E0": E0,
+    inputs = {
+        "entry": sheet.entries[run.id], "E0": E0,
         "chain": sheet.chains[run.chain].model_dump(mode="json"),
         "wheel": sheet.wheels[run.wheel].model_dump(mode="json") if run.wheel else None,
         "campaign": sheet.campaign.model_dump(mode="json", include=RUN_CAMPAIGN_FIELDS),
         "code": code_fingerprint(),
-    })
-    return _Plan(run, raw_sha256, E0, key, raw.stat().st_size)
+    }
+    raw_sha256 = hashes.sha256(raw) if hash_now else hashes.cached(raw)
+    return _Plan(run, raw, E0, inputs, raw.stat().st_size, raw_sha256)
 
 
 def _stored(path: Path) -> dict[str, Any] | None:
@@ -197,11 +212,33 @@ def _run_result(sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float | None,
     return process_engagement_run(sheet, run, raw_sha256, E0, progress)
 
 
-def _process(sheet: RunSheet, plan: _Plan, output: Path, progress: Progress | None) -> Path:
-    """Process one run and store its result (a dask task when a client is given)."""
-    dataset = _run_result(sheet, plan.run, plan.raw_sha256, plan.E0, progress).to_dataset()
-    dataset.attrs[INPUT_KEY] = plan.key
-    return write_atomic(dataset, layout.run_output(output, plan.run.id))
+@dataclass(frozen=True)
+class _Done:
+    """A run processed now: its file, the file's global attributes, what the summary
+    needs of the result read back from the file (as of a run reused), and its key."""
+
+    path: Path
+    attrs: dict[str, Any]
+    summary: _RunSummary
+    key: str
+    hashed: HashedFile | None  #: the raw file, when the run hashed it
+
+
+def _process(plan: _Plan, *, sheet: RunSheet, output: Path,
+             progress: Progress | None = None) -> _Done:
+    """Hash the raw file (unless known), process one run, store its result and read it back.
+
+    A dask task when a client is given: the worker reads the raw file and writes
+    the run file; only `_Done` comes back.
+    """
+    hashed = None if plan.raw_sha256 is not None else hash_file(plan.raw)
+    raw_sha256 = plan.raw_sha256 or hashed.sha256
+    dataset = _run_result(sheet, plan.run, raw_sha256, plan.E0, progress).to_dataset()
+    key = dataset.attrs[INPUT_KEY] = plan.key(raw_sha256)
+    path = write_atomic(dataset, layout.run_output(output, plan.run.id))
+    del dataset
+    return _Done(path, read_attrs(path), _read_back((plan.run, path, plan.E0), sheet=sheet),
+                 key, hashed)
 
 def _failure(sheet: RunSheet, run: RunDef, error: Exception, debug: bool) -> RunFailure:
     """`error` of `run` as a recorded failure; an output that cannot be written is no fault
@@ -226,20 +263,21 @@ def run_failure(sheet: RunSheet, run: RunDef | None, error: Exception) -> RunFai
 
 
 def _execute(sheet: RunSheet, plans: list[_Plan], output: Path, progress: Progress | None,
-             debug: bool, client: Client | None) -> tuple[dict[str, Path], list[RunFailure]]:
+             debug: bool, client: Client | None) -> tuple[dict[str, _Done], list[RunFailure]]:
     """Process `plans` serially, or as dask tasks on `client`, the largest raw files first
     (the short runs fill in at the end, so that the workers finish together)."""
     done, failures = {}, []
     if client is None:
         for plan in plans:
             try:
-                done[plan.run.id] = _process(sheet, plan, output, progress)
+                done[plan.run.id] = _process(plan, sheet=sheet, output=output, progress=progress)
             except Exception as error:  # one bad run must not stop the campaign
                 failures.append(_failure(sheet, plan.run, error, debug))
         return done, failures
     from distributed import as_completed
 
-    futures = {client.submit(_process, sheet, plan, output, None, key=f"run-{plan.key}"): plan
+    shared = client.scatter(sheet, broadcast=True, hash=False) if plans else None
+    futures = {client.submit(_process, plan, sheet=shared, output=output, pure=False): plan
                for plan in sorted(plans, key=lambda plan: plan.raw_bytes, reverse=True)}
     for future in as_completed(futures, loop=client.loop):  # the client need not be the default
         plan = futures[future]
@@ -285,23 +323,54 @@ def summary_table(summary: xr.Dataset, dim: str) -> pd.DataFrame:
     return summary[columns].to_dataframe()
 
 
+@dataclass(frozen=True)
+class _RunSummary:
+    """What the campaign summary needs of one run's result: a tensile run's specimen
+    stiffness and its row of the specimen table, or an engagement run's operating point."""
+
+    specimen: SpecimenStiffness | None = None
+    row: dict | None = None
+    point: dict[str, float] | None = None
+
+
+def _run_summary(sheet: RunSheet, run: RunDef, result: RunResult, E0: float | None
+                 ) -> _RunSummary:
+    """What the summary needs of `run`'s result (E0 [N]: of an engagement run)."""
+    if isinstance(result, TensileResult):
+        return _RunSummary(specimen=result.specimen, row=_specimen_row(run, result))
+    return _RunSummary(point={**operating_point(sheet, run, E0), **_measured(result)})
+
+
+def _read_back(stored: tuple[RunDef, Path, float | None], *, sheet: RunSheet) -> _RunSummary:
+    """What the summary needs of a run, read back from its file (`stored`: the run, its
+    file and its E0 [N]); a dask task when a client is given."""
+    run, path, E0 = stored
+    return _run_summary(sheet, run, result_from_dataset(read_dataset(path)), E0)
+
+
 @dataclass
 class _SummaryInputs:
-    """What the campaign summary is built from, gathered from the runs' results one by one:
-    per tensile run its specimen stiffness and its row of the specimen table, per
-    engagement run its operating point."""
+    """What the campaign summary is built from, in run-sheet order: per tensile run its
+    specimen stiffness and its row of the specimen table, per engagement run its
+    operating point."""
 
     specimens: dict[str, SpecimenStiffness] = field(default_factory=dict)
     rows: dict[str, dict] = field(default_factory=dict)
     points: dict[str, dict[str, float]] = field(default_factory=dict)
 
-    def add(self, sheet: RunSheet, run: RunDef, result: RunResult, E0: float | None) -> None:
-        """Take what the summary needs of `run`'s result (E0 [N]: of an engagement run)."""
-        if isinstance(result, TensileResult):
-            self.specimens[run.id] = result.specimen
-            self.rows[run.id] = _specimen_row(run, result)
-        else:
-            self.points[run.id] = {**operating_point(sheet, run, E0), **_measured(result)}
+    @classmethod
+    def of(cls, sheet: RunSheet, runs: dict[str, _RunSummary]) -> _SummaryInputs:
+        """The inputs of the runs in `runs` (run id -> what the summary needs of it)."""
+        inputs = cls()
+        for run in sheet.runs:
+            found = runs.get(run.id)
+            if found is None:
+                continue
+            if found.point is not None:
+                inputs.points[run.id] = found.point
+            else:
+                inputs.specimens[run.id], inputs.rows[run.id] = found.specimen, found.row
+        return inputs
 
 
 def _specimen_row(run: RunDef, result: TensileResult) -> dict:
@@ -549,28 +618,32 @@ def process_campaign(
         forget_rerun(output)  # whatever happens next, the last run's record may not hold
         failures = sheet_failures(sheet)
         plans: dict[str, _Plan] = {}
+        current: dict[str, dict[str, Any]] = {}  # run id -> attributes of its stored result
         hashes = HashCache(output, rehash)
         for run in sheet.runs:
-            try:
-                plans[run.id] = _plan(sheet, run, output, hashes)
+            found = None if force else _stored(layout.run_output(output, run.id))
+            try:  # a stored result is compared by key: its raw file is hashed now
+                plan = plans[run.id] = _plan(sheet, run, output, hashes, found is not None)
             except Exception as error:
                 failures.append(_failure(sheet, run, error, debug))
-        hashes.save()
-        stored = {run_id: _stored(layout.run_output(output, run_id)) for run_id in plans}
-        current = {run_id: found for run_id, found in stored.items()
-                   if not force and found is not None and found.get(INPUT_KEY) == plans[
-                       run_id].key}
+                continue
+            if found is not None and found.get(INPUT_KEY) == plan.key(plan.raw_sha256):
+                current[run.id] = found
+                if progress:
+                    progress(run.id, "unchanged")
         todo = [plan for run_id, plan in plans.items() if run_id not in current]
-        for run_id in current:
-            if progress:
-                progress(run_id, "unchanged")
         done, failed = _execute(sheet, todo, output, progress, debug, client)
         failures += failed
-        current.update({run_id: read_attrs(path) for run_id, path in done.items()})
+        for run_id, found in done.items():
+            if found.hashed is not None:
+                hashes.remember(plans[run_id].raw, found.hashed)
+        hashes.save()
+        current.update({run_id: found.attrs for run_id, found in done.items()})
         files = {run.id: layout.run_output(output, run.id) for run in sheet.runs
                  if run.id in current}
         removed = _remove_stale_runs(output, sheet.campaign.id, set(files))
-        key = _digest({"runs": {run_id: plans[run_id].key for run_id in sorted(files)},
+        keys = {run_id: found[INPUT_KEY] for run_id, found in current.items()}
+        key = _digest({"runs": {run_id: keys[run_id] for run_id in sorted(files)},
                        "failures": [failure.message for failure in failures],
                        "sheet": sheet.sha256, "code": code_fingerprint()})
         result = CampaignResult(
@@ -584,16 +657,17 @@ def process_campaign(
             result.report = output / layout.REPORT
             return result
         (output / layout.MANIFEST).unlink(missing_ok=True)  # outputs being rewritten
-        inputs = _SummaryInputs()
-        for run in sheet.runs:
-            if run.id in files:  # read back one at a time: the memory of one result
-                inputs.add(sheet, run, result_from_dataset(read_dataset(files[run.id])),
-                           plans[run.id].E0)
+        reused = [(run, files[run.id], plans[run.id].E0) for run in sheet.runs
+                  if run.id in files and run.id not in done]  # read back one at a time
+        summaries = {run.id: found for (run, _, _), found in zip(
+            reused, Mapped(_read_back, reused, client, sheet=sheet).results(), strict=True)}
+        summaries.update({run_id: found.summary for run_id, found in done.items()})
+        inputs = _SummaryInputs.of(sheet, summaries)
         result.summary = _summary(sheet, list(files), inputs, failures)
         result.summary.attrs[INPUT_KEY] = key
         written = _write_summary(result.summary, output)
         try:  # the results are written: a failing report loses nothing but itself
-            report = build_report(output)
+            report = build_report(output, client=client)
             result.report = report.page
             written += report.outputs  # the campaign page and every run's page
         except OutputError:
@@ -641,11 +715,11 @@ def check_campaign(path: str | Path, output: str | Path | None = None,
     """
     sheet = load_run_sheet(path)
     output = Path(output) if output is not None else default_output(sheet)
-    failures, inputs, attrs = sheet_failures(sheet), _SummaryInputs(), {}
+    failures, summaries, attrs = sheet_failures(sheet), {}, {}
     for run, E0, result in _checked_results(sheet, output, progress, failures):
-        inputs.add(sheet, run, result, E0)
+        summaries[run.id] = _run_summary(sheet, run, result, E0)
         attrs[run.id] = result.global_attrs()
-    summary = _summary(sheet, list(attrs), inputs, failures)
+    summary = _summary(sheet, list(attrs), _SummaryInputs.of(sheet, summaries), failures)
     return CampaignResult(sheet.campaign.id, output, summary, failures=failures,
                           warnings=_warnings(attrs))
 

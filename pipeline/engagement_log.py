@@ -24,7 +24,6 @@ table in memory, for notebooks and tests.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import partial
 from pathlib import Path
@@ -54,6 +53,7 @@ from pipeline.fit.impact import (
     impact_result,
     plan_extraction,
 )
+from pipeline.tasks import map_tasks
 
 if TYPE_CHECKING:
     from distributed import Client
@@ -122,13 +122,6 @@ def preview_stride(n_rows: int, preview_samples: int | None) -> int:
     return max(1, n_rows if preview_samples is None else math.ceil(n_rows / preview_samples))
 
 
-def _map(function: Callable, items: Sequence, client: Client | None) -> list:
-    """`function` of every item, in order: here, or as dask tasks on `client`."""
-    if client is None:
-        return [function(item) for item in items]
-    return client.gather(client.map(function, items, pure=False))
-
-
 def _setup(source: LogSource, *, z: int, omega: float, natural_frequency: float | None,
            impact_angle: float | None, use_angle: bool, preview_samples: int | None,
            clip_level: float | None, file: str | Path | None) -> EngagementSetup:
@@ -168,7 +161,7 @@ def _detect(source: LogSource, setup: EngagementSetup, chunks: list[Chunk],
             period_tolerance: float, client: Client | None
             ) -> tuple[EngagementEvents, LogSamples, list[str]]:
     """Scan every chunk and merge: the seatings, the samples' summary, the read warnings."""
-    scanned = _map(partial(_scan, source, setup), chunks, client)
+    scanned = map_tasks(partial(_scan, source, setup), chunks, client)
     scans = [scan for scan, _ in scanned]
     warnings = list(dict.fromkeys(text for _, said in scanned for text in said))
     events = merge_scans(scans, setup, period_tolerance)
@@ -183,7 +176,7 @@ def _extract(source: LogSource, chunks: list[Chunk], events: EngagementEvents,
     windows = [source.read(start, start + plan.span)[0]["force"].to_numpy(dtype=float)
                for start in plan.reach_start[plan.ringing_events]]
     ringing, relative_errors = fit_ringing(windows, plan, ringing)
-    fits = _map(partial(_fit, source, plan, ringing), chunks, client)
+    fits = map_tasks(partial(_fit, source, plan, ringing), chunks, client)
     return impact_result(plan, fits, ringing, relative_errors)
 
 

@@ -9,11 +9,14 @@ scale-out).
 
 from __future__ import annotations
 
+import hashlib
+import json
 import os
 import re
 import shutil
 import sys
 from collections.abc import Iterator
+from datetime import UTC, datetime
 from pathlib import Path
 
 import pytest
@@ -23,6 +26,7 @@ from typer.testing import CliRunner
 from pipeline.campaign import process_campaign
 from pipeline.cli import app
 from pipeline.cli.run import _dask_client
+from pipeline.report.build import build_report
 from pipeline.store.netcdf import read_dataset
 
 #: The environment variables the workers are started with, and their expected values.
@@ -108,3 +112,47 @@ def test_outputs_are_written_with_no_lock_on_the_cluster(client, reordered, tmp_
     assert (out / "summary.nc").is_file()
     assert [name for name in client.run_on_scheduler(_semaphores)
             if Path(name).parent == out] == []
+
+
+def _tasks_run(dask_worker) -> int:
+    return dask_worker.state.executed_count
+
+
+def test_run_pages_written_on_the_cluster_are_the_serial_pages(client, reordered, tmp_path):
+    out = tmp_path / "out"
+    process_campaign(reordered, out, client=client)
+    created = datetime(2026, 1, 2, tzinfo=UTC)
+    serial = build_report(out, created=created)
+    expected = {path.name: path.read_bytes() for path in (serial.page, *serial.run_pages)}
+    before, = client.run(_tasks_run).values()
+    parallel = build_report(out, created=created, client=client)
+    after, = client.run(_tasks_run).values()
+    assert {path.name: path.read_bytes() for path in (parallel.page, *parallel.run_pages)
+            } == expected
+    assert after - before == 4  # one task per run page
+
+
+def test_summary_of_reused_runs_read_back_on_the_cluster(client, reordered, tmp_path):
+    out = tmp_path / "out"
+    first = process_campaign(reordered, out, client=client)
+    (out / ".outputs.json").unlink()  # the summary is rebuilt from the stored runs
+    again = process_campaign(reordered, out, client=client)
+    assert again.redone == [] and sorted(again.reused) == sorted(first.redone)
+    xr.testing.assert_identical(again.summary.drop_attrs(), first.summary.drop_attrs())
+
+
+def test_raw_files_are_hashed_in_the_runs_tasks(client, reordered, tmp_path, monkeypatch):
+    from pipeline.store import freshness
+
+    hashed_here = []
+    monkeypatch.setattr(freshness, "sha256_file", hashed_here.append)
+    out = tmp_path / "out"
+    result = process_campaign(reordered, out, client=client)
+    assert not result.failures and hashed_here == []  # not in this process
+    cache = json.loads((out / ".hashes.json").read_text(encoding="utf-8"))
+    expected = {str((reordered / name).resolve()): hashlib.sha256(
+        (reordered / name).read_bytes()).hexdigest() for name in FILES_BY_SIZE}
+    assert {path: entry["sha256"] for path, entry in cache.items()} == expected
+    for path in result.run_files.values():
+        attrs = read_dataset(path).attrs
+        assert attrs["raw_sha256"] == expected[str((reordered / attrs["raw_file"]).resolve())]

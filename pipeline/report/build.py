@@ -35,7 +35,7 @@ from contextlib import suppress
 from dataclasses import dataclass
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import xarray as xr
@@ -75,6 +75,9 @@ from pipeline.results.tensile import STRENGTH_VARIABLES
 from pipeline.store import layout
 from pipeline.store.netcdf import read_dataset, write_text_atomic
 from pipeline.units import from_si
+
+if TYPE_CHECKING:
+    from distributed import Client
 
 #: The jinja2 template of the campaign page (``pipeline/report/templates``).
 TEMPLATE_NAME = "report.html.j2"
@@ -507,7 +510,8 @@ class Report:
         return [self.page.name, *(f"{layout.RUN_PAGES}/{page.name}" for page in self.run_pages)]
 
 
-def build_report(output_dir: str | Path, created: datetime | None = None) -> Report:
+def build_report(output_dir: str | Path, created: datetime | None = None,
+                 client: Client | None = None) -> Report:
     """Build the report of a processed campaign from its processed files alone.
 
     Writes every run's page into ``report-runs/`` (deleting the pages of runs
@@ -521,6 +525,9 @@ def build_report(output_dir: str | Path, created: datetime | None = None) -> Rep
     created : datetime, optional
         Creation time written in the report (default: now, UTC); with the same
         folder and the same `created` the report is the same, byte for byte.
+    client : distributed.Client, optional
+        Write the run pages as tasks on this dask cluster while this process
+        builds the campaign page (default: all in this process).
 
     Returns
     -------
@@ -541,10 +548,13 @@ def build_report(output_dir: str | Path, created: datetime | None = None) -> Rep
     summary = read_dataset(summary_path)
     runs = campaign_runs(output_dir, summary)
     statuses = run_statuses(summary, runs)
-    context = report_context(summary, runs, statuses, created or datetime.now(UTC))
-    pages = write_run_pages(output_dir, summary, runs, statuses, context["campaign"])
-    html = environment().get_template(TEMPLATE_NAME).render(**context)
-    return Report(write_text_atomic(html, output_dir / layout.REPORT), tuple(pages))
+    created = created or datetime.now(UTC)
+    pages = write_run_pages(output_dir, summary, runs, statuses, _campaign(summary, created),
+                            client)  # on a cluster, the run pages are written meanwhile
+    html = environment().get_template(TEMPLATE_NAME).render(
+        **report_context(summary, runs, statuses, created))
+    written = tuple(pages.results())
+    return Report(write_text_atomic(html, output_dir / layout.REPORT), written)
 
 
 def remove_report(output_dir: str | Path) -> None:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 import re
 from datetime import UTC, datetime
+from functools import cache
 
 import jinja2
 
@@ -74,8 +75,10 @@ def verdict_class(passed: bool | None) -> str:
     return {True: "pass", False: "fail", None: "info"}[passed]
 
 
+@cache
 def environment() -> jinja2.Environment:
-    """The jinja2 environment of the report's pages: package templates, autoescape on."""
+    """The jinja2 environment of the report's pages: package templates, autoescape on
+    (one per process: its templates are compiled once)."""
     return jinja2.Environment(
         loader=jinja2.PackageLoader("pipeline.report", "templates"),
         autoescape=True,

@@ -23,7 +23,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 from urllib.parse import quote
 
 import numpy as np
@@ -48,6 +48,10 @@ from pipeline.results.notes import run_notes
 from pipeline.store import layout
 from pipeline.store.lock import remove_stale_temporaries
 from pipeline.store.netcdf import read_attrs, read_dataset, write_text_atomic
+from pipeline.tasks import Mapped
+
+if TYPE_CHECKING:
+    from distributed import Client
 
 #: The jinja2 template of a run's page (``pipeline/report/templates``).
 TEMPLATE_NAME = "run.html.j2"
@@ -406,9 +410,39 @@ def remove_stale_pages(folder: Path, keep: set[str]) -> list[Path]:
     return stale
 
 
+@dataclass(frozen=True)
+class RunPage:
+    """One run's page to write: the run, its status, and the runs before and after it."""
+
+    run: RunFile
+    status: RunStatus
+    neighbours: tuple[RunFile | None, RunFile | None]
+
+
+def write_run_page(page: RunPage, *, output_dir: Path, summary: xr.Dataset,
+                   campaign: dict[str, Any]) -> Path:
+    """Write one run's page into ``report-runs/`` (atomically) and return its path.
+
+    Parameters
+    ----------
+    page : RunPage
+        The run, its status and its neighbours in the run table.
+    output_dir : Path
+        The processed campaign folder.
+    summary : xarray.Dataset
+        Its ``summary.nc``.
+    campaign : dict
+        The campaign's id, title, creation time and version, as the campaign page shows them.
+    """
+    context = run_page_context(summary, page.run, page.run.load(), page.status, page.neighbours)
+    html = environment().get_template(TEMPLATE_NAME).render(campaign=campaign, **context)
+    return write_text_atomic(html, output_dir / layout.RUN_PAGES / page_name(page.run.run_id))
+
+
 def write_run_pages(output_dir: Path, summary: xr.Dataset, runs: Sequence[RunFile],
-                    statuses: dict[str, RunStatus], campaign: dict[str, Any]) -> list[Path]:
-    """Write the page of every run into ``report-runs/``, one run in memory at a time.
+                    statuses: dict[str, RunStatus], campaign: dict[str, Any],
+                    client: Client | None = None) -> Mapped:
+    """Start writing the page of every run into ``report-runs/``, one run in memory at a time.
 
     Parameters
     ----------
@@ -422,21 +456,21 @@ def write_run_pages(output_dir: Path, summary: xr.Dataset, runs: Sequence[RunFil
         Run id -> its status (:func:`run_statuses`).
     campaign : dict
         The campaign's id, title, creation time and version, as the campaign page shows them.
+    client : distributed.Client, optional
+        Write the pages as tasks on this dask cluster, started at once (default:
+        in this process, when the results are asked for).
 
     Returns
     -------
-    list of Path
-        The pages written (atomically), in the order of `runs`; the pages of
-        other runs in the folder are deleted first.
+    Mapped
+        Its ``results()`` are the pages written (:func:`write_run_page`), in the
+        order of `runs`. The pages of other runs in the folder are deleted first.
     """
     folder = output_dir / layout.RUN_PAGES
     remove_stale_pages(folder, {page_name(run.run_id) for run in runs})
-    template = environment().get_template(TEMPLATE_NAME)
-    pages = []
-    for index, run in enumerate(runs):
-        neighbours = (runs[index - 1] if index else None,
-                      runs[index + 1] if index + 1 < len(runs) else None)
-        context = run_page_context(summary, run, run.load(), statuses[run.run_id], neighbours)
-        html = template.render(campaign=campaign, **context)
-        pages.append(write_text_atomic(html, folder / page_name(run.run_id)))
-    return pages
+    pages = [RunPage(run, statuses[run.run_id],
+                     (runs[index - 1] if index else None,
+                      runs[index + 1] if index + 1 < len(runs) else None))
+             for index, run in enumerate(runs)]
+    return Mapped(write_run_page, pages, client, output_dir=output_dir, summary=summary,
+                  campaign=campaign)

@@ -52,6 +52,20 @@ def sha256_file(path: Path) -> str:
     return digest.hexdigest()
 
 
+@dataclass(frozen=True)
+class HashedFile:
+    """A file's SHA-256 and its identity (size, modification time, inode) when read."""
+
+    identity: list[int]
+    sha256: str
+
+
+def hash_file(path: Path) -> HashedFile:
+    """Read `path` for its SHA-256, with its identity taken before the read."""
+    now = identity(path)
+    return HashedFile(now, sha256_file(path))
+
+
 def _read_json(path: Path) -> dict:
     """The JSON object in `path`, or an empty dict when it is missing or unreadable."""
     try:
@@ -95,16 +109,26 @@ class HashCache:
         self.entries: dict[str, dict] = {} if rehash else _read_json(self.path)
         self.changed = False
 
+    def cached(self, file: Path) -> str | None:
+        """SHA-256 of `file` when the cache holds it for its size, time and inode, else None."""
+        entry = self.entries.get(str(Path(file).resolve()))
+        if entry is not None and entry.get("identity") == identity(file):
+            return entry["sha256"]
+        return None
+
+    def remember(self, file: Path, hashed: HashedFile) -> None:
+        """Keep the SHA-256 of `file` (computed elsewhere, e.g. in a run's task)."""
+        self.entries[str(Path(file).resolve())] = {"identity": hashed.identity,
+                                                   "sha256": hashed.sha256}
+        self.changed = True
+
     def sha256(self, file: Path) -> str:
         """SHA-256 of `file`: from the cache when its size, time and inode are unchanged."""
-        key = str(Path(file).resolve())
-        now = identity(file)
-        entry = self.entries.get(key)
-        if entry is not None and entry.get("identity") == now:
-            return entry["sha256"]
-        digest = sha256_file(file)
-        self.entries[key] = {"identity": now, "sha256": digest}
-        self.changed = True
+        digest = self.cached(file)
+        if digest is None:
+            hashed = hash_file(file)
+            self.remember(file, hashed)
+            digest = hashed.sha256
         return digest
 
     def save(self) -> None:

@@ -1,0 +1,48 @@
+"""The same work here or as dask tasks (:mod:`pipeline.tasks`)."""
+
+from __future__ import annotations
+
+import pytest
+
+from pipeline.tasks import Mapped, map_tasks
+
+distributed = pytest.importorskip("distributed")
+
+
+def _scaled(value: int, *, factor: int, offset: int = 0) -> int:
+    return value * factor + offset
+
+
+def _inverse(value: int) -> float:
+    return 1 / value
+
+
+def test_here_every_item_in_order_with_the_shared_arguments():
+    assert Mapped(_scaled, [3, 1, 2], factor=10, offset=1).results() == [31, 11, 21]
+    assert map_tasks(abs, [-2, 5]) == [2, 5]
+    assert Mapped(_scaled, [], factor=2).results() == []
+
+
+def test_here_nothing_is_computed_until_asked():
+    calls = []
+    mapped = Mapped(calls.append, [1, 2])
+    assert calls == []
+    mapped.results()
+    assert calls == [1, 2]
+
+
+def test_on_a_cluster_the_same_results_computed_by_the_workers():
+    with distributed.Client(processes=False, n_workers=2, threads_per_worker=1,
+                            dashboard_address=None, set_as_default=False) as client:
+        mapped = Mapped(_scaled, list(range(20)), client, factor=3, offset=2)
+        assert mapped.results() == [3 * value + 2 for value in range(20)]
+        executed = sum(client.run(lambda dask_worker: dask_worker.state.executed_count
+                                  ).values())
+        assert executed == 20
+
+
+def test_on_a_cluster_the_first_error_is_raised():
+    with distributed.Client(processes=False, n_workers=1, threads_per_worker=1,
+                            dashboard_address=None, set_as_default=False) as client:
+        with pytest.raises(ZeroDivisionError):
+            Mapped(_inverse, [1, 0], client).results()
