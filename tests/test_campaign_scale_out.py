@@ -118,7 +118,7 @@ def _tasks_run(dask_worker) -> int:
     return dask_worker.state.executed_count
 
 
-def test_run_pages_written_on_the_cluster_are_the_serial_pages(client, reordered, tmp_path):
+def test_report_rendered_on_the_cluster_is_the_serial_report(client, reordered, tmp_path):
     out = tmp_path / "out"
     process_campaign(reordered, out, client=client)
     created = datetime(2026, 1, 2, tzinfo=UTC)
@@ -129,7 +129,7 @@ def test_run_pages_written_on_the_cluster_are_the_serial_pages(client, reordered
     after, = client.run(_tasks_run).values()
     assert {path.name: path.read_bytes() for path in (parallel.page, *parallel.run_pages)
             } == expected
-    assert after - before == 4  # one task per run page
+    assert after - before == 4 + 2  # a task per run page, per figure of the campaign page
 
 
 def test_summary_of_reused_runs_read_back_on_the_cluster(client, reordered, tmp_path):

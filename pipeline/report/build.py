@@ -30,7 +30,7 @@ setting it shows is read from the processed files (the settings through
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from contextlib import suppress
 from dataclasses import dataclass
 from datetime import UTC, datetime
@@ -74,6 +74,7 @@ from pipeline.results.notes import lines
 from pipeline.results.tensile import STRENGTH_VARIABLES
 from pipeline.store import layout
 from pipeline.store.netcdf import read_dataset, write_text_atomic
+from pipeline.tasks import Mapped
 from pipeline.units import from_si
 
 if TYPE_CHECKING:
@@ -296,9 +297,10 @@ def _strength_rows(summary: xr.Dataset) -> list[dict[str, str]]:
     return rows
 
 
-def _stiffness(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
-    """Figures and tables of the stiffness section (the tensile runs' results, one at a
-    time; the overview keeps the fits it draws)."""
+def _tensile_results(summary: xr.Dataset, runs: Sequence[RunFile]
+                     ) -> tuple[list[dict[str, str]], list[xr.Dataset]]:
+    """The specimen table's rows and the fits the stiffness overview draws, read from the
+    tensile runs' results one at a time (in the order of the summary's chains)."""
     order = {str(chain): index for index, chain in enumerate(summary["chain"].values)}
     tensile = sorted((run for run in runs if run.kind == "tensile"),
                      key=lambda run: (order.get(run.attrs.get("chain"), len(order)),
@@ -309,11 +311,17 @@ def _stiffness(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
         specimens.append(specimen_row(results))
         drawn.append(results[[name for name in stiffness_figures.OVERVIEW_VARIABLES
                               if name in results]])
+    return specimens, drawn
+
+
+def _stiffness(summary: xr.Dataset, specimens: list[dict[str, str]], overview: str
+               ) -> dict[str, Any]:
+    """Figures and tables of the stiffness section."""
     low, high = _band(summary)
     return {
         "band": f"{100 * low:g} to {100 * high:g} %",
         "level": level(summary["E0_exp_ci_low"].attrs),
-        "overview_svg": svg(stiffness_figures.stiffness_by_specimen(summary, drawn)),
+        "overview_svg": overview,
         "chains": _chain_rows(summary),
         "specimens": specimens,
         "strength": _strength_rows(summary),
@@ -336,16 +344,14 @@ def _point_rows(summary: xr.Dataset) -> list[dict[str, str]]:
     return rows
 
 
-def _impact(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
-    """Figures and tables of the impact section."""
-    figures, k_theory = [], f"{float(recorded(summary.attrs, 'k_theory')):g}"
-    with report_style():
-        figures.append({"caption": "Measured impact tensions against wheel speed, with the "
-                                   f"model for k = {k_theory} and for the fitted k.",
-                        "svg": svg(impact_figures.impact_vs_omega(summary))})
-        figures.append({"caption": "Impact tensions against the tooth apex angle, per number "
-                                   "of teeth (as Paper 000, figures 3 and 4).",
-                        "svg": svg(impact_figures.impact_vs_apex(summary))})
+def _impact(summary: xr.Dataset, runs: Sequence[RunFile], by_omega: str, by_apex: str
+            ) -> dict[str, Any]:
+    """Figures and tables of the impact section (the figures rendered)."""
+    k_theory = f"{float(recorded(summary.attrs, 'k_theory')):g}"
+    figures = [{"caption": "Measured impact tensions against wheel speed, with the model "
+                           f"for k = {k_theory} and for the fitted k.", "svg": by_omega},
+               {"caption": "Impact tensions against the tooth apex angle, per number of "
+                           "teeth (as Paper 000, figures 3 and 4).", "svg": by_apex}]
     k = {name: float(summary[name]) for name in
          ("k_fit", "k_fit_stderr", "k_fit_ci_low", "k_fit_ci_high", "k_fit_chi2_reduced")}
     comparison = sorted({str(run.attrs.get("comparison", "")) for run in runs
@@ -366,9 +372,55 @@ def _impact(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
 
 
 def _design(summary: xr.Dataset) -> list[dict[str, str]]:
+    return [{"title": title, "svg": svg(figure)}
+            for title, figure in design_figures.design_checks(summary)]
+
+
+def _overview(summary: xr.Dataset, drawn: list[xr.Dataset]) -> str:
+    return svg(stiffness_figures.stiffness_by_specimen(summary, drawn))
+
+
+def _impact_vs_omega(summary: xr.Dataset) -> str:
+    return svg(impact_figures.impact_vs_omega(summary))
+
+
+def _impact_vs_apex(summary: xr.Dataset) -> str:
+    return svg(impact_figures.impact_vs_apex(summary))
+
+
+def _rendered(figure: tuple[Callable, tuple], *, summary: xr.Dataset) -> Any:
+    """A figure of the campaign page, rendered: ``figure`` is its function of the summary
+    and the function's further arguments."""
+    function, arguments = figure
     with report_style():
-        return [{"title": title, "svg": svg(figure)}
-                for title, figure in design_figures.design_checks(summary)]
+        return function(summary, *arguments)
+
+
+@dataclass(frozen=True)
+class CampaignFigures:
+    """The campaign page's figures being rendered (as tasks on a cluster, or here when
+    asked for), and the specimen rows read from the tensile runs on the way."""
+
+    names: list[str]
+    rendering: Mapped
+    specimens: list[dict[str, str]]
+
+    def svgs(self) -> dict[str, Any]:
+        """Figure name -> its SVG (the design checks: a list of titled SVGs)."""
+        return dict(zip(self.names, self.rendering.results(), strict=True))
+
+
+def campaign_figures(summary: xr.Dataset, runs: Sequence[RunFile],
+                     client: Client | None = None) -> CampaignFigures:
+    """Start rendering the campaign page's figures (as tasks on `client`, at once)."""
+    specimens, drawn = _tensile_results(summary, runs) if _has(summary, "chain") else ([], [])
+    figures = {"design": (_design, ())}
+    if _has(summary, "chain"):
+        figures["overview"] = (_overview, (drawn,))
+    if _has(summary, "operating_point"):
+        figures.update(by_omega=(_impact_vs_omega, ()), by_apex=(_impact_vs_apex, ()))
+    rendering = Mapped(_rendered, list(figures.values()), client, summary=summary)
+    return CampaignFigures(list(figures), rendering, specimens)
 
 
 def _not_reproduced() -> list[dict[str, str]]:
@@ -461,7 +513,8 @@ def _provenance(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
 
 
 def report_context(summary: xr.Dataset, runs: Sequence[RunFile],
-                   statuses: dict[str, RunStatus], created: datetime) -> dict[str, Any]:
+                   statuses: dict[str, RunStatus], created: datetime,
+                   figures: CampaignFigures) -> dict[str, Any]:
     """Everything the campaign page shows, as strings, lists and dicts (figures as SVG).
 
     Parameters
@@ -474,6 +527,8 @@ def report_context(summary: xr.Dataset, runs: Sequence[RunFile],
         Run id -> its status (:func:`~pipeline.report.run_pages.run_statuses`).
     created : datetime
         Creation time of the report.
+    figures : CampaignFigures
+        Its figures, rendering (:func:`campaign_figures`): waited for last.
 
     Returns
     -------
@@ -483,16 +538,22 @@ def report_context(summary: xr.Dataset, runs: Sequence[RunFile],
         ``not_reproduced``, ``provenance``.
     """
     notes = [line for line in str(summary.attrs.get("notes", "")).split("\n") if line]
-    return {
+    context = {
         "campaign": _campaign(summary, created),
         "checks": _checks(summary, runs),
         "notes": notes,
         "runs": run_rows(summary, runs, statuses),
-        "stiffness": _stiffness(summary, runs) if _has(summary, "chain") else None,
-        "impact": _impact(summary, runs) if _has(summary, "operating_point") else None,
-        "design": _design(summary),
         "not_reproduced": _not_reproduced(),
         "provenance": _provenance(summary, runs),
+    }
+    svgs = figures.svgs()
+    return {
+        **context,
+        "stiffness": (_stiffness(summary, figures.specimens, svgs["overview"])
+                      if _has(summary, "chain") else None),
+        "impact": (_impact(summary, runs, svgs["by_omega"], svgs["by_apex"])
+                   if _has(summary, "operating_point") else None),
+        "design": svgs["design"],
     }
 
 
@@ -526,8 +587,9 @@ def build_report(output_dir: str | Path, created: datetime | None = None,
         Creation time written in the report (default: now, UTC); with the same
         folder and the same `created` the report is the same, byte for byte.
     client : distributed.Client, optional
-        Write the run pages as tasks on this dask cluster while this process
-        builds the campaign page (default: all in this process).
+        Render the campaign page's figures and write the run pages as tasks on
+        this dask cluster while this process builds the page's tables (default:
+        all in this process).
 
     Returns
     -------
@@ -549,10 +611,11 @@ def build_report(output_dir: str | Path, created: datetime | None = None,
     runs = campaign_runs(output_dir, summary)
     statuses = run_statuses(summary, runs)
     created = created or datetime.now(UTC)
+    figures = campaign_figures(summary, runs, client)  # on a cluster: the largest tasks first
     pages = write_run_pages(output_dir, summary, runs, statuses, _campaign(summary, created),
-                            client)  # on a cluster, the run pages are written meanwhile
+                            client)
     html = environment().get_template(TEMPLATE_NAME).render(
-        **report_context(summary, runs, statuses, created))
+        **report_context(summary, runs, statuses, created, figures))
     written = tuple(pages.results())
     return Report(write_text_atomic(html, output_dir / layout.REPORT), written)
 
