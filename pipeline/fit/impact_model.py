@@ -25,7 +25,8 @@ The standard error comes from the weighted least-squares covariance, scaled by
 the Birge ratio ``sqrt(chi2_red)`` when the points scatter more than their
 standard errors say (``chi2_red > 1``; never shrunk below the stated errors).
 The confidence interval is ``value +- q stderr`` with ``q`` the normal quantile,
-or Student's t with the residual degrees of freedom when the errors were scaled.
+or Student's t with the residual degrees of freedom when the errors were scaled
+(:mod:`pipeline.fit.intervals`, shared with the other weighted fits).
 
 Checks reported beside the fit: the residual of every point (absolute,
 relative, and in standard errors), and per wheel and impact the linearity of
@@ -41,9 +42,9 @@ from dataclasses import dataclass, field
 import lmfit
 import numpy as np
 import pandas as pd
-from scipy import stats
 
 from pipeline.errors import FitError
+from pipeline.fit.intervals import scaled_error, straight_line
 from pipeline.theory.wheel_impact import RYABOV_MASS_SHARE, impact_tension, impact_velocities
 
 #: Columns of an operating point [SI units]: teeth z [-], apex angle psi [rad],
@@ -200,11 +201,8 @@ def linearity(points: pd.DataFrame, model: tuple[np.ndarray, np.ndarray] | None 
             x, y = omega[keep], measured[keep]
             slope = intercept = r2 = math.nan
             if np.unique(x).size >= 2:
-                slope, intercept = np.polyfit(x, y, 1)
-                if x.size >= 3:
-                    total = np.sum((y - y.mean()) ** 2)
-                    fitted = slope * x + intercept
-                    r2 = 1 - np.sum((y - fitted) ** 2) / total if total > 0 else math.nan
+                slope, intercept, line_r2 = straight_line(x, y)
+                r2 = line_r2 if x.size >= 3 else math.nan
             model_slope = (float(np.mean(model[impact - 1][group.index] / omega))
                            if model is not None else math.nan)
             rows.append(dict(zip(_WHEEL_COLUMNS, key, strict=True), impact=impact,
@@ -310,11 +308,7 @@ def fit_impact_model(points: pd.DataFrame, *, vary: str = "k", k: float = RYABOV
                        hint="check the operating points and their standard errors")
     value = float(result.params[name].value)
     dof = int(keep.sum()) - 1
-    chi2_reduced = float(result.chisqr / dof) if dof > 0 else math.nan
-    scaled = dof > 0 and chi2_reduced > 1
-    stderr = float(result.params[name].stderr) * (math.sqrt(chi2_reduced) if scaled else 1.0)
-    quantile = (stats.t.ppf((1 + confidence) / 2, dof) if scaled
-                else stats.norm.ppf((1 + confidence) / 2))
+    error = scaled_error(float(result.params[name].stderr), result.chisqr, dof, confidence)
     fitted_k, scale = (value, 1.0) if vary == "k" else (k, value)
 
     model1, model2 = model_tensions(points, fitted_k, scale)
@@ -327,7 +321,8 @@ def fit_impact_model(points: pd.DataFrame, *, vary: str = "k", k: float = RYABOV
         frame[f"N_u{impact}_normalized"] = (meas - model) / _standard_errors(points,
                                                                               f"N_u{impact}")
     return ImpactModelFit(
-        parameter=name, value=value, stderr=stderr, ci_low=value - quantile * stderr,
-        ci_high=value + quantile * stderr, confidence=confidence, k=fitted_k,
-        stiffness_scale=scale, chi2_reduced=chi2_reduced, dof=dof, scaled=scaled,
+        parameter=name, value=value, stderr=error.stderr,
+        ci_low=value - error.quantile * error.stderr,
+        ci_high=value + error.quantile * error.stderr, confidence=confidence, k=fitted_k,
+        stiffness_scale=scale, chi2_reduced=error.chi2_reduced, dof=dof, scaled=error.scaled,
         points=frame, linearity=linearity(frame, (model1, model2)), result=result)

@@ -63,11 +63,11 @@ import lmfit
 import numpy as np
 import pandas as pd
 from numpy.typing import ArrayLike
-from scipy import stats
 
 from pipeline.errors import FitError
 from pipeline.fit.impact import ImpactResult, ImpactStatistics
 from pipeline.fit.impact_model import CONFIDENCE, LINE_SPEEDS
+from pipeline.fit.intervals import scaled_error, straight_line
 from pipeline.theory.roller_impact import (
     G_LIM,
     base_radius,
@@ -363,26 +363,6 @@ def _measurements(omega: ArrayLike, amplitude: ArrayLike, stderr: ArrayLike
     return arrays[0], arrays[1], arrays[2]
 
 
-def _interval(stderr: float, chisqr: float, dof: int, confidence: float
-              ) -> tuple[float, float, float, bool]:
-    """Standard error [-], quantile, chi2_red and whether the error was scaled (Birge ratio)."""
-    chi2_reduced = chisqr / dof if dof > 0 else math.nan
-    scaled = dof > 0 and chi2_reduced > 1
-    level = (1 + confidence) / 2
-    quantile = stats.t.ppf(level, dof) if scaled else stats.norm.ppf(level)
-    return stderr * (math.sqrt(chi2_reduced) if scaled else 1.0), quantile, chi2_reduced, scaled
-
-
-def _line(omega: np.ndarray, amplitude: np.ndarray) -> tuple[float, float, float]:
-    """Slope [N s], intercept [N] and R^2 [-] (NaN below LINE_SPEEDS speeds) of N in omega."""
-    slope, intercept = np.polyfit(omega, amplitude, 1)
-    if np.unique(omega).size < LINE_SPEEDS:
-        return float(slope), float(intercept), math.nan
-    total = np.sum((amplitude - amplitude.mean()) ** 2)
-    residual = np.sum((amplitude - slope * omega - intercept) ** 2)
-    return float(slope), float(intercept), float(1 - residual / total) if total > 0 else math.nan
-
-
 def _points(omega: np.ndarray, amplitude: np.ndarray, stderr: np.ndarray, xi: float,
             branch: RollerBranch, n_max_rpm: float) -> pd.DataFrame:
     """The per-point table of :class:`RollerEngagementFit` for the fitted `xi` [-]."""
@@ -460,18 +440,20 @@ def fit_roller_engagement(
                        hint="check the branch's mass per metre, pitch, E0, length and k, and "
                             "that the amplitudes are in N")
     dof = omega.size - 1
-    error, quantile, chi2_reduced, scaled = _interval(float(result.params["xi"].stderr),
-                                                      float(result.chisqr), dof, confidence)
+    scaled = scaled_error(float(result.params["xi"].stderr), float(result.chisqr), dof,
+                          confidence)
     low, high = impact_velocity_coefficient_bounds(sprocket.teeth)
     xi_model, reason = sprocket.involute_xi(branch.pitch)
-    slope, intercept, r2 = _line(omega, amplitude)
+    slope, intercept, r2 = straight_line(omega, amplitude)
+    if np.unique(omega).size < LINE_SPEEDS:
+        r2 = math.nan
     n_max_rpm = from_si(max_angular_velocity(branch.mass_per_length, branch.pitch, xi,
                                              branch.roller_diameter, branch.roller_length,
                                              g_lim), "rpm")
-    ci_low, ci_high = xi - quantile * error, xi + quantile * error
+    ci_low, ci_high = xi - scaled.quantile * scaled.stderr, xi + scaled.quantile * scaled.stderr
     return RollerEngagementFit(
-        xi=xi, stderr=error, ci_low=ci_low, ci_high=ci_high, confidence=confidence,
-        chi2_reduced=chi2_reduced, dof=dof, scaled=scaled, xi_model=xi_model,
+        xi=xi, stderr=scaled.stderr, ci_low=ci_low, ci_high=ci_high, confidence=confidence,
+        chi2_reduced=scaled.chi2_reduced, dof=dof, scaled=scaled.scaled, xi_model=xi_model,
         xi_model_reason=reason, xi_bounds=(low, high), within_bounds=low <= xi <= high,
         interval_within_bounds=low <= ci_low and ci_high <= high, slope=slope,
         intercept=intercept, r2=r2, model_slope=strike_amplitude(1.0, xi, branch), g_lim=g_lim,

@@ -55,6 +55,7 @@ from scipy import stats
 from scipy.optimize import brentq
 
 from pipeline.errors import FitError
+from pipeline.fit.intervals import birge_ratio
 from pipeline.theory.tooth_segments import (
     CLAIMS,
     contact_force_ratio,
@@ -290,12 +291,7 @@ def _weighted_mean(values: np.ndarray, errors: np.ndarray) -> tuple[float, float
     weights = errors**-2.0
     mean = float(np.sum(weights * values) / np.sum(weights))
     chi2 = float(np.sum(weights * (values - mean) ** 2))
-    return mean, math.sqrt(1.0 / np.sum(weights)) * _birge(chi2, values.size - 1)
-
-
-def _birge(chi2: float, dof: int) -> float:
-    """The Birge ratio sqrt(chi2 / dof) when above 1, else 1 (errors never shrunk)."""
-    return math.sqrt(chi2 / dof) if dof > 0 and chi2 > dof else 1.0
+    return mean, math.sqrt(1.0 / np.sum(weights)) * birge_ratio(chi2, values.size - 1)
 
 
 def _beta_bounds(chain: Mapping[str, float], s: float, eps_n: float) -> tuple[float, float]:
@@ -451,13 +447,13 @@ def _interval(residual: Callable[[float], np.ndarray], value: float,
     at = residual(value)
     slope = (residual(other) - at) / (other - value)
     chi2, dof = float(np.sum(at**2)), at.size - 1
-    stderr = _birge(chi2, dof) / math.sqrt(float(np.sum(slope**2)))
+    stderr = birge_ratio(chi2, dof) / math.sqrt(float(np.sum(slope**2)))
     quantile = float(stats.t.ppf((1 + confidence) / 2, dof) if dof > 0
                      else stats.norm.ppf((1 + confidence) / 2))
     return {"stderr": stderr, "ci_low": max(value - quantile * stderr, bounds[0]),
             "ci_high": min(value + quantile * stderr, bounds[1]),
             "chi2_reduced": chi2 / dof if dof > 0 else math.nan, "dof": dof,
-            "scaled": _birge(chi2, dof) > 1}
+            "scaled": birge_ratio(chi2, dof) > 1}
 
 
 def _measured_summary(means: dict[str, tuple[float, float]]) -> dict[str, float]:
