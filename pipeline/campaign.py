@@ -642,8 +642,7 @@ def process_campaign(
         files = {run.id: layout.run_output(output, run.id) for run in sheet.runs
                  if run.id in current}
         removed = _remove_stale_runs(output, sheet.campaign.id, set(files))
-        keys = {run_id: found[INPUT_KEY] for run_id, found in current.items()}
-        key = _digest({"runs": {run_id: keys[run_id] for run_id in sorted(files)},
+        key = _digest({"runs": {run_id: current[run_id][INPUT_KEY] for run_id in sorted(files)},
                        "failures": [failure.message for failure in failures],
                        "sheet": sheet.sha256, "code": code_fingerprint()})
         result = CampaignResult(
