@@ -65,7 +65,7 @@ Per seating, the median of the sample-by-sample ratio's standard error over
 the plateau, ``sqrt(pi/2) 1.4826 MAD / sqrt(n)`` (white noise; a chain-force
 ripple common to F and the segments cancels in it), with that of the zeros
 added in quadrature. Per run, the statistics of
-:class:`pipeline.fit.impact.ImpactStatistics` over the valid seatings.
+:class:`pipeline.statistics.MedianStatistics` over the valid seatings.
 
 Why not the engagement detection
 --------------------------------
@@ -91,7 +91,7 @@ import pandas as pd
 from pipeline.condition.engagement import check_uniform
 from pipeline.condition.samples import run_hits, runs_of
 from pipeline.errors import SignalError
-from pipeline.fit.impact import ImpactStatistics
+from pipeline.statistics import MAD_TO_SIGMA, MedianStatistics
 
 #: Seatings a run needs: fewer give no meaningful median absolute deviation.
 MIN_EVENTS = 5
@@ -117,8 +117,8 @@ EXCLUSIONS = ("truncated", "gap", "short", "no_zero")
 CHANNELS = ("F", "F_K1", "F_K2", "F_P")
 #: The ratios per seating [-].
 RATIOS = ("F_K/F", "F_K1/F", "F_K2/F", "F_P/F")
-#: Normal-noise MAD to sigma (1.4826) over the sqrt(2) of a difference of two samples.
-_DIFF_MAD_TO_SIGMA = 1.4826 / math.sqrt(2.0)
+#: Normal-noise MAD to sigma over the sqrt(2) of a difference of two samples.
+_DIFF_MAD_TO_SIGMA = MAD_TO_SIGMA / math.sqrt(2.0)
 
 
 class SegmentImbalanceWarning(UserWarning):
@@ -165,7 +165,7 @@ class SegmentLoadEvents:
         ``F_K/F_stderr`` (and ``F_P/F_stderr``), ``imbalance`` [-],
         ``imbalanced`` (bool) and ``status`` (``"ok"`` or one of
         :data:`EXCLUSIONS`). Without F_P its columns are left out.
-    statistics : dict of str to ImpactStatistics
+    statistics : dict of str to MedianStatistics
         Per channel and ratio (and ``imbalance``) over the ``"ok"`` seatings.
     excluded : dict of str to int
         Seatings excluded per reason of :data:`EXCLUSIONS`.
@@ -178,7 +178,7 @@ class SegmentLoadEvents:
     """
 
     events: pd.DataFrame
-    statistics: dict[str, ImpactStatistics]
+    statistics: dict[str, MedianStatistics]
     excluded: dict[str, int]
     detection: Detection
     imbalance_tolerance: float
@@ -319,7 +319,7 @@ def plateau(total: np.ndarray, start: int, stop: int, levels: Detection
 
 def _median_stderr(values: np.ndarray) -> float:
     """Standard error of the median of `values` from their MAD (white noise)."""
-    return ImpactStatistics.of(values[np.isfinite(values)]).stderr_events
+    return MedianStatistics.of(values[np.isfinite(values)]).stderr_events
 
 
 @dataclass(frozen=True)
@@ -552,7 +552,7 @@ def condition_segment_load(
     valid = frame[frame["status"] == "ok"]
     _check_chain_force(valid)
     quantities = [name for name in (*channels, *RATIOS, "imbalance") if name in valid]
-    statistics = {name: ImpactStatistics.of(valid[name].to_numpy(dtype=float))
+    statistics = {name: MedianStatistics.of(valid[name].to_numpy(dtype=float))
                   for name in quantities}
     return SegmentLoadEvents(events=frame, statistics=statistics, excluded=excluded,
                              detection=levels, imbalance_tolerance=imbalance_tolerance,

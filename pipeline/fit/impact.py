@@ -89,6 +89,7 @@ from pipeline.fit.windows import (
     free_phase_residuals,
     settle_onsets,
 )
+from pipeline.statistics import MedianStatistics
 
 #: Events used to fit omega_n and zeta per run.
 RINGING_EVENTS = 64
@@ -98,58 +99,6 @@ RESIDUAL_OUTLIER = 4.0
 RESIDUAL_FLOOR = 1e-3
 #: Reasons an event is excluded from a run's statistics, in order of precedence.
 EXCLUSIONS = ("truncated", "gap", "clipped", "overlap", "fit_failed")
-#: Consistency constant of the MAD (normal distribution) and efficiency factor of
-#: the median (standard error of the median = sqrt(pi / 2) sigma / sqrt(n)).
-_MAD_TO_SIGMA = 1.4826
-_MEDIAN_SE = math.sqrt(math.pi / 2)
-
-
-@dataclass(frozen=True)
-class ImpactStatistics:
-    """Robust statistics of one quantity over a run's valid events.
-
-    Attributes
-    ----------
-    median : float
-        Median [unit of the quantity].
-    iqr : float
-        Interquartile range.
-    mad : float
-        Median absolute deviation (unscaled).
-    stderr : float
-        Standard error of the median: ``stderr_events`` and ``stderr_ringing``
-        added in quadrature.
-    count : int
-        Valid events.
-    stderr_events : float
-        From the scatter of the events, ``sqrt(pi/2) 1.4826 MAD / sqrt(count)``.
-    stderr_ringing : float
-        From the uncertainty of the run's fitted omega_n and zeta, which every
-        event shares (0 where the quantity does not depend on them).
-    """
-
-    median: float
-    iqr: float
-    mad: float
-    stderr: float
-    count: int
-    stderr_events: float
-    stderr_ringing: float = 0.0
-
-    @classmethod
-    def of(cls, values: np.ndarray, stderr_ringing: float = 0.0) -> ImpactStatistics:
-        """Statistics of `values` (NaN when empty), with the ringing part of the error."""
-        values = np.asarray(values, dtype=float)
-        if values.size == 0:
-            return cls(math.nan, math.nan, math.nan, math.nan, 0, math.nan, stderr_ringing)
-        median = float(np.median(values))
-        q1, q3 = np.percentile(values, [25, 75])
-        mad = float(np.median(np.abs(values - median)))
-        events = _MEDIAN_SE * _MAD_TO_SIGMA * mad / math.sqrt(values.size)
-        return cls(median, float(q3 - q1), mad, math.hypot(events, stderr_ringing),
-                   int(values.size), events, stderr_ringing)
-
-
 @dataclass(frozen=True)
 class ImpactResult:
     """Impact extraction of one engagement run.
@@ -165,7 +114,7 @@ class ImpactResult:
         ``status`` (``"ok"`` or one of :data:`EXCLUSIONS`).
     ringing : Ringing
         Natural frequency and damping used.
-    statistics : dict of str to ImpactStatistics
+    statistics : dict of str to MedianStatistics
         Per quantity (``N_u1``, ``N_u2``, ``peak1``, ``peak2``, ``baseline``,
         ``tau``) over the ``"ok"`` events.
     excluded : dict of str to int
@@ -180,19 +129,19 @@ class ImpactResult:
 
     events: pd.DataFrame
     ringing: Ringing
-    statistics: dict[str, ImpactStatistics]
+    statistics: dict[str, MedianStatistics]
     excluded: dict[str, int]
     clip_levels: tuple[float | None, float | None] = (None, None)
     comparison: str = "amplitude"
     messages: tuple[str, ...] = field(default_factory=tuple)
 
     @property
-    def N_u1(self) -> ImpactStatistics:
+    def N_u1(self) -> MedianStatistics:
         """Statistics of the impact-1 amplitudes [N]."""
         return self.statistics["N_u1"]
 
     @property
-    def N_u2(self) -> ImpactStatistics:
+    def N_u2(self) -> MedianStatistics:
         """Statistics of the impact-2 amplitudes [N]."""
         return self.statistics["N_u2"]
 
@@ -587,7 +536,7 @@ def _event_table(prior1: np.ndarray, prior2: np.ndarray, status: np.ndarray,
 
 
 def _run_statistics(frame: pd.DataFrame, relative_errors: dict[str, float],
-                    file: str | Path | None) -> tuple[dict[str, ImpactStatistics], dict[str, int]]:
+                    file: str | Path | None) -> tuple[dict[str, MedianStatistics], dict[str, int]]:
     """Statistics of the ``ok`` events of `frame` and the exclusion counts.
 
     `relative_errors` are the relative standard errors of the medians due to the
@@ -601,7 +550,7 @@ def _run_statistics(frame: pd.DataFrame, relative_errors: dict[str, float],
     for name in ("N_u1", "N_u2", "peak1", "peak2", "baseline", "tau"):
         values = frame.loc[ok, name].to_numpy()
         systematic = relative_errors.get(name, 0.0) * abs(float(np.median(values)))
-        statistics[name] = ImpactStatistics.of(values, systematic)
+        statistics[name] = MedianStatistics.of(values, systematic)
     status = frame["status"].to_numpy()
     excluded = {reason: int(np.sum(status == reason)) for reason in EXCLUSIONS}
     return statistics, excluded

@@ -45,6 +45,7 @@ import pandas as pd
 
 from pipeline.errors import FitError
 from pipeline.fit.intervals import scaled_error, straight_line
+from pipeline.statistics import median_stderr
 from pipeline.theory.wheel_impact import RYABOV_MASS_SHARE, impact_tension, impact_velocities
 
 #: Columns of an operating point [SI units]: teeth z [-], apex angle psi [rad],
@@ -52,9 +53,6 @@ from pipeline.theory.wheel_impact import RYABOV_MASS_SHARE, impact_tension, impa
 #: branch length L [m].
 POINT_COLUMNS = ("teeth", "apex_angle", "omega", "t", "d", "mass_per_length", "E0",
                  "branch_length")
-#: Consistency constant of the MAD and efficiency factor of the median (the
-#: standard error of a median from a MAD, when no ``_stderr`` column is given).
-_MEDIAN_SE_FROM_MAD = math.sqrt(math.pi / 2) * 1.4826
 #: Columns identifying a wheel for the linearity check.
 _WHEEL_COLUMNS = ("teeth", "apex_angle", "t", "d", "mass_per_length", "E0", "branch_length")
 #: Level of the interval of the fitted parameter.
@@ -135,7 +133,7 @@ def _standard_errors(points: pd.DataFrame, impact: str) -> np.ndarray:
         return _column(points, f"{impact}_stderr")
     mad, count = _column(points, f"{impact}_mad"), _column(points, f"{impact}_count")
     with np.errstate(divide="ignore", invalid="ignore"):
-        return _MEDIAN_SE_FROM_MAD * mad / np.sqrt(count)
+        return median_stderr(mad, count)
 
 
 def model_tensions(points: pd.DataFrame, k: float = RYABOV_MASS_SHARE,

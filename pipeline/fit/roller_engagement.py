@@ -65,9 +65,10 @@ import pandas as pd
 from numpy.typing import ArrayLike
 
 from pipeline.errors import FitError
-from pipeline.fit.impact import ImpactResult, ImpactStatistics
+from pipeline.fit.impact import ImpactResult
 from pipeline.fit.impact_model import CONFIDENCE, LINE_SPEEDS
 from pipeline.fit.intervals import scaled_error, straight_line
+from pipeline.statistics import MedianStatistics
 from pipeline.theory.roller_impact import (
     G_LIM,
     base_radius,
@@ -246,7 +247,7 @@ def engagement_teeth(teeth: int) -> int:
     return teeth // 2
 
 
-def strike_statistics(impacts: ImpactResult) -> ImpactStatistics:
+def strike_statistics(impacts: ImpactResult) -> MedianStatistics:
     """The run's roller-strike amplitude: both strikes of every valid seating pooled.
 
     Parameters
@@ -257,7 +258,7 @@ def strike_statistics(impacts: ImpactResult) -> ImpactStatistics:
 
     Returns
     -------
-    ImpactStatistics
+    MedianStatistics
         Median, spread and standard error [N] of the pooled amplitudes; the
         part of the error due to the run's ringing fit is the mean of the two
         slots' (they share the ringing).
@@ -265,7 +266,7 @@ def strike_statistics(impacts: ImpactResult) -> ImpactStatistics:
     valid = impacts.events[impacts.events["status"] == "ok"]
     pooled = np.concatenate([valid["N_u1"].to_numpy(), valid["N_u2"].to_numpy()])
     ringing = 0.5 * (impacts.N_u1.stderr_ringing + impacts.N_u2.stderr_ringing)
-    return ImpactStatistics.of(pooled, ringing)
+    return MedianStatistics.of(pooled, ringing)
 
 
 @dataclass(frozen=True)

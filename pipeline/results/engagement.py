@@ -23,9 +23,10 @@ import pandas as pd
 import xarray as xr
 
 from pipeline.condition.engagement import EngagementEvents
-from pipeline.fit.impact import ImpactResult, ImpactStatistics, extraction_settings
+from pipeline.fit.impact import ImpactResult, extraction_settings
 from pipeline.fit.windows import Ringing
 from pipeline.results.notes import joined, lines
+from pipeline.statistics import MedianStatistics
 
 #: Largest number of signal samples stored in a run file; longer logs are decimated.
 MAX_STORED_SAMPLES = 200_000
@@ -49,7 +50,7 @@ EVENT_VARIABLES = {
 #: Per-event columns stored under another name: ``N_u1_stderr`` is the run statistic's.
 EVENT_NAMES = {"N_u1_stderr": "N_u1_event_stderr", "N_u2_stderr": "N_u2_event_stderr"}
 
-#: The statistics of each quantity (:class:`ImpactStatistics`), stored as ``<quantity>_<name>``.
+#: The statistics of each quantity (:class:`MedianStatistics`), stored as ``<quantity>_<name>``.
 STATISTICS = ("median", "iqr", "mad", "stderr", "count", "stderr_events", "stderr_ringing")
 
 #: Global attributes written from the result's fields (the others are its :attr:`attrs`).
@@ -211,7 +212,7 @@ def _impact_of(dataset: xr.Dataset) -> ImpactResult:
     names = list(dataset.data_vars)
     quantities = [name.removesuffix("_median") for name in names if name.endswith("_median")]
     statistics = {
-        quantity: ImpactStatistics(**{
+        quantity: MedianStatistics(**{
             statistic: (int if statistic == "count" else float)(
                 dataset[f"{quantity}_{statistic}"]) for statistic in STATISTICS})
         for quantity in quantities}

@@ -15,9 +15,10 @@ import pandas as pd
 import pytest
 
 from pipeline.fit import impact, windows
-from pipeline.fit.impact import ImpactResult, ImpactStatistics
+from pipeline.fit.impact import ImpactResult
 from pipeline.fit.windows import Ringing
 from pipeline.results import EngagementResult, result_from_dataset
+from pipeline.statistics import MedianStatistics
 from pipeline.store.netcdf import read_dataset, write_atomic
 
 N_U1 = np.array([1010.0, 990.0, 1000.0, np.nan])
@@ -34,7 +35,7 @@ def extraction() -> ImpactResult:
         "peak1": 0.954 * N_U1, "peak2": 0.954 * N_U2, "residual_rms": [3.0, 3.1, 2.9, np.nan],
         "status": ["ok", "ok", "ok", "clipped"]})
     ok = events["status"] == "ok"
-    statistics = {name: ImpactStatistics.of(events.loc[ok, name].to_numpy(), stderr_ringing=2.0)
+    statistics = {name: MedianStatistics.of(events.loc[ok, name].to_numpy(), stderr_ringing=2.0)
                   for name in ("N_u1", "N_u2", "peak1", "peak2", "baseline", "tau")}
     excluded = {reason: int(reason == "clipped") for reason in impact.EXCLUSIONS}
     ringing = Ringing(omega_n=900.0, zeta=0.03, omega_n_stderr=1.5, zeta_stderr=0.002,
