@@ -41,12 +41,11 @@ class Mapped:
     def __init__(self, function: Callable, items: Sequence, client: Client | None = None,
                  **shared: Any) -> None:
         self._function, self._items, self._shared = function, list(items), shared
-        self._futures = None
+        self._client, self._futures = client, None
         if client is not None and self._items:
             scattered = {name: client.scatter(value, broadcast=True, hash=False)
                          for name, value in shared.items()}
             self._futures = client.map(function, self._items, pure=False, **scattered)
-            self._client = client
 
     def results(self) -> list:
         """The results, in the items' order (the first task's error is raised)."""
