@@ -27,7 +27,9 @@ Channel removal (:func:`find_removal`)
     :data:`FREEZE_RISE` of the maximum, or while another displacement channel
     keeps moving: the specimen lengthens all the while).
     The first sample where one of these happens ends the channel's usable
-    data.
+    data. A channel is judged to within :data:`RESOLUTION_STEPS` steps of its
+    resolution (:func:`reading_step`): a quantised reading flickers a step
+    either way, and that is noise.
 """
 
 from __future__ import annotations
@@ -72,6 +74,11 @@ JUMP_FACTOR = 30.0
 
 #: Neighbourhood of the jump test [samples].
 JUMP_NEIGHBOURHOOD = 21
+
+#: A channel's reading is not judged finer than this many of its resolution steps: a
+#: quantised reading flickers by a step either way about a steady value, so a fall of
+#: two steps from a flicker up is noise, not a gauge running backwards.
+RESOLUTION_STEPS = 3.0
 
 
 @dataclass(frozen=True)
@@ -217,6 +224,21 @@ def _still_while_others_move(channel: np.ndarray, others: Sequence[np.ndarray],
     return None
 
 
+def reading_step(channel: np.ndarray) -> float:
+    """Resolution of a quantised reading: its smallest change between samples [channel's unit].
+
+    Zero for a channel that never changes.
+
+    Examples
+    --------
+    >>> reading_step(np.array([2.53, 2.53, 2.54, 2.52, 2.53]))  # doctest: +ELLIPSIS
+    0.0099...
+    """
+    steps = np.abs(np.diff(channel[np.isfinite(channel)]))
+    steps = steps[steps > 0]
+    return float(steps.min()) if steps.size else 0.0
+
+
 def _frozen_since(channel: np.ndarray, position: int, tolerance: float) -> int:
     """The first sample of the constant stretch of `channel` that holds `position`."""
     moved = np.flatnonzero(np.abs(channel[:position] - channel[position]) > tolerance)
@@ -259,7 +281,8 @@ def find_removal(oriented_force: np.ndarray, oriented_channel: np.ndarray,
     channel = np.asarray(oriented_channel[: peak + 1], dtype=float)
     if force.size < 3:
         return None
-    tolerance = max(5.0 * noise_level(channel), 0.005 * np.ptp(channel))
+    tolerance = max(5.0 * noise_level(channel), 0.005 * np.ptp(channel),
+                    RESOLUTION_STEPS * reading_step(channel))
     rise = FREEZE_RISE * whole[peak]
     # past the maximum the specimen still lengthens while the force falls (necking)
     falling = _freeze(whole[peak] - whole[peak:], oriented_channel[peak:], tolerance, rise,
