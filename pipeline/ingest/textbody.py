@@ -340,14 +340,16 @@ def split_table(
 def float_arrays(chunks: dict[int, pa.ChunkedArray]) -> dict[int, np.ndarray]:
     """Float columns as writable numpy arrays (NaN for missing), emptying `chunks`.
 
-    Each pyarrow column is released as soon as it is converted, so that the
-    peak memory holds one column twice, not the whole table.
+    Each pyarrow column is released, and its memory handed back by pyarrow's
+    pool, as soon as it is converted, so that the peak memory holds one column
+    twice, not the whole table.
     """
     arrays = {}
+    pool = pa.default_memory_pool()
     for index in sorted(chunks):
         array = chunks.pop(index).to_numpy()
         arrays[index] = array if array.flags.writeable else array.copy()
-    pa.default_memory_pool().release_unused()
+        pool.release_unused()
     return arrays
 
 
