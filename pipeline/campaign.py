@@ -3,8 +3,9 @@
 ``raw/<campaign>/campaign.toml`` + machine exports
 -> per run (:mod:`pipeline.runs`): ingest -> condition -> fit -> its typed result
    (:mod:`pipeline.results`) -> one netCDF file
--> compare (:mod:`pipeline.compare`) -> ``summary.nc``, CSV tables (``summary.csv``
-   per chain, ``specimens.csv`` per tensile specimen, ``impact_summary.csv``)
+-> compare (:mod:`pipeline.compare`, :mod:`pipeline.wear_summary`) -> ``summary.nc``,
+   CSV tables (``summary.csv`` per chain, ``specimens.csv`` per tensile specimen,
+   ``impact_summary.csv``, ``wear_summary.csv`` per wear run)
 -> report (:mod:`pipeline.report`) -> ``report.html`` and a page per run in
    ``report-runs/``,
 all in ``<project>/processed/<campaign id>/`` (``raw/`` is only read).
@@ -49,9 +50,16 @@ from pipeline.compare import ChainInput, impact_summary, specimen_summary, stiff
 from pipeline.errors import ChainbenchError, FitError, OutputError
 from pipeline.fit.impact_model import ImpactModelFit, fit_impact_model
 from pipeline.fit.stiffness import SpecimenStiffness
+from pipeline.fit.wear import CONFIDENCE as WEAR_CONFIDENCE
 from pipeline.plausibility import check_operating_points, check_specimens, excluded, flags_dataset
 from pipeline.report.build import build_report, remove_report
-from pipeline.results import EngagementResult, RunResult, TensileResult, result_from_dataset
+from pipeline.results import (
+    EngagementResult,
+    RunResult,
+    TensileResult,
+    WearResult,
+    result_from_dataset,
+)
 from pipeline.results.notes import run_notes
 from pipeline.results.tensile import STRENGTH_VARIABLES
 from pipeline.runs import (
@@ -61,6 +69,7 @@ from pipeline.runs import (
     operating_point,
     process_engagement_run,
     process_tensile_run,
+    process_wear_run,
 )
 from pipeline.runsheet import ChainDef, RunDef, RunSheet, load_run_sheet
 from pipeline.store import layout
@@ -77,6 +86,7 @@ from pipeline.store.netcdf import (
 )
 from pipeline.tasks import Mapped
 from pipeline.units import to_si
+from pipeline.wear_summary import wear_row, wear_summary
 
 if TYPE_CHECKING:
     from distributed import Client
@@ -209,6 +219,8 @@ def _run_result(sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float | None,
     progress = progress or (lambda run_id, stage: None)
     if run.kind == "tensile":
         return process_tensile_run(sheet, run, raw_sha256, progress)
+    if run.kind == "wear":
+        return process_wear_run(sheet, run, raw_sha256, progress)
     return process_engagement_run(sheet, run, raw_sha256, E0, progress)
 
 
@@ -326,11 +338,13 @@ def summary_table(summary: xr.Dataset, dim: str) -> pd.DataFrame:
 @dataclass(frozen=True)
 class _RunSummary:
     """What the campaign summary needs of one run's result: a tensile run's specimen
-    stiffness and its row of the specimen table, or an engagement run's operating point."""
+    stiffness and its row of the specimen table, an engagement run's operating point, or
+    a wear run's row of the wear table."""
 
     specimen: SpecimenStiffness | None = None
     row: dict | None = None
     point: dict[str, float] | None = None
+    wear: dict | None = None
 
 
 def _run_summary(sheet: RunSheet, run: RunDef, result: RunResult, E0: float | None
@@ -338,6 +352,8 @@ def _run_summary(sheet: RunSheet, run: RunDef, result: RunResult, E0: float | No
     """What the summary needs of `run`'s result (E0 [N]: of an engagement run)."""
     if isinstance(result, TensileResult):
         return _RunSummary(specimen=result.specimen, row=_specimen_row(run, result))
+    if isinstance(result, WearResult):
+        return _RunSummary(wear=wear_row(result))
     return _RunSummary(point={**operating_point(sheet, run, E0), **_measured(result)})
 
 
@@ -352,11 +368,12 @@ def _read_back(stored: tuple[RunDef, Path, float | None], *, sheet: RunSheet) ->
 class _SummaryInputs:
     """What the campaign summary is built from, in run-sheet order: per tensile run its
     specimen stiffness and its row of the specimen table, per engagement run its
-    operating point."""
+    operating point, per wear run its row of the wear table."""
 
     specimens: dict[str, SpecimenStiffness] = field(default_factory=dict)
     rows: dict[str, dict] = field(default_factory=dict)
     points: dict[str, dict[str, float]] = field(default_factory=dict)
+    wear: dict[str, dict] = field(default_factory=dict)
 
     @classmethod
     def of(cls, sheet: RunSheet, runs: dict[str, _RunSummary]) -> _SummaryInputs:
@@ -368,6 +385,8 @@ class _SummaryInputs:
                 continue
             if found.point is not None:
                 inputs.points[run.id] = found.point
+            elif found.wear is not None:
+                inputs.wear[run.id] = found.wear
             else:
                 inputs.specimens[run.id], inputs.rows[run.id] = found.specimen, found.row
         return inputs
@@ -458,7 +477,7 @@ def _runs_dataset(sheet: RunSheet, stored: list[str]) -> xr.Dataset:
     kinds = {run.id: run.kind for run in sheet.runs}
     return xr.Dataset(
         {"run_kind": ("run", [kinds[run_id] for run_id in stored],
-                      {"long_name": "kind of the run (tensile or engagement)"})},
+                      {"long_name": "kind of the run (tensile, engagement or wear)"})},
         coords={"run": list(stored)},
     )
 
@@ -474,6 +493,8 @@ def _summary(sheet: RunSheet, stored: list[str], inputs: _SummaryInputs,
         impact, impact_flags, notes = _impact_parts(inputs.points, accepted)
         parts.append(impact)
         flags += impact_flags
+    if inputs.wear:
+        parts.append(wear_summary(inputs.wear, WEAR_CONFIDENCE))
     parts.append(flags_dataset(flags))
     summary = xr.merge(parts, combine_attrs="drop_conflicts")
     summary.attrs["notes"] = "\n".join(filter(None, [summary.attrs.get("notes", ""), *notes]))
@@ -490,7 +511,8 @@ def _write_summary(summary: xr.Dataset, output: Path) -> list[str]:
     write_atomic(summary, output / layout.SUMMARY)
     written = [layout.SUMMARY]
     for dim, name in (("chain", layout.CHAIN_TABLE), ("specimen", layout.SPECIMEN_TABLE),
-                      ("operating_point", layout.IMPACT_TABLE)):
+                      ("operating_point", layout.IMPACT_TABLE),
+                      ("wear_run", layout.WEAR_TABLE)):
         if summary.sizes.get(dim, 0):
             write_text_atomic(csv_table(summary, dim), output / name)
             written.append(name)

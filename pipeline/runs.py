@@ -19,8 +19,9 @@ import pandas as pd
 
 from pipeline.condition.engagement import SpeedMismatchWarning
 from pipeline.condition.tensile import TensileRun, condition_tensile
+from pipeline.condition.wear import condition_wear
 from pipeline.engagement_log import LogSource, TableSource, analyse_log
-from pipeline.errors import IngestError, RunSheetError, SignalError
+from pipeline.errors import FitError, IngestError, RunSheetError, SignalError, UnitError
 from pipeline.fit.stiffness import (
     SpecimenStiffness,
     fit_settings,
@@ -28,11 +29,21 @@ from pipeline.fit.stiffness import (
     specimen_stiffness,
 )
 from pipeline.fit.strength import Strength, specimen_strength
+from pipeline.fit.wear import (
+    WearFit,
+    compare_pin_wear,
+    fit_wear,
+    pitch_growth_limit,
+    predict_life,
+)
 from pipeline.ingest import TableMetadata, open_log, read_table
-from pipeline.results import EngagementResult, TensileResult
+from pipeline.ingest.unitparse import COUNTER_UNITS
+from pipeline.results import EngagementResult, TensileResult, WearResult
 from pipeline.results.engagement import MAX_STORED_SAMPLES
+from pipeline.results.wear import LimitOutcome
 from pipeline.runsheet import RunDef, RunSheet
 from pipeline.store.netcdf import provenance_attrs, read_dataset
+from pipeline.theory.pin_criterion import SUPPORTS, PinCheck, check_pin
 from pipeline.units import to_si
 
 #: Engagement logs longer than this are read from their file and processed in chunks
@@ -270,3 +281,102 @@ def process_engagement_run(
     signal = analysis.preview_time, analysis.preview_force, analysis.preview_stride
     warned = list(dict.fromkeys([*read_warnings, *analysis.warnings]))
     return EngagementResult.of(events, result, signal, attrs, warned)
+
+
+def process_wear_run(sheet: RunSheet, run: RunDef, raw_sha256: str,
+                     progress: Progress = _quiet) -> WearResult:
+    """Ingest, condition and fit one wear log; its life to the limits and the pin criterion.
+
+    The log's elongation per pitch is fitted with the run-in or the linear
+    wear model (:func:`pipeline.fit.wear.fit_wear`, as ``wear_model`` says);
+    the life is predicted to the jump-off growth of Paper 004, eq. (3), for
+    the run's sprocket and to the lab's ``wear_limit_pct`` when declared. A
+    life that cannot be given (no significant wear, or the chain at the limit
+    from the start) is NaN, with the reason in the run's warnings.
+    """
+    progress(run.id, "ingest")
+    table, metadata = read_run(sheet, run)
+    _check_counter(sheet, run, metadata)
+    progress(run.id, "condition")
+    chain = sheet.chains[run.chain].si()
+    explicit = run.columns.model_dump(exclude_none=True) if run.columns else {}
+    channel = ("length" if "length" in explicit else "elongation" if "gauges" in explicit
+               else None)
+    log, notes = condition_wear(table, pitches=run.section_pitches, pitch=chain["t"],
+                                reference=run.elongation_reference,
+                                abscissa=run.wear_abscissa, channel=channel)
+    progress(run.id, "fit")
+    fit = fit_wear(log, model=run.wear_model)
+    pin = _pin_criterion(run, chain)
+    limits = {"eq3": _limit(fit, pin, run, teeth=run.sprocket_teeth)}
+    if run.wear_limit_pct is not None:
+        limits["lab"] = _limit(fit, pin, run, limit_percent=run.wear_limit_pct)
+    notes += [f"no life to the {name} limit: {outcome.note}" for name, outcome in limits.items()
+              if outcome.note]
+    notes += _load_notes(run, table)
+    attrs = _attrs(sheet, run, f"Wear test {run.id} of campaign {sheet.campaign.id}",
+                   raw_sha256)
+    attrs.update(layout=metadata.layout, abscissa=log.abscissa, reference=log.reference,
+                 channel=channel or ("length" if "length" in table else "elongation"),
+                 section_pitches=run.section_pitches, pitch=log.pitch,
+                 sprocket_teeth=run.sprocket_teeth,
+                 pin_criterion="evaluated" if pin else "not evaluated: the run sheet gives "
+                 "no max_link_force_kN, pin_allowable_stress_MPa and pin_wear_coefficient")
+    logged = table.loc[:, [name for name in ("force", "speed") if name in table]]
+    return WearResult.of(fit, limits, pin, logged.rename(columns={"force": "load"}), attrs,
+                         metadata.warnings, notes)
+
+
+def _check_counter(sheet: RunSheet, run: RunDef, metadata: TableMetadata) -> None:
+    """Refuse a cycle counter whose unit scales it (``kcycles``): it is kept as counted."""
+    for column in metadata.columns:
+        unit = (column.unit or "").strip().strip("()[]").strip()
+        if column.role == "cycle_count" and unit.lower() not in COUNTER_UNITS:
+            raise UnitError(
+                f"the cycle counter has the unit {column.unit!r}, which chainbench cannot "
+                "scale: counts are kept as counted", file=sheet.run_file(run),
+                column=column.name,
+                hint="log the cycles as a plain count (unit 1, cycles, or none)")
+
+
+def _pin_criterion(run: RunDef, chain: dict[str, float | None]
+                   ) -> tuple[PinCheck, dict[str, float]] | None:
+    """Paper 004's pin criterion, eqs. (1)-(5), for the run's chain, sprocket and loads."""
+    if not run.pin_criterion:
+        return None
+    inputs = {"pin_wear_coefficient": run.pin_wear_coefficient,
+              "pin_force": to_si(run.max_link_force_kN, "kN"),
+              "pin_allowable_stress": to_si(run.pin_allowable_stress_MPa, "MPa"),
+              "pin_support_factor": SUPPORTS[run.pin_support]}
+    check = check_pin(chain["pin_diameter"], chain["t"], run.sprocket_teeth,
+                      inputs["pin_force"], chain["plate_span"], chain["bush_length"],
+                      inputs["pin_allowable_stress"], inputs["pin_wear_coefficient"],
+                      inputs["pin_support_factor"])
+    return check, inputs
+
+
+def _limit(fit: WearFit, pin: tuple[PinCheck, dict[str, float]] | None, run: RunDef,
+           **limit: float) -> LimitOutcome:
+    """The limit (``teeth=`` or ``limit_percent=``), the life to it and the pin wear there."""
+    value, source = pitch_growth_limit(fit.log.pitch, fit.log.reference, **limit)
+    try:
+        life = predict_life(fit, **limit)
+    except FitError as error:
+        return LimitOutcome(value, source, note=error.message)
+    worn = (compare_pin_wear(life, teeth=run.sprocket_teeth,
+                             wear_coefficient=pin[1]["pin_wear_coefficient"])
+            if pin and life.growth > 0 else None)
+    return LimitOutcome(value, source, life, worn)
+
+
+def _load_notes(run: RunDef, table: pd.DataFrame) -> list[str]:
+    """A note when the logged load exceeds the force the pin criterion is evaluated at."""
+    if not run.pin_criterion or "force" not in table:
+        return []
+    peak = float(np.nanmax(table["force"].to_numpy())) if table["force"].notna().any() else 0.0
+    declared = to_si(run.max_link_force_kN, "kN")
+    if peak <= declared:
+        return []
+    return [f"the log's largest load, {peak / 1e3:.4g} kN, is above max_link_force_kN = "
+            f"{run.max_link_force_kN:g} kN: the pin criterion is evaluated at a smaller force "
+            "than the chain carried; set max_link_force_kN to the largest force on a link"]

@@ -118,6 +118,10 @@ class ChainDef(_Strict):
     min_breaking_force_kN: PositiveFloat | None = None  #: smallest breaking force allowed
     max_elongation_at_proof_pct: PositiveFloat | None = None  #: largest elongation at proof force
     min_elongation_at_fracture_pct: PositiveFloat | None = None  #: smallest elongation at fracture
+    # roller chains: the pin of Paper 004's criterion (wear runs)
+    pin_diameter_mm: PositiveFloat | None = None  #: nominal pin diameter d
+    bush_length_mm: PositiveFloat | None = None  #: bush length l
+    plate_span_mm: PositiveFloat | None = None  #: span l1 between the outer-plate mid-planes
 
     @model_validator(mode="after")
     def _known_catalog(self) -> ChainDef:
@@ -134,6 +138,8 @@ class ChainDef(_Strict):
         from_catalog = (lambda key: spec.get(key)) if spec else (lambda key: None)
         values = {
             "d": self.d_mm, "t": self.t_mm, "R0": self.R0_mm, "a": self.a_mm,
+            "pin_diameter": self.pin_diameter_mm, "bush_length": self.bush_length_mm,
+            "plate_span": self.plate_span_mm,
         }
         result: dict[str, float | None] = {
             key: to_si(value, "mm") if value is not None else from_catalog(key)
@@ -163,6 +169,9 @@ class ColumnMap(_Strict):
     force: str | None = None
     gauges: list[str] | None = None
     angle: str | None = None
+    cycle_count: str | None = None
+    length: str | None = None
+    speed: str | None = None
 
 
 class UnitMap(_Strict):
@@ -173,6 +182,8 @@ class UnitMap(_Strict):
     force: str | None = None
     gauges: str | list[str] | None = None
     angle: str | None = None
+    length: str | None = None
+    speed: str | None = None
 
 
 class FitWindow(_Strict):
@@ -188,11 +199,19 @@ class FitWindow(_Strict):
         return self
 
 
+#: Keys a wear run must give.
+WEAR_KEYS = ("section_pitches", "elongation_reference", "sprocket_teeth")
+#: Keys of Paper 004's pin criterion, given all together (or none) on a wear run.
+PIN_KEYS = ("max_link_force_kN", "pin_allowable_stress_MPa", "pin_wear_coefficient")
+#: Chain quantities the pin criterion needs: the pin, the bush and the plates.
+PIN_GEOMETRY = ("pin_diameter", "bush_length", "plate_span")
+
+
 class RunDef(_Strict):
     """One ``[[runs]]`` entry."""
 
     id: SafeId
-    kind: Literal["tensile", "engagement"]
+    kind: Literal["tensile", "engagement", "wear"]
     file: str = Field(min_length=1)
     chain: str
     format: Literal["auto", "csv", "xlsx", "tdms"] = "auto"
@@ -225,6 +244,27 @@ class RunDef(_Strict):
     stiffness_from: Annotated[str | None, Field(pattern=SAFE_REFERENCE),
                               AfterValidator(_no_dot_names)] = None
     clip_level_kN: PositiveFloat | None = None
+    # wear runs
+    #: pitches N of the measured section (1: the log gives one pitch's elongation)
+    section_pitches: int | None = Field(default=None, ge=1)
+    #: what the elongation is counted from: the nominal pitch, or the first reading
+    elongation_reference: Literal["nominal", "first"] | None = None
+    #: teeth z of the driven sprocket: the allowed pitch growth of Paper 004, eq. (3)
+    sprocket_teeth: int | None = Field(default=None, ge=3, lt=500)
+    #: the lab's own limit of the pitch growth [% of the pitch], beside eq. (3)'s
+    wear_limit_pct: PositiveFloat | None = None
+    #: the wear model: chosen by the data ("auto"), or forced
+    wear_model: Literal["auto", "run-in", "linear"] = "auto"
+    #: the running coordinate of a log that has both time and cycles (default: time)
+    wear_abscissa: Literal["time", "cycles"] | None = None
+    #: largest force on a chain link F_max of Paper 004, eqs. (4)-(5)
+    max_link_force_kN: PositiveFloat | None = None
+    #: allowable bending stress of the pin [sigma_T] (Paper 004, eq. (5))
+    pin_allowable_stress_MPa: PositiveFloat | None = None
+    #: pin wear coefficient K_e of Paper 004, eq. (2) (the paper gives no value)
+    pin_wear_coefficient: PositiveFloat | None = None
+    #: support of the pin in the outer plates (Paper 004, eq. (4)): K = 1 or K = 3
+    pin_support: Literal["pinned", "clamped"] = "pinned"
 
     @model_validator(mode="after")
     def _kind_fields(self) -> RunDef:
@@ -234,7 +274,21 @@ class RunDef(_Strict):
                 raise ValueError(f"an engagement run needs {', '.join(missing)}")
             if (self.omega_per_s is None) == (self.rpm is None):
                 raise ValueError("an engagement run needs exactly one of omega_per_s or rpm")
+        if self.kind == "wear":
+            missing = [key for key in WEAR_KEYS if getattr(self, key) is None]
+            if missing:
+                raise ValueError(f"a wear run needs {', '.join(missing)}")
+            given = [key for key in PIN_KEYS if getattr(self, key) is not None]
+            if given and len(given) < len(PIN_KEYS):
+                raise ValueError(
+                    "the pin criterion needs all of " + ", ".join(PIN_KEYS) + "; only "
+                    + ", ".join(given) + " given (leave them all out to skip it)")
         return self
+
+    @property
+    def pin_criterion(self) -> bool:
+        """Whether the run sheet asks for Paper 004's pin criterion (a wear run)."""
+        return self.kind == "wear" and self.max_link_force_kN is not None
 
     @property
     def omega(self) -> float | None:
@@ -534,6 +588,31 @@ def _check_uses(run: RunDef, position: str, sheet: Path, kind: str, key: str | N
     )
 
 
+def _check_wear_chain(run: RunDef, position: str, sheet: Path,
+                      chains: dict[str, ChainDef]) -> None:
+    """Refuse a wear run whose chain lacks the pitch, or the pin its criterion needs."""
+    if run.kind != "wear":
+        return
+    values = chains[run.chain].si()
+    needed = ("t", *PIN_GEOMETRY) if run.pin_criterion else ("t",)
+    missing = [key for key in needed if values[key] is None]
+    if missing:
+        raise RunSheetError(
+            f"wear run {run.id!r}: chain {run.chain!r} gives no "
+            + ", ".join(f"{key}_mm" for key in missing), file=sheet,
+            column=f"{position}.chain",
+            hint=f"give them in [chains.{run.chain}] [mm], or use a roller chain of the "
+                 "catalogue that has them (16B)" + ("" if "t" in missing else
+                                                     "; or leave out the pin criterion"))
+    if run.pin_criterion and values["bush_length"] >= 2 * values["plate_span"]:
+        raise RunSheetError(
+            f"chain {run.chain!r}: the bush length {_mm(values['bush_length'])} is not below "
+            f"twice the plate span l1 ({_mm(2 * values['plate_span'])})", file=sheet,
+            column=f"chains.{run.chain}.bush_length_mm",
+            hint="l1 is the span between the mid-planes of the outer plates (Paper 004, "
+                 "eq. (4)); check bush_length_mm and plate_span_mm")
+
+
 def _check_file(run: RunDef, position: str, sheet: Path) -> None:
     """Refuse a run whose file does not lie in the campaign folder."""
     try:
@@ -613,6 +692,7 @@ def load_run_sheet(path: str | Path) -> RunSheet:
             run = _validate(RunDef, entry, sheet, position)
             _check_uses(run, position, sheet, "chain", run.chain, chains, invalid_chains)
             _check_uses(run, position, sheet, "wheel", run.wheel, wheels, invalid_wheels)
+            _check_wear_chain(run, position, sheet, chains)
             _check_file(run, position, sheet)
             _check_id(run, position, sheet, taken)
         except RunSheetError as error:

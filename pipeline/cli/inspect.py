@@ -43,6 +43,7 @@ class Kind(StrEnum):
 
     tensile = "tensile"
     engagement = "engagement"
+    wear = "wear"
 
 
 def machine_cycles(table: pd.DataFrame, metadata: TableMetadata) -> int | None:

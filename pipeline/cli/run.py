@@ -182,6 +182,39 @@ def _impact_table(summary) -> Table:
     return table
 
 
+#: How a wear run's rate and lives are printed, by its abscissa: names' suffix, units and
+#: scale (SI over the printed unit) of the rate and of a life.
+_WEAR_UNITS = {"time": ("", "um/h", 1e-6 / 3600, "h", 3600.0),
+               "cycles": ("_cycles", "um/Mcycle", 1e-12, "cycles", 1.0)}
+
+
+def _with_interval(row, name: str, scale: float, unit: str, digits: int = 4) -> str:
+    """A summary value and its interval, in `unit` (`scale`: SI per unit)."""
+    low, high = (_fmt(float(row[name + end]), scale, digits) for end in ("_ci_low", "_ci_high"))
+    return f"{_fmt(float(row[name]), scale, digits)} ({low}..{high}) {unit}"
+
+
+def _wear_table(summary) -> Table:
+    table = Table(title="wear runs: steady wear rate and life to the limits (95 % intervals; "
+                  "eq. (3): Paper 004's jump-off growth)")
+    for column in ("run", "chain", "z", "model", "wear rate", "life eq. (3)", "life lab limit",
+                   "pin eq. (1)"):
+        table.add_column(escape(column), justify="right")
+    for run in summary["wear_run"].values:
+        row = summary.sel(wear_run=run)
+        suffix, rate_unit, rate_scale, life_unit, life_scale = _WEAR_UNITS[
+            str(row["wear_abscissa"].values)]
+        lab = math.isfinite(float(row["limit_lab"]))
+        table.add_row(
+            escape(str(run)), escape(str(row["wear_chain"].values)),
+            _fmt(float(row["wear_teeth"])), str(row["wear_model"].values),
+            _with_interval(row, f"wear_rate{suffix}", rate_scale, rate_unit, 3),
+            _with_interval(row, f"life_eq3{suffix}", life_scale, life_unit),
+            _with_interval(row, f"life_lab{suffix}", life_scale, life_unit) if lab else "-",
+            {1: "pass", 0: "FAIL", -1: "-"}[int(row["pin_passes"])])
+    return table
+
+
 _VERDICT_TEXT = {1: "pass", 0: "FAIL", -1: "not measured"}
 
 
@@ -270,6 +303,8 @@ def _print_result(result: CampaignResult, out: Console = console) -> None:
                 f"fitted mass share k = {float(summary['k_fit']):.4g} "
                 f"(95 % interval {float(summary['k_fit_ci_low']):.4g} .. "
                 f"{float(summary['k_fit_ci_high']):.4g}; Ryabov: k = 2)", highlight=False)
+    if summary.sizes.get("wear_run", 0):
+        out.print(_wear_table(summary))
     for note in filter(None, summary.attrs.get("notes", "").split("\n")):
         say("note", "yellow", note, to=out)
     _print_findings(result, failure_tag="failed", out=out)

@@ -1,8 +1,9 @@
 """``chainbench simulate ...``: synthetic campaigns from the virtual test benches.
 
 ``chainbench simulate tensile`` (cyclic runs, or with ``--single-pull`` single
-pulls to fracture and proof-load tests) and ``chainbench simulate engagement``
-write the logs of a campaign (one file per run, in any layout and units the readers
+pulls to fracture and proof-load tests), ``chainbench simulate engagement`` and
+``chainbench simulate wear`` (wear tests of a roller chain) write the logs of a
+campaign (one file per run, in any layout and units the readers
 accept), its run sheet ``campaign.toml`` and ``truth.json``, the true values each
 log was made from (:mod:`pipeline.simulate.campaign`). ``chainbench simulate
 demo`` (re)writes the demo campaigns of ``raw/`` (:mod:`pipeline.simulate.demo`).
@@ -19,26 +20,36 @@ from typing import Annotated
 import numpy as np
 import typer
 
+from pipeline.catalog import chain as catalog_chain
 from pipeline.cli._options import MultiValueCommand
 from pipeline.cli._output import emit
+from pipeline.condition.wear import REFERENCES
 from pipeline.simulate.campaign import (
+    WEAR_ABSCISSAE,
     CampaignSpec,
     EngagementRunSpec,
     PullRunSpec,
     TensileRunSpec,
+    WearRunSpec,
     engagement_settings,
     write_engagement_campaign,
     write_pull_campaign,
     write_tensile_campaign,
+    write_wear_campaign,
 )
 from pipeline.simulate.demo import DEMOS
 from pipeline.simulate.export import (
     FORCE_UNITS,
     LENGTH_UNITS,
     SUFFIXES,
+    TIME_UNITS,
+    WEAR_LAYOUTS,
+    WEAR_SUFFIXES,
 )
 from pipeline.simulate.pull import REMOVAL_MODES, PullTruth
 from pipeline.simulate.tensile import TensileTruth
+from pipeline.simulate.wear import CHANNELS as WEAR_CHANNELS
+from pipeline.simulate.wear import HOUR, WearTruth
 from pipeline.units import from_si, to_si
 
 simulate_app = typer.Typer(
@@ -382,6 +393,144 @@ def engagement(
     )
 
 
+#: Wear-log layouts, running columns, channels and references (the simulator's own lists).
+WearLayout = StrEnum("WearLayout", {name: name for name in WEAR_LAYOUTS})
+WearAbscissa = StrEnum("WearAbscissa", {name: name for name in WEAR_ABSCISSAE})
+WearChannel = StrEnum("WearChannel", {name: name for name in WEAR_CHANNELS})
+Reference = StrEnum("Reference", {name: name for name in REFERENCES})
+
+
+@simulate_app.command("wear", cls=MultiValueCommand)
+def wear(
+    out: Annotated[Path, typer.Option("--out", help="Campaign folder to write (created).")],
+    chain: Annotated[
+        str, typer.Option("--chain", help="Catalogue roller chain, e.g. 16B.")
+    ] = "16B",
+    layout: Annotated[
+        list[WearLayout] | None,
+        typer.Option("--layout", help="File layouts, one run each (default: plain)."),
+    ] = None,
+    runs: Annotated[int, typer.Option("--runs", min=1, help="Runs per layout.")] = 1,
+    teeth: Annotated[
+        int, typer.Option("--teeth", min=3, max=499, help="Teeth z of the driven sprocket.")
+    ] = 40,
+    limit_pct: Annotated[
+        float | None,
+        typer.Option("--limit-pct", help="The lab's limit of the pitch growth in % of the "
+                                         "pitch (e.g. 1.5 or 3)."),
+    ] = None,
+    reference: Annotated[
+        Reference, typer.Option("--reference", help="Elongation counted from the nominal "
+                                                     "pitch or the first reading.")
+    ] = Reference.nominal,
+    pitches: Annotated[
+        int, typer.Option("--pitches", min=1, help="Pitches N of the measured section.")
+    ] = 10,
+    wear_rate_um_per_h: Annotated[
+        float, typer.Option("--wear-rate-um-per-h", help="True steady wear rate per pitch "
+                                                          "in um/h.")
+    ] = 0.75,
+    run_in_um: Annotated[
+        float, typer.Option("--run-in-um", help="True run-in elongation per pitch in um "
+                                                 "(0: no run-in).")
+    ] = 30.0,
+    run_in_h: Annotated[
+        float, typer.Option("--run-in-h", help="True run-in time constant in h.")
+    ] = 10.0,
+    noise_um: Annotated[
+        float, typer.Option("--noise-um", help="Standard deviation of a reading of the "
+                                                "section in um.")
+    ] = 10.0,
+    duration_h: Annotated[float, typer.Option("--duration-h", help="Test length in h.")] = 300.0,
+    interval_h: Annotated[
+        float, typer.Option("--interval-h", help="Time between readings in h.")
+    ] = 5.0,
+    cycle_rate: Annotated[
+        float, typer.Option("--cycle-rate", help="Cycles counted per second.")
+    ] = 0.5,
+    abscissa: Annotated[
+        WearAbscissa, typer.Option("--abscissa", help="Running columns written.")
+    ] = WearAbscissa.time,
+    channel: Annotated[
+        WearChannel, typer.Option("--channel", help="Section length or its elongation.")
+    ] = WearChannel.length,
+    time_unit: Annotated[
+        str, typer.Option("--time-unit", help=f"Time unit: {', '.join(TIME_UNITS)}.")
+    ] = "h",
+    length_unit: Annotated[
+        str, typer.Option("--length-unit", help=f"Length unit: {', '.join(LENGTH_UNITS)}.")
+    ] = "mm",
+    language: Annotated[
+        Language, typer.Option("--language", help="Column names of the European layout.")
+    ] = Language.pl,
+    load_kn: Annotated[
+        float | None, typer.Option("--load-kn", help="Chain tension logged, in kN.")
+    ] = None,
+    speed: Annotated[
+        float | None, typer.Option("--speed", help="Chain speed logged, in m/s.")
+    ] = None,
+    f_max_kn: Annotated[
+        float | None,
+        typer.Option("--f-max-kn", help="Pin criterion: largest force on a link F_max in kN "
+                                        "(with --sigma-t-mpa and --wear-coefficient)."),
+    ] = None,
+    sigma_t_mpa: Annotated[
+        float | None,
+        typer.Option("--sigma-t-mpa", help="Pin criterion: allowable bending stress in MPa."),
+    ] = None,
+    wear_coefficient: Annotated[
+        float | None,
+        typer.Option("--wear-coefficient", help="Pin criterion: pin wear coefficient K_e."),
+    ] = None,
+    campaign: Annotated[
+        str, typer.Option("--campaign", help="Campaign id written to the run sheet.")
+    ] = "simulated-wear",
+    seed: Annotated[int, typer.Option("--seed", help="Seed of all the randomness.")] = 1,
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
+) -> None:
+    """Write the logs of simulated wear tests of a roller chain with known truth (Paper 004)."""
+    spec = _campaign(campaign, f"Virtual wear bench, chain {chain}", "wear", seed)
+    _choice(time_unit, TIME_UNITS, "--time-unit")
+    _choice(length_unit, LENGTH_UNITS, "--length-unit")
+    pin_options = {"max_link_force_kN": f_max_kn, "pin_allowable_stress_MPa": sigma_t_mpa,
+                   "pin_wear_coefficient": wear_coefficient}
+    if None in pin_options.values() and any(v is not None for v in pin_options.values()):
+        raise typer.BadParameter("give all of --f-max-kn, --sigma-t-mpa and "
+                                 "--wear-coefficient, or none", param_hint="--f-max-kn")
+    try:
+        pitch = float(catalog_chain(chain)["t"])
+        base = WearTruth(
+            pitch=pitch, pitches=pitches, initial_error=0.001 * pitch,
+            run_in=run_in_um * 1e-6, run_in_time=run_in_h * HOUR,
+            wear_rate=wear_rate_um_per_h * 1e-6 / HOUR, noise=noise_um * 1e-6,
+            duration=duration_h * HOUR, interval=interval_h * HOUR, cycle_rate=cycle_rate,
+            channel=str(channel), load=None if load_kn is None else to_si(load_kn, "kN"),
+            speed=speed)
+    except KeyError as error:
+        raise typer.BadParameter(str(error).strip("'\""), param_hint="--chain") from None
+    except ValueError as error:
+        raise typer.BadParameter(str(error)) from None
+    rng = np.random.default_rng(seed)
+    specs = []
+    for kind in dict.fromkeys(layout or [WearLayout.plain]):
+        for number in range(1, runs + 1):
+            run_id = f"W{chain}-{kind}-{number}"
+            specs.append(WearRunSpec(
+                id=run_id, chain=chain, truth=base, seed=int(rng.integers(2**31)),
+                file=run_id + WEAR_SUFFIXES[kind], teeth=teeth, reference=str(reference),
+                limit_pct=limit_pct, abscissa=str(abscissa), layout=str(kind),
+                time_unit=time_unit, length_unit=length_unit, language=str(language),
+                pin=None if f_max_kn is None else pin_options))
+    sheet = write_wear_campaign(out, specs, spec)
+    rows = [{"id": run.id, "file": run.file, "wear_rate_um_per_h": wear_rate_um_per_h,
+             **{f"life_{name}_h": run.true_lives()[f"life_{name}_s"] / HOUR
+                for name in ("eq3", "lab") if f"life_{name}_s" in run.true_lives()}}
+            for run in specs]
+    emit(rows, title=f"Simulated wear campaign in {out}", as_json=as_json,
+         extra={"out": str(out), "run_sheet": str(sheet), "truth": str(out / "truth.json")},
+         digits=6)
+
+
 @simulate_app.command("demo")
 def demo(
     out: Annotated[
@@ -389,7 +538,7 @@ def demo(
     ] = Path("raw"),
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
 ) -> None:
-    """(Re)write the demo campaigns: stiffness-demo, engagement-demo and pull-demo."""
+    """(Re)write the demo campaigns: stiffness-demo, engagement-demo, pull-demo and wear-demo."""
     rows = []
     for name, write in DEMOS.items():
         folder = out / name

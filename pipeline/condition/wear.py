@@ -29,6 +29,15 @@ or elongation that is not within :data:`MAX_RELATIVE_ELONGATION` of the
 nominal length (:class:`~pipeline.errors.UnitError`: a length in mm read as m
 is 1000 times too long, and the hint says so).
 
+From a read log
+---------------
+:func:`condition_wear` takes the canonical table of a wear log
+(:mod:`pipeline.ingest`: ``time`` [s] and/or ``cycle_count``; ``length`` [m],
+or one elongation ``gauge_1`` [m] or ``strain_1`` [-]) and picks the running
+coordinate and the channel. It refuses a table that holds both a section
+length and an elongation, or several elongations, unless told which: two
+channels may disagree, and neither is preferred silently.
+
 References
 ----------
 Paper 004, eq. (3) (allowed pitch growth); ``docs/models/paper-004-pin-criterion.md``.
@@ -36,6 +45,7 @@ Paper 004, eq. (3) (allowed pitch growth); ``docs/models/paper-004-pin-criterion
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -58,6 +68,12 @@ REFERENCES = ("nominal", "first")
 
 #: Running coordinates of a log: time [s] or cycles [-].
 ABSCISSAE = ("time", "cycles")
+
+#: The canonical column (:mod:`pipeline.ingest`) of each running coordinate.
+RUNNING_COLUMNS = {"time": "time", "cycles": "cycle_count"}
+
+#: Channels a wear log gives its readings by: the section's length, or its elongation.
+CHANNELS = ("length", "elongation")
 
 #: Length units a lab may have logged in place of m, named in the hint of a
 #: length that is that unit's factor too long.
@@ -274,11 +290,14 @@ def _check_length(length: np.ndarray, nominal: float, column: str) -> None:
         return
     raise UnitError(
         f"a reading makes the section {worst:.4g} times its nominal length N t = {nominal:.6g} m",
-        column=column, hint=_scale_hint(worst))
+        column=column, hint=_scale_hint(worst, column))
 
 
-def _scale_hint(ratio: float) -> str:
+def _scale_hint(ratio: float, column: str) -> str:
     """What a section length of `ratio` times N t suggests: a unit, or the run sheet."""
+    if column == "elongation" and abs(ratio - 2) <= MAX_RELATIVE_ELONGATION:
+        return ("the readings look like the section's length, not its elongation: name the "
+                'column in the run sheet, columns = {length = "..."}')
     if ratio <= 0:
         return "lengths must be positive: check that the column holds the section length [m]"
     for unit in _LIKELY_UNITS:
@@ -286,3 +305,88 @@ def _scale_hint(ratio: float) -> str:
             return f"the readings look like {unit} given as m: state the column's unit"
     return ("check the unit of the column, the pitch t and the number of pitches N of the "
             "measured section")
+
+
+def condition_wear(
+    table: pd.DataFrame,
+    *,
+    pitches: int,
+    pitch: float,
+    reference: str,
+    abscissa: str | None = None,
+    channel: str | None = None,
+) -> tuple[WearLog, list[str]]:
+    """The :class:`WearLog` of a canonical wear table, and the choices made on the way.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        Canonical table (:mod:`pipeline.ingest`): ``time`` [s] and/or
+        ``cycle_count`` [-]; ``length`` [m] of the section, or its elongation
+        ``gauge_<n>`` [m] or ``strain_<n>`` [-] (a ratio of the nominal
+        length N t: e = strain N t).
+    pitches, pitch, reference
+        As in :func:`wear_from_length`.
+    abscissa : {"time", "cycles"}, optional
+        The running coordinate; default the running time, else the cycles.
+    channel : {"length", "elongation"}, optional
+        The channel to read; default the one the table holds.
+
+    Returns
+    -------
+    log : WearLog
+    notes : list of str
+        The choices a reader of the results should know of (the running
+        coordinate taken when the log holds both).
+
+    Raises
+    ------
+    SignalError
+        When the coordinate or channel asked for is absent, the table holds
+        both a length and an elongation or several elongations (and `channel`
+        does not settle it), or as :func:`wear_from_length`.
+    UnitError
+        As :func:`wear_from_length`.
+    """
+    abscissa, notes = _running(table, abscissa)
+    name = _channel(table, channel)
+    values = table[name].to_numpy(dtype=float)
+    if name.startswith("strain_"):
+        values = values * _section_length(pitches, pitch, reference)
+    convert = wear_from_length if name == "length" else wear_from_elongation
+    log = convert(table[RUNNING_COLUMNS[abscissa]].to_numpy(dtype=float), values,
+                  pitches=pitches, pitch=pitch, reference=reference, abscissa=abscissa)
+    return log, notes
+
+
+def _running(table: pd.DataFrame, abscissa: str | None) -> tuple[str, list[str]]:
+    """The running coordinate of `table` (`abscissa`, or the default) and a note on it."""
+    present = [name for name, column in RUNNING_COLUMNS.items() if column in table]
+    if abscissa is not None and abscissa not in present:
+        raise SignalError(f"the log has no {abscissa} column", column=RUNNING_COLUMNS[abscissa],
+                          hint=f"name it in the run sheet (columns = "
+                               f"{{{RUNNING_COLUMNS[abscissa]} = \"...\"}}), or choose the "
+                               "log's running coordinate with wear_abscissa")
+    if abscissa is not None or len(present) < 2:
+        return abscissa or present[0], []
+    return "time", ["the log counts both running time and cycles: the wear is fitted over "
+                    "the running time (wear_abscissa = \"cycles\" in the run sheet fits it "
+                    "over the cycles)"]
+
+
+def _channel(table: pd.DataFrame, channel: str | None) -> str:
+    """The column of `table` holding the readings: ``length``, or its one elongation."""
+    if channel not in (None, *CHANNELS):
+        raise ValueError(f"channel must be one of {', '.join(CHANNELS)}, got {channel!r}")
+    elongations = [name for name in table.columns if re.fullmatch(r"(gauge|strain)_\d+", name)]
+    lengths = ["length"] if "length" in table else []
+    chosen = {"length": lengths, "elongation": elongations, None: lengths + elongations}[channel]
+    if len(chosen) == 1:
+        return chosen[0]
+    hint = ('name the column to use in the run sheet: columns = {length = "..."} for the '
+            'section length, or columns = {gauges = ["..."]} for its elongation')
+    if not chosen:
+        wanted = channel or " or ".join(CHANNELS)
+        raise SignalError(f"the log has no {wanted} column", column=wanted, hint=hint)
+    raise SignalError(f"the log holds {len(chosen)} columns that could be the readings: "
+                      + ", ".join(chosen), column=chosen[0], hint=hint)

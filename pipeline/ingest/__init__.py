@@ -77,9 +77,10 @@ def read_table(
     ----------
     path : str or Path
         The file.
-    kind : {"tensile", "engagement"}
+    kind : {"tensile", "engagement", "wear"}
         The run kind: a tensile log needs force and at least one gauge, an
-        engagement log time and force.
+        engagement log time and force, a wear log time or cycles and a
+        section length or a gauge (the section's elongation).
     columns : mapping, optional
         Run-sheet ``columns``: role -> the file's column name (``"Load"``) or
         TDMS channel (``"Channel"`` or ``"Group/Channel"``); ``gauges`` may be
@@ -102,7 +103,8 @@ def read_table(
     -------
     table : pandas.DataFrame
         Columns ``time`` [s], ``force`` [N], ``gauge_1``... [m], ``angle``
-        [rad], ``cycle_count`` (those present), float64, in file order.
+        [rad], ``cycle_count``, ``length`` [m], ``speed`` [m/s] (those
+        present), float64, in file order.
     metadata : TableMetadata
         What was detected, and the warnings.
 

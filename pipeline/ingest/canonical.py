@@ -45,7 +45,7 @@ from pipeline.ingest.unitparse import (
     is_strain_unit,
     si_factor,
     spellings,
-    unit_role,
+    unit_fits,
 )
 
 #: Values some machines write for a channel that records nothing.
@@ -59,10 +59,12 @@ SENTINELS = {
 _LOWEST_NEGATIVE = max(value for value in SENTINELS if value < 0)
 _LOWEST_POSITIVE = min(value for value in SENTINELS if value > 0)
 
-#: Roles a run of each kind must have.
-REQUIRED = {"tensile": ("force", "gauge"), "engagement": ("time", "force")}
+#: Roles a run of each kind must have: one role of each group (a wear log counts running
+#: time or cycles, and logs a section length or an elongation, a gauge).
+REQUIRED = {"tensile": (("force",), ("gauge",)), "engagement": (("time",), ("force",)),
+            "wear": (("time", "cycle_count"), ("length", "gauge"))}
 
-_SINGLE = ("time", "force", "angle", "cycle_count")
+_SINGLE = ("time", "force", "angle", "cycle_count", "length", "speed")
 
 
 class _Problems:
@@ -127,9 +129,9 @@ def settle(
         The file's header; warnings go to its metadata.
     empty : set of int
         Columns holding no value in the whole file (they take no role).
-    kind : {"tensile", "engagement"}
+    kind : {"tensile", "engagement", "wear"}
         The run kind: tensile runs need force and a gauge, engagement runs
-        time and force.
+        time and force, wear runs time or cycles and a length or a gauge.
     units : mapping, optional
         Run-sheet ``units``: role -> unit (a list for several gauges). It
         overrides the file's unit, with a warning when they differ.
@@ -148,13 +150,16 @@ def settle(
     rejected: dict[str, UnitError] = {}
     factors, found_units, strains = _settle_units(raw, assigned, sheet_units, problems,
                                                   rejected)
-    for role in REQUIRED[kind]:
-        if assigned.get(role):
+    needs = " and ".join(" or ".join(group) for group in REQUIRED[kind])
+    for group in REQUIRED[kind]:
+        if any(assigned.get(role) for role in group):
             continue
-        problems.report(rejected.get(role) or ColumnError(
-            f"no {role} column found (a {kind} run needs " + " and ".join(REQUIRED[kind]) + ")",
+        keys = " or ".join(f"columns = {{{SHEET_KEY[role]} = \"...\"}}" for role in group)
+        problems.report(next((rejected[role] for role in group if role in rejected), None)
+                        or ColumnError(
+            f"no {' or '.join(group)} column found (a {kind} run needs {needs})",
             file=meta.file, row=raw.units_line,
-            hint=f"name it in the run sheet, columns = {{{SHEET_KEY[role]} = \"...\"}}; "
+            hint=f"name it in the run sheet, {keys}; "
             "the file has: " + ", ".join(display_name(raw.names, i)
                                           for i in range(len(raw.names))),
         ))
@@ -361,7 +366,7 @@ def _settle_units(
                                            column=name, source=source)
                 continue
             explicit = role in raw.candidates.explicit or source == "the run sheet"
-            if spellings(text) and unit_role(text) != role and not explicit:
+            if spellings(text) and not unit_fits(text, role) and not explicit:
                 raw.metadata.warnings.append(
                     f"column {name!r}: unit {text!r} is not a unit of {role}: column not used"
                 )

@@ -17,7 +17,7 @@ from pipeline.ingest.unitparse import spellings
 #: Names (whole words or word sequences) that give a column its role, per language.
 COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
     "en": {
-        "time": ("time", "elapsed time", "test time"),
+        "time": ("time", "elapsed time", "test time", "hours", "operating hours"),
         "force": ("force", "load", "tension"),
         "gauge": (
             "extension", "displacement", "gauge", "elongation", "extensometer", "ext",
@@ -26,15 +26,19 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         ),
         "angle": ("angle", "encoder", "rotation"),
         "cycle_count": ("cycle", "cycles", "cycle count", "count"),
+        "length": ("length", "section length", "measured length", "chain length"),
+        "speed": ("speed", "velocity", "chain speed"),
     },
     "de": {
-        "time": ("zeit", "prüfzeit", "testzeit", "versuchszeit"),
+        "time": ("zeit", "prüfzeit", "testzeit", "versuchszeit", "laufzeit", "betriebsstunden"),
         "force": ("kraft", "standardkraft", "prüfkraft", "last"),
         "gauge": ("weg", "standardweg", "traversenweg", "dehnung", "verlängerung", "feindehnung",
                   "wegaufnehmer", "standardwegaufnehmer", "traverse", "kolbenweg",
                   "maschinenweg", "extensometer", "ansetzdehnungsaufnehmer", "maytec"),
         "angle": ("winkel", "drehwinkel"),
         "cycle_count": ("zyklus", "zyklen", "zykluszahl", "lastwechsel"),
+        "length": ("länge", "messlänge", "kettenlänge", "abschnittslänge"),
+        "speed": ("geschwindigkeit", "kettengeschwindigkeit"),
     },
     "pl": {
         "time": ("czas", "godzina"),
@@ -43,6 +47,8 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
                   "ekstensometr", "trawersa", "tłok"),
         "angle": ("kąt", "obrót"),
         "cycle_count": ("cykl", "cykle", "liczba cykli"),
+        "length": ("długość", "długość odcinka"),
+        "speed": ("prędkość",),
     },
     "es": {
         "time": ("tiempo",),
@@ -51,6 +57,8 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
                   "extensómetro", "travesaño", "actuador", "pistón", "carrera"),
         "angle": ("ángulo",),
         "cycle_count": ("ciclo", "ciclos", "recuento"),
+        "length": ("longitud",),
+        "speed": ("velocidad",),
     },
 }
 

@@ -25,11 +25,13 @@ ROLE_KEYS = {
     "cycle": "cycle_count",
     "cycles": "cycle_count",
     "cycle_count": "cycle_count",
+    "length": "length",
+    "speed": "speed",
 }
 
 #: The run-sheet key shown in hints for each role.
 SHEET_KEY = {"time": "time", "force": "force", "gauge": "gauges", "angle": "angle",
-             "cycle_count": "cycle_count"}
+             "cycle_count": "cycle_count", "length": "length", "speed": "speed"}
 
 
 @dataclass(frozen=True)

@@ -18,6 +18,8 @@ A reader turns one raw file into ``(table, metadata)``:
                             (%, mm/mm, µm/m), in file order
     ``angle``       rad     wheel angle or encoder channel (engagement logs)
     ``cycle_count`` 1       the machine's own cycle or segment counter
+    ``length``      m       a measured length (the section of a wear log)
+    ``speed``       m/s     a speed channel (the chain speed of a wear rig)
     ==============  ======  ==================================================
 
     Sentinel values of unused channels become NaN. Rows are in file order.
@@ -33,7 +35,7 @@ from dataclasses import asdict, dataclass, field
 
 #: Roles a column can take; gauges are numbered ``gauge_1``, ``gauge_2``, ... (``strain_1``,
 #: ... for gauges whose unit is a ratio).
-ROLES = ("time", "force", "gauge", "angle", "cycle_count")
+ROLES = ("time", "force", "gauge", "angle", "cycle_count", "length", "speed")
 
 #: A time step longer than this many median steps is reported as a gap.
 GAP_FACTOR = 10.0

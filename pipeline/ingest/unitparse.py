@@ -13,13 +13,19 @@ from pipeline.units import to_si, ureg
 #: The SI unit of each canonical column; ``strain`` is a gauge column whose unit is a
 #: ratio (%, mm/mm, µm/m): the machine has already divided by its gauge length.
 ROLE_SI_UNIT = {"time": "s", "force": "N", "gauge": "m", "strain": "1", "angle": "rad",
-                "cycle_count": "1"}
+                "cycle_count": "1", "length": "m", "speed": "m/s"}
 
+#: The roles a unit alone may give a column (:func:`unit_role`), by dimension: a length
+#: unit makes a gauge, never a ``length`` (that role comes from a name or the run sheet).
 _ROLE_DIMENSION = {
     "time": ureg.second.dimensionality,
     "force": ureg.newton.dimensionality,
     "gauge": ureg.meter.dimensionality,
 }
+
+#: The dimension of every role with one (angles are told by their radians).
+_DIMENSION = {**_ROLE_DIMENSION, "length": ureg.meter.dimensionality,
+              "speed": (ureg.meter / ureg.second).dimensionality}
 
 #: Units a machine's own counter may carry; the counter is kept as counted.
 COUNTER_UNITS = frozenset(
@@ -28,7 +34,8 @@ COUNTER_UNITS = frozenset(
 )
 
 #: What to tell a user whose unit is not understood.
-ACCEPTED_UNITS = "N, kN, daN, kgf (kG), tf, lbf; mm, µm (um), m, in; s, ms, min; deg, rad"
+ACCEPTED_UNITS = ("N, kN, daN, kgf (kG), tf, lbf; mm, µm (um), m, in; s, ms, min, h; deg, rad; "
+                  "m/s")
 
 
 def spellings(text: str) -> list[str]:
@@ -57,6 +64,24 @@ def _role_of(spelling: str) -> str | None:
         if dimensionality == dimension:
             return role
     return "angle" if "radian" in str(ureg.get_root_units(spelling)[1]) else None
+
+
+def _fits(spelling: str, role: str) -> bool:
+    """Whether the unit `spelling` (one pint parses) is of `role`'s dimension."""
+    if role == "angle":
+        return _role_of(spelling) == "angle"
+    return ureg.parse_units(spelling).dimensionality == _DIMENSION.get(role)
+
+
+def unit_fits(text: str | None, role: str) -> bool:
+    """Whether some spelling of `text` is a unit of `role` (``"KN"``, force: ``"kN"`` is).
+
+    Examples
+    --------
+    >>> unit_fits("mm", "length"), unit_fits("m/s", "speed"), unit_fits("kN", "length")
+    (True, True, False)
+    """
+    return any(_fits(spelling, role) for spelling in spellings(text or ""))
 
 
 def unit_role(text: str | None) -> str | None:
@@ -100,7 +125,8 @@ def si_factor(
     text : str
         The unit as found (``"kN"``, ``"(sec)"``).
     role : str
-        ``"time"``, ``"force"``, ``"gauge"``, ``"strain"`` (a ratio) or ``"angle"``.
+        ``"time"``, ``"force"``, ``"gauge"``, ``"strain"`` (a ratio), ``"angle"``,
+        ``"length"`` or ``"speed"``.
     file, row, column : str, int or None, str
         Where the unit was found, for the error message.
     source : str
@@ -124,7 +150,8 @@ def si_factor(
             hint=f"write a unit pint understands ({ACCEPTED_UNITS})",
         )
     for spelling in found:
-        if _role_of(spelling) == role or (role == "strain" and is_strain_unit(spelling)):
+        if (role == "strain" and is_strain_unit(spelling)) or (
+                role != "strain" and _fits(spelling, role)):
             return float(to_si(1.0, spelling))
     raise UnitError(
         f"unit {text!r} in {source} is not a unit of {role} ({ROLE_SI_UNIT[role]})",

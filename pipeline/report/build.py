@@ -9,7 +9,9 @@ file: CSS inline, no script, no network.
 The campaign page ``report.html`` has the campaign-level figures and tables:
 summary (what was tested, every check with its verdict), the run table (one
 row per run, linking its page), stiffness (Paper 001), impact (Paper 000),
-design checks of Papers 002-004 where the campaign's chains fit them,
+wear and life of roller chains measured against Paper 004
+(:mod:`pipeline.report.wear_section`), design checks of Papers 002-004 where
+the campaign's chains fit them,
 published values not reproduced, provenance. Its size grows with the runs by
 table rows only: the per-run figures are on the runs' own pages
 (:mod:`pipeline.report.run_pages`), written one run at a time before it.
@@ -43,7 +45,7 @@ import xarray as xr
 from pipeline import __version__
 from pipeline.acceptance import CHECKS
 from pipeline.errors import ChainbenchError
-from pipeline.report import design_figures, impact_figures, stiffness_figures
+from pipeline.report import design_figures, impact_figures, stiffness_figures, wear_figures
 from pipeline.report.formatting import (
     MISSING,
     environment,
@@ -70,6 +72,8 @@ from pipeline.report.run_pages import (
     specimen_row,
     write_run_pages,
 )
+from pipeline.report.wear_section import tested as wear_tested
+from pipeline.report.wear_section import wear_checks, wear_level, wear_section, wear_settings
 from pipeline.results.notes import lines
 from pipeline.results.tensile import STRENGTH_VARIABLES
 from pipeline.store import layout
@@ -112,6 +116,8 @@ def _tested(summary: xr.Dataset) -> str:
         parts.append(f"engagement logs of a chain on chain wheels at "
                      f"{summary.sizes['operating_point']} operating point(s) for the impact "
                      "tensions N_u1 and N_u2")
+    if _has(summary, "wear_run"):
+        parts.append(wear_tested(summary))
     return "; ".join(parts) or "no run could be processed"
 
 
@@ -219,6 +225,8 @@ def _checks(summary: xr.Dataset, runs: Sequence[RunFile]) -> list[dict[str, str]
         rows.extend(_run_warnings(runs))
     if _has(summary, "operating_point"):
         rows.extend(_impact_checks(summary))
+    if _has(summary, "wear_run"):
+        rows.extend(wear_checks(summary))
     rows.extend(_plausibility_checks(summary))
     rows.extend({"check": f"run {run_id}", "result": "failed", "status": "fail",
                  "detail": error} for run_id, error in failures)
@@ -388,6 +396,18 @@ def _impact_vs_apex(summary: xr.Dataset) -> str:
     return svg(impact_figures.impact_vs_apex(summary))
 
 
+def _wear_overview(summary: xr.Dataset, drawn: list[xr.Dataset]) -> str:
+    return svg(wear_figures.wear_overview(drawn))
+
+
+def _wear_runs(summary: xr.Dataset, runs: Sequence[RunFile]) -> list[xr.Dataset]:
+    """What the wear overview draws of each wear run, in the order of the summary's table."""
+    order = {str(run): index for index, run in enumerate(summary["wear_run"].values)}
+    wear = sorted((run for run in runs if run.kind == "wear"),
+                  key=lambda run: order.get(run.run_id, len(order)))
+    return [run.results()[list(wear_figures.OVERVIEW_VARIABLES)] for run in wear]
+
+
 def _rendered(figure: tuple[Callable, tuple], *, summary: xr.Dataset) -> Any:
     """A figure of the campaign page, rendered: ``figure`` is its function of the summary
     and the function's further arguments."""
@@ -419,6 +439,8 @@ def campaign_figures(summary: xr.Dataset, runs: Sequence[RunFile],
         figures["overview"] = (_overview, (drawn,))
     if _has(summary, "operating_point"):
         figures.update(by_omega=(_impact_vs_omega, ()), by_apex=(_impact_vs_apex, ()))
+    if _has(summary, "wear_run"):
+        figures["wear"] = (_wear_overview, (_wear_runs(summary, runs),))
     rendering = Mapped(_rendered, list(figures.values()), client, summary=summary)
     return CampaignFigures(list(figures), rendering, specimens)
 
@@ -499,6 +521,9 @@ def _provenance(summary: xr.Dataset, runs: Sequence[RunFile]) -> dict[str, Any]:
         settings += [("impact model fit", str(recorded(summary.attrs, "k_fit_method"))),
                      ("impact extraction", _grouped(extraction))]
         levels.append(f"{level(summary['k_fit_ci_low'].attrs)} for k")
+    if _has(summary, "wear_run"):
+        settings += wear_settings(run for run in runs if run.kind == "wear")
+        levels.append(f"{wear_level(summary)} for wear rates and lives (Student's t)")
     settings += [("confidence level", "; ".join(levels) or MISSING),
                  ("plausibility bands", _plausibility(summary))]
     return {
@@ -534,7 +559,7 @@ def report_context(summary: xr.Dataset, runs: Sequence[RunFile],
     -------
     dict
         ``campaign``, ``checks``, ``notes``, ``runs`` (the run table),
-        ``stiffness`` (or None), ``impact`` (or None), ``design``,
+        ``stiffness`` (or None), ``impact`` (or None), ``wear`` (or None), ``design``,
         ``not_reproduced``, ``provenance``.
     """
     notes = [line for line in str(summary.attrs.get("notes", "")).split("\n") if line]
@@ -553,6 +578,7 @@ def report_context(summary: xr.Dataset, runs: Sequence[RunFile],
                       if _has(summary, "chain") else None),
         "impact": (_impact(summary, runs, svgs["by_omega"], svgs["by_apex"])
                    if _has(summary, "operating_point") else None),
+        "wear": wear_section(summary, svgs["wear"]) if _has(summary, "wear_run") else None,
         "design": svgs["design"],
     }
 

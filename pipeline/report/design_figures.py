@@ -10,10 +10,12 @@ always shows Paper 003's own case, chain 34x126 of the catalogue (r, d, c from
 the paper), labelled as a reference and not as a result of the campaign.
 
 Papers 002 (impact of roller chains on sprockets: xi, n_max) and 004 (pin
-criterion of roller chains) concern roller chains. A campaign tests round-link
-chains on pocket wheels or in a tensile machine, so none fits them and
-:func:`design_checks` returns no item for them; ``chainbench theory
-roller-impact`` and ``chainbench theory pin`` compute them for a given chain.
+criterion of roller chains) concern roller chains. Tensile and engagement
+runs test round-link chains, so :func:`design_checks` returns no item for
+them; ``chainbench theory roller-impact`` and ``chainbench theory pin``
+compute them for a given chain. A campaign's wear runs test roller chains:
+Paper 004 is set against their measured wear as a campaign result, in the
+report's wear section (:mod:`pipeline.report.wear_section`), not here.
 
 Published numbers not reproduced
 --------------------------------
@@ -291,8 +293,8 @@ def design_checks(summary: xr.Dataset) -> list[tuple[str, Figure]]:
         Paper 003's curves (Figs. 3-9) for its reference chain
         :data:`REFERENCE_CHAIN`, labelled as a reference (a campaign's chains
         lack r and c), with the published values marked. Nothing for Papers
-        002 and 004: they concern roller chains, which campaigns do not test
-        (see the module docstring).
+        002 and 004: they concern roller chains; wear runs set Paper 004
+        against their measurements in the wear section (module docstring).
     """
     reference = _reference_text(summary)
     side_friction, claims = _side_force_friction_figure()

@@ -5,7 +5,9 @@ campaign-level figures and tables and a run table: one row per run with its
 key values and its status, linking the run's own page. A run's page shows what
 belongs to that run alone: a tensile run's force-strain curve, fit residuals,
 displacement channels and fits; an engagement run's log with the detected
-impacts, its statistics, events and ringing fit; and for every run its
+impacts, its statistics, events and ringing fit; a wear run's elongation against
+running time with the fit, its limits and lives, and its pin criterion
+(:mod:`pipeline.report.wear_section`); and for every run its
 warnings, plausibility flags and raw file. Every page links back to its row of
 the run table and on to the previous and next run, so the campaign page stays
 the same size whatever the number of per-run figures.
@@ -44,6 +46,7 @@ from pipeline.report.formatting import (
 )
 from pipeline.report.recorded import level, recorded
 from pipeline.report.render import report_style, svg
+from pipeline.report.wear_section import run_numbers, wear_run_page
 from pipeline.results.notes import run_notes
 from pipeline.store import layout
 from pipeline.store.lock import remove_stale_temporaries
@@ -211,6 +214,9 @@ def run_rows(summary: xr.Dataset, runs: Sequence[RunFile],
         if run.kind == "tensile":
             what = f"chain {attrs.get('chain', '')}, specimen {attrs.get('specimen', '')}"
             numbers = f"E0 = {kilonewtons(e0.get(run_id, math.nan))} kN"
+        elif run.kind == "wear":
+            what = f"chain {attrs.get('chain', '')}, sprocket z = {attrs.get('sprocket_teeth', '')}"
+            numbers = run_numbers(summary, run_id)
         else:
             what = f"chain {attrs.get('chain', '')}, wheel {attrs.get('wheel', '')}"
             numbers = ", ".join(f"{name} = {number(impacts[name].get(run_id, math.nan))} N"
@@ -371,8 +377,8 @@ def run_page_context(summary: xr.Dataset, run: RunFile, dataset: xr.Dataset,
     -------
     dict
         ``run`` (id, kind, status, flags, warnings, raw file, link back),
-        ``previous`` and ``next`` (or None), ``tensile`` and ``engagement``
-        (the one of its kind; the other None).
+        ``previous`` and ``next`` (or None), ``tensile``, ``engagement`` and
+        ``wear`` (the one of its kind; the others None).
     """
     attrs = run.attrs
     engagement = None
@@ -390,6 +396,7 @@ def run_page_context(summary: xr.Dataset, run: RunFile, dataset: xr.Dataset,
         "next": _neighbour(neighbours[1]),
         "tensile": _tensile(dataset) if run.kind == "tensile" else None,
         "engagement": engagement,
+        "wear": wear_run_page(dataset) if run.kind == "wear" else None,
     }
 
 

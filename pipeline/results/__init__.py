@@ -1,7 +1,7 @@
 """Typed per-run results, and the datasets (run files) they are stored as.
 
-:mod:`pipeline.runs` returns a :class:`TensileResult` or an
-:class:`EngagementResult` per run; :mod:`pipeline.campaign` stores it with
+:mod:`pipeline.runs` returns a :class:`TensileResult`, an
+:class:`EngagementResult` or a :class:`WearResult` per run; :mod:`pipeline.campaign` stores it with
 ``to_dataset()`` (the store, :mod:`pipeline.store.netcdf`, only reads and
 writes datasets) and reads a stored one back with ``from_dataset()``, so that
 the campaign summary is built from the same types whether a run was processed
@@ -14,11 +14,12 @@ import xarray as xr
 
 from pipeline.results.engagement import EngagementResult
 from pipeline.results.tensile import TensileResult
+from pipeline.results.wear import WearResult
 
 #: A run's result, by its kind (the run file's ``kind`` attribute).
-RESULT_TYPES = {"tensile": TensileResult, "engagement": EngagementResult}
+RESULT_TYPES = {"tensile": TensileResult, "engagement": EngagementResult, "wear": WearResult}
 
-RunResult = TensileResult | EngagementResult
+RunResult = TensileResult | EngagementResult | WearResult
 
 
 def result_from_dataset(dataset: xr.Dataset) -> RunResult:
@@ -37,5 +38,5 @@ def result_from_dataset(dataset: xr.Dataset) -> RunResult:
     return RESULT_TYPES[str(dataset.attrs.get("kind"))].from_dataset(dataset)
 
 
-__all__ = ["RESULT_TYPES", "EngagementResult", "RunResult", "TensileResult",
+__all__ = ["RESULT_TYPES", "EngagementResult", "RunResult", "TensileResult", "WearResult",
            "result_from_dataset"]

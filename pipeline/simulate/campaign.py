@@ -9,7 +9,8 @@ other.
 
 :func:`write_tensile_campaign` writes cyclic tensile runs (:class:`TensileRunSpec`),
 :func:`write_pull_campaign` single pulls and proof-load tests (:class:`PullRunSpec`),
-:func:`write_engagement_campaign` engagement runs (:class:`EngagementRunSpec`);
+:func:`write_engagement_campaign` engagement runs (:class:`EngagementRunSpec`),
+:func:`write_wear_campaign` wear tests (:class:`WearRunSpec`);
 ``chainbench simulate`` and :mod:`pipeline.simulate.demo` both go through them.
 Run sheets are written as TOML text by a small writer: strings are quoted with
 :func:`json.dumps`, whose escapes TOML basic strings accept.
@@ -27,6 +28,7 @@ from pathlib import Path
 import numpy as np
 
 from pipeline.catalog import chain as catalog_chain
+from pipeline.fit.wear import pitch_growth_limit
 from pipeline.runsheet import RUN_SHEET_NAME, SAFE_ID
 from pipeline.simulate.engagement import (
     EngagementSettings,
@@ -40,11 +42,15 @@ from pipeline.simulate.export import (
     LAYOUTS,
     LENGTH_UNITS,
     PULL_LANGUAGES,
+    TIME_UNITS,
+    WEAR_LAYOUTS,
     write_pull_table,
     write_table,
+    write_wear_table,
 )
 from pipeline.simulate.pull import PullTruth, simulate_pull
 from pipeline.simulate.tensile import TensileTruth, simulate_tensile
+from pipeline.simulate.wear import WearTruth, simulate_wear
 from pipeline.store.netcdf import write_text_atomic
 from pipeline.units import from_si
 
@@ -197,6 +203,103 @@ class EngagementRunSpec:
     def wheel(self) -> str:
         """Run-sheet key of the wheel: ``w<teeth>_<apex angle in deg>``."""
         return wheel_key(self.settings.z, math.degrees(self.settings.psi))
+
+
+#: Running coordinates a wear log may be written with: time, cycles, or both.
+WEAR_ABSCISSAE = ("time", "cycles", "both")
+
+
+@dataclass(frozen=True)
+class WearRunSpec:
+    """One wear test to simulate and write.
+
+    Parameters
+    ----------
+    id : str
+        Run id in the run sheet.
+    chain : str
+        Catalogue roller chain (e.g. ``"16B"``); `truth` should carry its pitch.
+    truth : WearTruth
+        The test's settings and true wear.
+    seed : int
+        Seed of the log's noise.
+    file : str
+        File name in the campaign folder.
+    teeth : int
+        Teeth z of the driven sprocket (``sprocket_teeth``, Paper 004, eq. (3)).
+    reference : {"nominal", "first"}
+        ``elongation_reference`` of the run sheet.
+    limit_pct : float, optional
+        The lab's limit ``wear_limit_pct`` [% of the pitch].
+    abscissa : {"time", "cycles", "both"}
+        The running columns written; with both, the run sheet says
+        ``wear_abscissa = "time"``.
+    layout, time_unit, length_unit, force_unit, language
+        How the log is written (:func:`pipeline.simulate.export.write_wear_table`).
+    pin : mapping, optional
+        The run-sheet keys of Paper 004's pin criterion (``max_link_force_kN``,
+        ``pin_allowable_stress_MPa``, ``pin_wear_coefficient``, ``pin_support``).
+    """
+
+    id: str
+    chain: str
+    truth: WearTruth
+    seed: int
+    file: str
+    teeth: int
+    reference: str = "nominal"
+    limit_pct: float | None = None
+    abscissa: str = "time"
+    layout: str = "plain"
+    time_unit: str = "h"
+    length_unit: str = "mm"
+    force_unit: str = "kN"
+    language: str = "pl"
+    pin: Mapping[str, float | str] | None = None
+
+    def __post_init__(self) -> None:
+        _check_run(self.id, self.file)
+        for name, value, allowed in (("layout", self.layout, WEAR_LAYOUTS),
+                                     ("abscissa", self.abscissa, WEAR_ABSCISSAE),
+                                     ("time_unit", self.time_unit, TIME_UNITS),
+                                     ("length_unit", self.length_unit, LENGTH_UNITS),
+                                     ("force_unit", self.force_unit, FORCE_UNITS),
+                                     ("language", self.language, tuple(EUROPEAN_ENCODINGS))):
+            if value not in allowed:
+                raise ValueError(f"run {self.id}: {name} must be one of "
+                                 f"{', '.join(map(str, allowed))}, got {value!r}")
+
+    def entry(self) -> dict[str, str | bool | int | float]:
+        """The run's ``[[runs]]`` entry of the run sheet."""
+        entry = {"id": self.id, "kind": "wear", "file": self.file,
+                 "chain": chain_key(self.chain), "section_pitches": self.truth.pitches,
+                 "elongation_reference": self.reference, "sprocket_teeth": self.teeth}
+        if self.limit_pct is not None:
+            entry["wear_limit_pct"] = float(self.limit_pct)
+        if self.abscissa == "both":
+            entry["wear_abscissa"] = "time"
+        return {**entry, **(self.pin or {})}
+
+    def true_lives(self) -> dict[str, float]:
+        """The true limits and lives of the run (``limit_<limit>_m``, ``life_<limit>_s``,
+        ``life_<limit>_cycles``).
+
+        The limits are Paper 004's eq. (3) and the lab's
+        (:func:`pipeline.fit.wear.pitch_growth_limit`), counted as the log counts
+        delta_t: from the nominal pitch, or from the first reading (whose true
+        elongation, at tau = 0, is added back to find the true life).
+        """
+        origin = float(self.truth.elongation(0.0)) if self.reference == "first" else 0.0
+        limits: dict[str, dict[str, float]] = {"eq3": {"teeth": self.teeth}}
+        if self.limit_pct is not None:
+            limits["lab"] = {"limit_percent": self.limit_pct}
+        lives = {}
+        for name, limit in limits.items():
+            value, _ = pitch_growth_limit(self.truth.pitch, self.reference, **limit)
+            time = self.truth.time_to(value + origin)
+            lives |= {f"limit_{name}_m": value, f"life_{name}_s": time,
+                      f"life_{name}_cycles": self.truth.cycle_rate * time}
+        return lives
 
 
 def _check_run(run_id: str, file: str) -> None:
@@ -520,4 +623,46 @@ def write_engagement_campaign(
         truths[run.id] = {"file": run.file, "format": run.format, "chain": run.chain,
                           "seed": run.seed, **truth}
     text = run_sheet_text(campaign, [run.chain for run in runs], entries, wheels)
+    return _write_sheet_and_truth(out, campaign, text, truths)
+
+
+def write_wear_campaign(
+    out: str | Path, runs: Sequence[WearRunSpec], campaign: CampaignSpec
+) -> Path:
+    """Simulate and write a wear campaign: logs, run sheet and ``truth.json``.
+
+    Parameters
+    ----------
+    out : str or Path
+        Campaign folder (created; files of the same names are replaced).
+    runs : sequence of WearRunSpec
+        The runs, in run-sheet order (unique ids and file names).
+    campaign : CampaignSpec
+        The ``[campaign]`` table.
+
+    Returns
+    -------
+    Path
+        The run sheet written. ``truth.json`` holds per run its file, chain,
+        how it is written, seed, ``truth`` (the :class:`WearTruth` fields, SI)
+        and the true limits and lives (:meth:`WearRunSpec.true_lives`).
+
+    Raises
+    ------
+    ValueError
+        For an empty or duplicated run list.
+    """
+    out = _folder(out, runs)
+    truths = {}
+    for run in runs:
+        table = simulate_wear(run.truth, run.seed)
+        dropped = {"time": ["cycles"], "cycles": ["time"], "both": []}[run.abscissa]
+        write_wear_table(table.drop(columns=dropped), out / run.file, layout=run.layout,
+                         time_unit=run.time_unit, length_unit=run.length_unit,
+                         force_unit=run.force_unit, language=run.language)
+        truths[run.id] = {"file": run.file, "chain": run.chain, "layout": run.layout,
+                          "abscissa": run.abscissa, "time_unit": run.time_unit,
+                          "length_unit": run.length_unit, "seed": run.seed,
+                          "truth": asdict(run.truth), **run.true_lives()}
+    text = run_sheet_text(campaign, [run.chain for run in runs], [run.entry() for run in runs])
     return _write_sheet_and_truth(out, campaign, text, truths)

@@ -1,7 +1,8 @@
 """The demo campaigns of ``raw/``: synthetic, deterministic, with known truth.
 
 ``chainbench simulate demo`` writes them with :func:`write_stiffness_demo`,
-:func:`write_engagement_demo` and :func:`write_pull_demo` (:data:`DEMOS`); fixed
+:func:`write_engagement_demo`, :func:`write_pull_demo` and :func:`write_wear_demo`
+(:data:`DEMOS`); fixed
 seeds make every byte reproducible (a test regenerates them and compares with the
 committed files).
 
@@ -29,6 +30,17 @@ committed files).
     proof-load test (load to the proof force, hold, unload). Specimen D breaks
     at 404 kN, below the minimum breaking force of 410 kN: the one failed check.
 
+``wear-demo``
+    Wear tests of roller chain 16B (the virtual wear bench of ``chainbench
+    simulate wear``): a 10-pitch section read every 5 h for 300 h, with run-in
+    then 0.7 to 0.9 um/h of wear per pitch (:data:`WEAR_RUNS`), in four layouts
+    (a plain CSV of section lengths with load and speed, a workbook of
+    elongations counted from the first reading, a Polish CSV over cycles
+    without run-in, a TDMS file with both time and cycles); sprockets of 25,
+    40 and 60 teeth, the lab's limits of 1.5 and 3 %, and Paper 004's pin
+    criterion for the hand-worked load (12 kN, 800 MPa, K_e = 1) with pinned
+    and clamped pins: the pinned pin fails eq. (1), the clamped one passes.
+
 Every run sheet says ``synthetic = true``; ``truth.json`` beside them keeps the
 true values, and the run sheets do not depend on it.
 """
@@ -42,25 +54,30 @@ from typing import NamedTuple
 
 import numpy as np
 
+from pipeline.catalog import chain as catalog_chain
 from pipeline.simulate.campaign import (
     CampaignSpec,
     EngagementRunSpec,
     PullRunSpec,
     TensileRunSpec,
+    WearRunSpec,
     engagement_settings,
     write_engagement_campaign,
     write_pull_campaign,
     write_tensile_campaign,
+    write_wear_campaign,
 )
-from pipeline.simulate.export import SUFFIXES
+from pipeline.simulate.export import SUFFIXES, WEAR_SUFFIXES
 from pipeline.simulate.pull import YIELD_RATIO, PullTruth
 from pipeline.simulate.tensile import TensileTruth
+from pipeline.simulate.wear import HOUR, WearTruth
 from pipeline.units import to_si
 
 #: Seeds of the demos.
 STIFFNESS_SEED = 1969
 ENGAGEMENT_SEED = 2000
 PULL_SEED = 2024
+WEAR_SEED = 2025
 
 #: Acceptance limits of the pull demo's chain 18x64 (run-sheet keys of ``[chains.*]``):
 #: proof force, minimum breaking force, largest elongation at the proof force and
@@ -246,9 +263,64 @@ def write_pull_demo(folder: str | Path) -> Path:
     return write_pull_campaign(folder, runs, campaign, limits=PULL_LIMITS)
 
 
+#: Paper 004's pin criterion for the wear demo: the hand-worked load of
+#: ``docs/models/paper-004-pin-criterion.md`` (run-sheet keys), pinned or clamped.
+WEAR_PIN = {"max_link_force_kN": 12.0, "pin_allowable_stress_MPa": 800.0,
+            "pin_wear_coefficient": 1.0}
+
+#: The wear demo's runs: letter, true wear (changes of :class:`WearTruth`), the run's
+#: settings (:class:`~pipeline.simulate.campaign.WearRunSpec`) and pin support.
+WEAR_RUNS = (
+    ("A", {"wear_rate": 0.75e-6 / HOUR, "load": 10e3, "speed": 1.5},
+     {"teeth": 40, "limit_pct": 3.0, "layout": "plain"}, "pinned"),
+    ("B", {"wear_rate": 0.70e-6 / HOUR, "channel": "elongation"},
+     {"teeth": 40, "limit_pct": 1.5, "layout": "xlsx", "reference": "first"}, "clamped"),
+    ("C", {"wear_rate": 0.80e-6 / HOUR, "run_in": 0.0},
+     {"teeth": 60, "limit_pct": 3.0, "layout": "european", "abscissa": "cycles"}, "clamped"),
+    ("D", {"wear_rate": 0.90e-6 / HOUR},
+     {"teeth": 25, "layout": "tdms", "abscissa": "both", "length_unit": "um"}, "pinned"),
+)
+
+
+def write_wear_demo(folder: str | Path) -> Path:
+    """Write the ``wear-demo`` campaign (wear tests of roller chain 16B) into `folder`.
+
+    Parameters
+    ----------
+    folder : str or Path
+        Campaign folder (created; the demo's files are replaced).
+
+    Returns
+    -------
+    Path
+        The run sheet written.
+    """
+    rng = np.random.default_rng(WEAR_SEED)
+    pitch = float(catalog_chain("16B")["t"])
+    base = WearTruth(pitch=pitch, initial_error=0.001 * pitch)
+    runs = []
+    for letter, truth, settings, support in WEAR_RUNS:
+        run_id = f"W16-{letter}"
+        pin = WEAR_PIN if support == "pinned" else {**WEAR_PIN, "pin_support": support}
+        runs.append(WearRunSpec(
+            id=run_id, chain="16B", truth=base.with_(**truth), seed=int(rng.integers(2**31)),
+            file=run_id + WEAR_SUFFIXES[settings["layout"]], pin=pin, **settings))
+    campaign = CampaignSpec(
+        id="wear-demo",
+        title="Wear and life of a 16B roller chain (Paper 004's pin criterion beside)",
+        lab="Chain drive laboratory (virtual)",
+        machine="Chain wear rig (virtual)",
+        note="Synthetic data made with `chainbench simulate demo`: wear logs of roller "
+             "chain 16B from the virtual wear bench of `chainbench simulate wear`, with "
+             "known wear rate and life. Not measurements.",
+    )
+    return write_wear_campaign(folder, runs, campaign)
+
+
 #: The demo campaigns by folder name, and their writers.
 DEMOS: dict[str, Callable[[str | Path], Path]] = {
     "stiffness-demo": write_stiffness_demo,
     "engagement-demo": write_engagement_demo,
     "pull-demo": write_pull_demo,
+    "wear-demo": write_wear_demo,
 }

@@ -21,8 +21,9 @@ Layouts (``docs/file-formats.md``):
 
 :func:`write_table` writes the cyclic tensile logs (``force``, ``gauge_<n>``),
 :func:`write_pull_table` single pulls (``force``, ``extensometer`` or
-``extensometer_strain``, ``crosshead``; :data:`PULL_NAMES`); both go through
-:func:`write_columns`.
+``extensometer_strain``, ``crosshead``; :data:`PULL_NAMES`), :func:`write_wear_table`
+wear logs (``time``, ``cycles``, ``length`` or ``elongation``, ``load``, ``speed``;
+:data:`WEAR_NAMES`, also as NI TDMS); all go through :func:`write_columns`.
 
 Units are converted with pint (:func:`pipeline.units.from_si`). Numbers are
 written in fixed-point notation with :data:`SIGNIFICANT_DIGITS` significant
@@ -89,6 +90,31 @@ PULL_LANGUAGES = {"plain": ("en",), "european": ("pl", "de"), "machine": ("en", 
 
 #: Column order of single-pull logs: the machine layout puts the crosshead first.
 PULL_ORDER = {"machine": ("time", "crosshead", "force", "extensometer", "extensometer_strain")}
+
+#: Column names of wear logs (:func:`write_wear_table`) per naming scheme: plain (also
+#: the workbook's and the TDMS channels'), European Polish and German, Bluehill English.
+WEAR_NAMES = {
+    "plain": {"time": "running time", "cycles": "cycles", "length": "section length",
+              "elongation": "section elongation", "load": "load", "speed": "chain speed"},
+    "pl": {"time": "Czas pracy", "cycles": "Liczba cykli", "length": "Długość odcinka",
+           "elongation": "Wydłużenie odcinka", "load": "Obciążenie", "speed": "Prędkość"},
+    "de": {"time": "Laufzeit", "cycles": "Lastwechsel", "length": "Messlänge",
+           "elongation": "Verlängerung", "load": "Kraft", "speed": "Kettengeschwindigkeit"},
+    "machine": {"time": "Time", "cycles": "Cycles", "length": "Length",
+                "elongation": "Elongation", "load": "Load", "speed": "Speed"},
+}
+
+#: File layouts of wear logs: those of :data:`LAYOUTS`, and NI TDMS.
+WEAR_LAYOUTS = (*LAYOUTS, "tdms")
+
+#: File name suffix of each wear-log layout.
+WEAR_SUFFIXES = {**SUFFIXES, "tdms": ".tdms"}
+
+#: Time units a wear log may be written in.
+TIME_UNITS = ("s", "min", "h")
+
+#: The TDMS group of a wear log's channels.
+WEAR_TDMS_GROUP = "Wear test"
 
 #: Default encoding of the European layout per language.
 EUROPEAN_ENCODINGS = {"pl": "cp1250", "de": "latin-1"}
@@ -415,3 +441,87 @@ def write_pull_table(
         decimal="," if german_machine else None,
         quote=quote,
     )
+
+
+def write_wear_table(
+    table: pd.DataFrame,
+    path: str | Path,
+    *,
+    layout: str = "plain",
+    time_unit: str = "h",
+    length_unit: str = "mm",
+    force_unit: str = "kN",
+    language: str = "pl",
+    encoding: str | None = None,
+    preamble: Sequence[tuple[str, str]] = (),
+) -> Path:
+    """Write a wear log (SI, :func:`pipeline.simulate.wear.simulate_wear`) as a raw file.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        Any of ``time`` [s], ``cycles`` [-], ``length`` or ``elongation`` [m]
+        of the section, ``load`` [N] and ``speed`` [m/s], written in that order.
+    path : str or Path
+        File to write (replaced atomically if it exists).
+    layout : str
+        One of :data:`WEAR_LAYOUTS`, with the column names of
+        :data:`WEAR_NAMES`: ``running time [h],cycles [1],section length [mm]``
+        (plain, xlsx), Polish or German names (European), ``Time,Cycles,Length``
+        over a units row (machine), or TDMS channels of the plain names in the
+        group :data:`WEAR_TDMS_GROUP`, each with its ``unit_string``.
+    time_unit, length_unit, force_unit : str
+        Units of the running time (:data:`TIME_UNITS`), of the section's length
+        or elongation (:data:`LENGTH_UNITS`) and of the load
+        (:data:`FORCE_UNITS`); cycles are written as counted (unit ``1``),
+        speeds in m/s.
+    language : str
+        Column names of the European layout: ``"pl"`` or ``"de"``.
+    encoding, preamble
+        As for :func:`write_table`.
+
+    Returns
+    -------
+    Path
+        The file written.
+
+    Raises
+    ------
+    ValueError
+        On an unknown layout, language or unit.
+    """
+    if layout not in WEAR_LAYOUTS:
+        raise ValueError(f"layout must be one of {', '.join(WEAR_LAYOUTS)}, got {layout!r}")
+    if time_unit not in TIME_UNITS:
+        raise ValueError(f"time_unit must be one of {', '.join(TIME_UNITS)}, got {time_unit!r}")
+    if layout == "european" and language not in EUROPEAN_ENCODINGS:
+        raise ValueError(f"language must be one of {', '.join(EUROPEAN_ENCODINGS)}")
+    _check_units(force_unit, length_unit)
+    units = {"time": time_unit, "cycles": "1", "length": length_unit,
+             "elongation": length_unit, "load": force_unit, "speed": "m/s"}
+    roles = [role for role in units if role in table.columns]
+    values = [from_si(table[role].to_numpy(dtype=float), units[role]) for role in roles]
+    scheme = {"european": language, "machine": "machine"}.get(layout, "plain")
+    names = [WEAR_NAMES[scheme][role] for role in roles]
+    if layout == "tdms":
+        return _write_tdms(Path(path), names, [units[role] for role in roles], values)
+    return write_columns(Path(path), names, [units[role] for role in roles], values,
+                         layout=layout, preamble=preamble,
+                         encoding=encoding or (EUROPEAN_ENCODINGS[language]
+                                               if layout == "european" else None))
+
+
+def _write_tdms(path: Path, names: Sequence[str], units: Sequence[str],
+                columns: Sequence[np.ndarray]) -> Path:
+    """Named columns as channels of group :data:`WEAR_TDMS_GROUP`, each with its unit."""
+    from nptdms import ChannelObject, GroupObject, RootObject, TdmsWriter
+
+    channels = [ChannelObject(WEAR_TDMS_GROUP, name, np.asarray(values, dtype=float),
+                              properties={"unit_string": unit})
+                for name, unit, values in zip(names, units, columns, strict=True)]
+    temporary = path.with_name(f".{path.name}.tmp")
+    with TdmsWriter(temporary) as writer:
+        writer.write_segment([RootObject({"title": "chainbench virtual wear bench"}),
+                              GroupObject(WEAR_TDMS_GROUP), *channels])
+    os.replace(temporary, path)
+    return path

@@ -19,6 +19,7 @@ SUMMARY = "summary.nc"  #: the campaign summary dataset
 CHAIN_TABLE = "summary.csv"  #: one row per chain
 SPECIMEN_TABLE = "specimens.csv"  #: one row per tensile specimen
 IMPACT_TABLE = "impact_summary.csv"  #: one row per engagement operating point
+WEAR_TABLE = "wear_summary.csv"  #: one row per wear run
 REPORT = "report.html"  #: the campaign report
 #: The folder of the report's per-run pages (``<run id>.html``), beside ``report.html``.
 RUN_PAGES = "report-runs"
@@ -31,7 +32,7 @@ HASHES = ".hashes.json"
 RERUN = ".rerun.json"
 
 #: Every campaign-level output of a processed folder.
-CAMPAIGN_OUTPUTS = (SUMMARY, CHAIN_TABLE, SPECIMEN_TABLE, IMPACT_TABLE, REPORT)
+CAMPAIGN_OUTPUTS = (SUMMARY, CHAIN_TABLE, SPECIMEN_TABLE, IMPACT_TABLE, WEAR_TABLE, REPORT)
 
 #: File names Windows reserves for devices, with or without an extension.
 WINDOWS_DEVICE_NAMES = frozenset(

@@ -6,7 +6,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from pipeline.condition.wear import wear_from_elongation, wear_from_length
+from pipeline.condition.wear import condition_wear, wear_from_elongation, wear_from_length
 from pipeline.errors import ChainbenchError, SignalError, UnitError
 
 #: A 19.05 mm chain, a section of 10 pitches (190.5 mm nominal).
@@ -134,3 +134,61 @@ def test_bad_parameters_raise_value_error(options):
 def test_readings_of_different_lengths_raise_value_error():
     with pytest.raises(ValueError, match="one length"):
         from_length(TIME, LENGTH[:3])
+
+
+def canonical(**columns) -> pd.DataFrame:
+    """A canonical wear table (the readers' names) of the readings above."""
+    return pd.DataFrame({"time": TIME, "cycle_count": 0.5 * TIME, **columns})
+
+
+def test_condition_wear_reads_the_length_over_the_running_time():
+    log, notes = condition_wear(canonical(length=LENGTH), pitches=PITCHES, pitch=PITCH,
+                                reference="nominal")
+    assert log.abscissa == "time"
+    np.testing.assert_allclose(log.elongation, GROWTH, rtol=1e-9, atol=1e-15)
+    assert len(notes) == 1 and "both running time and cycles" in notes[0]
+
+
+def test_condition_wear_over_cycles_when_asked():
+    log, notes = condition_wear(canonical(length=LENGTH), pitches=PITCHES, pitch=PITCH,
+                                reference="nominal", abscissa="cycles")
+    assert log.abscissa == "cycles" and not notes
+    np.testing.assert_allclose(log.tau, 0.5 * TIME)
+
+
+def test_condition_wear_strain_is_a_share_of_the_nominal_section():
+    # an elongation of 0.1 % of N t is N t / 1000, i.e. t / 1000 per pitch
+    strain = np.array([0.0, 0.001, 0.002, 0.003])
+    log, _ = condition_wear(pd.DataFrame({"time": TIME, "strain_1": strain}), pitches=PITCHES,
+                            pitch=PITCH, reference="nominal")
+    np.testing.assert_allclose(log.elongation, strain * PITCH, rtol=1e-12)
+
+
+@pytest.mark.parametrize("columns, options, words", [
+    ({"length": LENGTH, "gauge_1": PITCHES * GROWTH}, {}, "2 columns that could be"),
+    ({"gauge_1": PITCHES * GROWTH, "gauge_2": PITCHES * GROWTH}, {}, "2 columns that could"),
+    ({"length": LENGTH}, {"channel": "elongation"}, "no elongation column"),
+    ({"length": LENGTH}, {"abscissa": "cycles"}, "no cycles column"),
+])
+def test_condition_wear_refuses_what_it_cannot_tell(columns, options, words):
+    with pytest.raises(SignalError, match=words) as raised:
+        condition_wear(pd.DataFrame({"time": TIME, **columns}), pitches=PITCHES, pitch=PITCH,
+                       reference="nominal", **options)
+    assert "run sheet" in raised.value.hint
+
+
+def test_condition_wear_takes_the_channel_named():
+    table = pd.DataFrame({"time": TIME, "length": LENGTH, "gauge_1": 2 * PITCHES * GROWTH})
+    log, _ = condition_wear(table, pitches=PITCHES, pitch=PITCH, reference="nominal",
+                            channel="length")
+    np.testing.assert_allclose(log.elongation, GROWTH, rtol=1e-9, atol=1e-15)
+    log, _ = condition_wear(table, pitches=PITCHES, pitch=PITCH, reference="nominal",
+                            channel="elongation")
+    np.testing.assert_allclose(log.elongation, 2 * GROWTH, rtol=1e-12)
+
+
+def test_a_length_read_as_an_elongation_is_refused_with_the_hint_to_name_it():
+    with pytest.raises(UnitError) as raised:
+        condition_wear(pd.DataFrame({"time": TIME, "gauge_1": LENGTH}), pitches=PITCHES,
+                       pitch=PITCH, reference="nominal")
+    assert "section's length" in raised.value.hint

@@ -26,7 +26,8 @@ from pipeline.units import to_si
 ROOT = Path(__file__).parents[2]
 SCRIPT = "<script>alert(1)</script>"
 CREATED = datetime(2024, 5, 6, 7, 8, 9, tzinfo=UTC)
-SECTIONS = ("summary", "runs", "stiffness", "impact", "design", "not-reproduced", "provenance")
+SECTIONS = ("summary", "runs", "stiffness", "impact", "wear", "design", "not-reproduced",
+            "provenance")
 #: Figures on a run's page, by kind: force-strain and residuals; the log with its impacts.
 RUN_FIGURES = {"tensile": 2, "engagement": 1}
 

@@ -116,3 +116,33 @@ def test_pull_demo_declares_limits_and_one_specimen_fails_one():
     assert failed == [("P18-D", "min_breaking_force_kN")]
     assert sum(run["fracture_index"] is not None for run in truth.values()) == 4
     assert all(path.stat().st_size < 300e3 for path in folder.iterdir())
+
+
+def test_wear_demo_recovers_its_truth_and_the_pin_verdicts(processed_demos):
+    folder = committed("wear-demo")
+    truth = json.loads((folder / "truth.json").read_text(encoding="utf-8"))["runs"]
+    summary = read_dataset(processed_demos / "wear-demo" / "summary.nc")
+    assert summary.sizes["failed_run"] == 0
+    assert sorted(summary["wear_run"].values) == sorted(truth)
+    for run_id, run in truth.items():
+        row = summary.sel(wear_run=run_id)
+        cycles = run["abscissa"] == "cycles"
+        suffix, per = ("_cycles", run["truth"]["cycle_rate"]) if cycles else ("", 1.0)
+        assert float(row[f"wear_rate{suffix}"]) == pytest.approx(
+            run["truth"]["wear_rate"] / per, rel=0.02), run_id
+        assert str(row["wear_model"].values) == ("linear" if run["truth"]["run_in"] == 0
+                                                 else "run-in"), run_id
+        for limit in ("eq3", "lab"):
+            if f"life_{limit}_s" not in run:
+                assert np.isnan(float(row["limit_lab"]))
+                continue
+            true = run[f"life_{limit}_cycles" if cycles else f"life_{limit}_s"]
+            assert float(row[f"life_{limit}{suffix}"]) == pytest.approx(true, rel=0.02)
+    # the hand-worked load of Paper 004 on chain 16B: a pinned pin fails eq. (1), a clamped
+    # one passes (docs/models/paper-004-pin-criterion.md, for z = 40)
+    sheet = {run["id"]: run for run in tomllib.loads(
+        (folder / "campaign.toml").read_text(encoding="utf-8"))["runs"]}
+    for run_id in truth:
+        clamped = sheet[run_id].get("pin_support") == "clamped"
+        assert int(summary["pin_passes"].sel(wear_run=run_id)) == int(clamped), run_id
+    assert all(path.stat().st_size < 20e3 for path in folder.iterdir())
