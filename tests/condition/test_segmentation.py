@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 import pandas as pd
 import pytest
@@ -14,8 +12,8 @@ from hypothesis.extra.numpy import arrays
 from pipeline.condition.segmentation import BRANCHES, SMOOTHING, count_cycles, segment_cycles
 from pipeline.errors import SignalError
 
-REALDATA = Path(__file__).resolve().parents[2].parent / "shared" / "realdata"
-BLUEHILL = REALDATA / "yadbor__bluer__Specimen_RawData_6.csv"
+#: A Bluehill export of a three-cycle compression test (real data, see the realdata fixture).
+BLUEHILL = "yadbor__bluer__Specimen_RawData_6.csv"
 
 
 def cyclic_force(cycles=3, low=10e3, high=100e3, ramp=200, dwell=0, hold=30, noise=0.0,
@@ -120,11 +118,11 @@ def test_random_records_raise_only_signal_errors(force):
 
 
 @pytest.mark.realdata
-@pytest.mark.skipif(not BLUEHILL.exists(), reason="shared/realdata is not available")
-def test_bluehill_export_has_three_compression_cycles():
-    lines = BLUEHILL.read_text(encoding="utf-8").splitlines()
+def test_bluehill_export_has_three_compression_cycles(realdata):
+    export = realdata / BLUEHILL
+    lines = export.read_text(encoding="utf-8").splitlines()
     names = next(i for i, line in enumerate(lines) if line.startswith("Time,Extension,Load"))
-    table = pd.read_csv(BLUEHILL, skiprows=[*range(names), names + 1])
+    table = pd.read_csv(export, skiprows=[*range(names), names + 1])
     force = table["Load"].to_numpy(dtype=float)  # N, compression negative
     assert count_cycles(force) == 3
     segmentation = segment_cycles(force, n_cycles=3)
