@@ -55,7 +55,9 @@ from pipeline.plausibility import check_operating_points, check_specimens, exclu
 from pipeline.report.build import build_report, remove_report
 from pipeline.results import (
     EngagementResult,
+    RollerEngagementResult,
     RunResult,
+    SegmentLoadResult,
     TensileResult,
     WearResult,
     result_from_dataset,
@@ -68,6 +70,8 @@ from pipeline.runs import (
     existing_run_file,
     operating_point,
     process_engagement_run,
+    process_roller_engagement_run,
+    process_segment_load_run,
     process_tensile_run,
     process_wear_run,
 )
@@ -86,6 +90,8 @@ from pipeline.store.netcdf import (
 )
 from pipeline.tasks import Mapped
 from pipeline.units import to_si
+from pipeline.roller_summary import roller_row, roller_summary
+from pipeline.segment_summary import segment_row, segment_summary
 from pipeline.wear_summary import wear_row, wear_summary
 
 if TYPE_CHECKING:
@@ -96,6 +102,8 @@ INPUT_KEY = "input_key"
 #: The ``[campaign]`` fields a run's dataset records (its provenance): the only ones in
 #: a run's input key, so that editing the title or the band redoes no run.
 RUN_CAMPAIGN_FIELDS = {"id", "machine", "synthetic"}
+#: Kinds of run that need the chain stiffness E0 (:func:`chain_stiffness_for`).
+STIFFNESS_KINDS = ("engagement", "roller-engagement")
 #: How a text cell that a spreadsheet would run as a formula begins.
 FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
 
@@ -191,11 +199,13 @@ def _plan(sheet: RunSheet, run: RunDef, output: Path, hashes: HashCache, hash_no
           ) -> _Plan:
     """The plan of `run`; its raw file hashed now when `hash_now` (else only when cached)."""
     raw = existing_run_file(sheet, run)
-    E0 = chain_stiffness_for(sheet, run, output) if run.kind == "engagement" else None
+    E0 = chain_stiffness_for(sheet, run, output) if run.kind in STIFFNESS_KINDS else None
     inputs = {
         "entry": sheet.entries[run.id], "E0": E0,
         "chain": sheet.chains[run.chain].model_dump(mode="json"),
         "wheel": sheet.wheels[run.wheel].model_dump(mode="json") if run.wheel else None,
+        **({"sprocket": sheet.sprockets[run.sprocket].model_dump(mode="json")}
+           if run.sprocket else {}),
         "campaign": sheet.campaign.model_dump(mode="json", include=RUN_CAMPAIGN_FIELDS),
         "code": code_fingerprint(),
     }
@@ -221,6 +231,10 @@ def _run_result(sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float | None,
         return process_tensile_run(sheet, run, raw_sha256, progress)
     if run.kind == "wear":
         return process_wear_run(sheet, run, raw_sha256, progress)
+    if run.kind == "roller-engagement":
+        return process_roller_engagement_run(sheet, run, raw_sha256, E0, progress)
+    if run.kind == "segment-load":
+        return process_segment_load_run(sheet, run, raw_sha256, progress)
     return process_engagement_run(sheet, run, raw_sha256, E0, progress)
 
 
@@ -345,6 +359,8 @@ class _RunSummary:
     row: dict | None = None
     point: dict[str, float] | None = None
     wear: dict | None = None
+    roller: dict | None = None
+    segment: dict | None = None
 
 
 def _run_summary(sheet: RunSheet, run: RunDef, result: RunResult, E0: float | None
@@ -354,6 +370,10 @@ def _run_summary(sheet: RunSheet, run: RunDef, result: RunResult, E0: float | No
         return _RunSummary(specimen=result.specimen, row=_specimen_row(run, result))
     if isinstance(result, WearResult):
         return _RunSummary(wear=wear_row(result))
+    if isinstance(result, RollerEngagementResult):
+        return _RunSummary(roller=roller_row(run, result, E0))
+    if isinstance(result, SegmentLoadResult):
+        return _RunSummary(segment=segment_row(result))
     return _RunSummary(point={**operating_point(sheet, run, E0), **_measured(result)})
 
 
@@ -374,6 +394,8 @@ class _SummaryInputs:
     rows: dict[str, dict] = field(default_factory=dict)
     points: dict[str, dict[str, float]] = field(default_factory=dict)
     wear: dict[str, dict] = field(default_factory=dict)
+    roller: dict[str, dict] = field(default_factory=dict)
+    segment: dict[str, dict] = field(default_factory=dict)
 
     @classmethod
     def of(cls, sheet: RunSheet, runs: dict[str, _RunSummary]) -> _SummaryInputs:
@@ -387,6 +409,10 @@ class _SummaryInputs:
                 inputs.points[run.id] = found.point
             elif found.wear is not None:
                 inputs.wear[run.id] = found.wear
+            elif found.roller is not None:
+                inputs.roller[run.id] = found.roller
+            elif found.segment is not None:
+                inputs.segment[run.id] = found.segment
             else:
                 inputs.specimens[run.id], inputs.rows[run.id] = found.specimen, found.row
         return inputs
@@ -495,6 +521,14 @@ def _summary(sheet: RunSheet, stored: list[str], inputs: _SummaryInputs,
         flags += impact_flags
     if inputs.wear:
         parts.append(wear_summary(inputs.wear, WEAR_CONFIDENCE))
+    if inputs.roller:
+        roller, roller_notes = roller_summary(sheet, inputs.roller)
+        parts.append(roller)
+        notes = [*notes, *roller_notes]
+    if inputs.segment:
+        segment, segment_notes = segment_summary(inputs.segment)
+        parts.append(segment)
+        notes = [*notes, *segment_notes]
     parts.append(flags_dataset(flags))
     summary = xr.merge(parts, combine_attrs="drop_conflicts")
     summary.attrs["notes"] = "\n".join(filter(None, [summary.attrs.get("notes", ""), *notes]))
@@ -512,7 +546,9 @@ def _write_summary(summary: xr.Dataset, output: Path) -> list[str]:
     written = [layout.SUMMARY]
     for dim, name in (("chain", layout.CHAIN_TABLE), ("specimen", layout.SPECIMEN_TABLE),
                       ("operating_point", layout.IMPACT_TABLE),
-                      ("wear_run", layout.WEAR_TABLE)):
+                      ("wear_run", layout.WEAR_TABLE),
+                      ("sprocket_point", layout.ROLLER_TABLE),
+                      ("segment_point", layout.SEGMENT_TABLE)):
         if summary.sizes.get(dim, 0):
             write_text_atomic(csv_table(summary, dim), output / name)
             written.append(name)
@@ -753,7 +789,7 @@ def _checked_results(sheet: RunSheet, output: Path, progress: Progress | None,
     run is checked)."""
     for run in sheet.runs:
         try:
-            E0 = chain_stiffness_for(sheet, run, output) if run.kind == "engagement" else None
+            E0 = chain_stiffness_for(sheet, run, output) if run.kind in STIFFNESS_KINDS else None
             result = _run_result(sheet, run, "", E0, progress)
         except Exception as error:
             failures.append(run_failure(sheet, run, error))
@@ -791,7 +827,8 @@ def sheet_failures(sheet: RunSheet) -> list[RunFailure]:
     """The run-sheet entries that failed validation: runs, and chain and wheel tables
     (listed even when no run uses them)."""
     failures = [run_failure(sheet, None, error) for error in sheet.invalid_runs]
-    for table, invalid in (("chains", sheet.invalid_chains), ("wheels", sheet.invalid_wheels)):
+    for table, invalid in (("chains", sheet.invalid_chains), ("wheels", sheet.invalid_wheels),
+                           ("sprockets", sheet.invalid_sprockets)):
         failures += [RunFailure(f"{table}.{key}", run_failure(sheet, None, error).error)
                      for key, error in invalid.items()]
     return failures

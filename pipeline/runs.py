@@ -18,10 +18,13 @@ import numpy as np
 import pandas as pd
 
 from pipeline.condition.engagement import SpeedMismatchWarning
+from pipeline.condition.segment_load import condition_segment_load
 from pipeline.condition.tensile import TensileRun, condition_tensile
 from pipeline.condition.wear import condition_wear
-from pipeline.engagement_log import LogSource, TableSource, analyse_log
+from pipeline.engagement_log import LogAnalysis, LogSource, TableSource, analyse_log
 from pipeline.errors import FitError, IngestError, RunSheetError, SignalError, UnitError
+from pipeline.fit.roller_engagement import RollerBranch, Sprocket, engagement_teeth
+from pipeline.fit.segment_load import contact_ratios
 from pipeline.fit.stiffness import (
     SpecimenStiffness,
     fit_settings,
@@ -40,16 +43,22 @@ from pipeline.ingest import TableMetadata, open_log, read_table
 from pipeline.ingest.unitparse import COUNTER_UNITS
 from pipeline.results import EngagementResult, TensileResult, WearResult
 from pipeline.results.engagement import MAX_STORED_SAMPLES
+from pipeline.results.roller_engagement import RollerEngagementResult
+from pipeline.results.segment_load import SegmentLoadResult
 from pipeline.results.wear import LimitOutcome
 from pipeline.runsheet import RunDef, RunSheet
 from pipeline.store.netcdf import provenance_attrs, read_dataset
 from pipeline.theory.pin_criterion import SUPPORTS, PinCheck, check_pin
+from pipeline.theory.wheel_impact import RYABOV_MASS_SHARE
 from pipeline.units import to_si
 
 #: Engagement logs longer than this are read from their file and processed in chunks
 #: of this many samples (with overlap; :mod:`pipeline.engagement_log`): the same
 #: events and values, in the memory of a chunk whatever the log's length.
 CHUNK_SAMPLES = 1_000_000
+
+#: Kinds whose logs are read as another kind's: a roller-engagement log is an engagement log.
+READ_AS = {"roller-engagement": "engagement"}
 
 #: Called as ``progress(run_id, stage)`` while a run is processed.
 Progress = Callable[[str, str], None]
@@ -70,7 +79,7 @@ def existing_run_file(sheet: RunSheet, run: RunDef) -> Path:
 
 def _reading(run: RunDef) -> dict:
     """How a run's raw file is read, as its run-sheet entry says."""
-    return {"kind": run.kind, "format": run.format, "sheet": run.sheet,
+    return {"kind": READ_AS.get(run.kind, run.kind), "format": run.format, "sheet": run.sheet,
             "columns": run.columns.model_dump(exclude_none=True) if run.columns else None,
             "units": run.units.model_dump(exclude_none=True) if run.units else None}
 
@@ -249,6 +258,30 @@ def operating_point(sheet: RunSheet, run: RunDef, E0: float) -> dict[str, float]
             "branch_length": run.branch_length_m}
 
 
+def _analysed_log(sheet: RunSheet, run: RunDef, teeth: int, natural: float,
+                  progress: Progress) -> tuple[LogAnalysis, list[str], str]:
+    """An engagement log's seatings and impact tensions, the reader's and the stages'
+    warnings, and the file's layout: the one engagement pipeline, read with `teeth` [-]
+    and the branch's natural frequency `natural` [rad/s]."""
+    progress(run.id, "ingest")
+    source, read_warnings, file_layout = open_run_log(sheet, run)
+    clip = to_si(run.clip_level_kN, "kN") if run.clip_level_kN is not None else None
+    progress(run.id, "detect and extract impacts")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", SpeedMismatchWarning)  # kept in events.messages
+        analysis = analyse_log(
+            source, z=teeth, omega=run.omega,
+            chunk_samples=CHUNK_SAMPLES if source.n_rows > CHUNK_SAMPLES else None,
+            natural_frequency=natural, clip_level=clip, preview_samples=MAX_STORED_SAMPLES,
+            file=sheet.run_file(run))
+    return analysis, list(dict.fromkeys([*read_warnings, *analysis.warnings])), file_layout
+
+
+def _preview(analysis: LogAnalysis) -> tuple[np.ndarray, np.ndarray, int]:
+    """The stored signal of an analysed log: time [s], force [N] and stride [-]."""
+    return analysis.preview_time, analysis.preview_force, analysis.preview_stride
+
+
 def process_engagement_run(
     sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float, progress: Progress = _quiet
 ) -> EngagementResult:
@@ -260,27 +293,76 @@ def process_engagement_run(
         Chain stiffness [N] (:func:`chain_stiffness_for`): it sets the expected
         natural frequency of the branch, sqrt(E0 / (m L^2)).
     """
-    progress(run.id, "ingest")
-    raw = sheet.run_file(run)
-    source, read_warnings, file_layout = open_run_log(sheet, run)
     point = operating_point(sheet, run, E0)
     natural = math.sqrt(E0 / (point["mass_per_length"] * run.branch_length_m ** 2))
-    clip = to_si(run.clip_level_kN, "kN") if run.clip_level_kN is not None else None
-    progress(run.id, "detect and extract impacts")
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", SpeedMismatchWarning)  # kept in events.messages
-        analysis = analyse_log(
-            source, z=point["teeth"], omega=run.omega,
-            chunk_samples=CHUNK_SAMPLES if source.n_rows > CHUNK_SAMPLES else None,
-            natural_frequency=natural, clip_level=clip, preview_samples=MAX_STORED_SAMPLES,
-            file=raw)
-    events, result = analysis.events, analysis.impacts
+    analysis, warned, file_layout = _analysed_log(sheet, run, point["teeth"], natural, progress)
     attrs = _attrs(sheet, run, f"Engagement log {run.id} of campaign {sheet.campaign.id}",
                    raw_sha256)
     attrs.update(wheel=run.wheel, layout=file_layout)
-    signal = analysis.preview_time, analysis.preview_force, analysis.preview_stride
-    warned = list(dict.fromkeys([*read_warnings, *analysis.warnings]))
-    return EngagementResult.of(events, result, signal, attrs, warned)
+    return EngagementResult.of(analysis.events, analysis.impacts, _preview(analysis), attrs,
+                               warned)
+
+
+def roller_engagement_inputs(sheet: RunSheet, run: RunDef, E0: float
+                             ) -> tuple[Sprocket, RollerBranch, float]:
+    """The sprocket, the branch and G_lim [J/m^2] of a roller-engagement run (SI).
+
+    The branch is the run's roller chain (pitch, mass per metre, roller diameter
+    D and inner width B) on ``branch_length_m``, with stiffness `E0` [N] and
+    Paper 000's share of link masses k = 2.
+    """
+    definition, chain = sheet.sprockets[run.sprocket], sheet.chains[run.chain].si()
+    involute = definition.module_mm is not None
+    sprocket = Sprocket(
+        definition.teeth, module=to_si(definition.module_mm, "mm") if involute else None,
+        profile_angle=math.radians(definition.profile_angle_deg) if involute else None,
+        base_radius=(to_si(definition.base_radius_mm, "mm")
+                     if definition.base_radius_mm is not None else None))
+    branch = RollerBranch(pitch=chain["t"], mass_per_length=chain["mass_per_length"], E0=E0,
+                          branch_length=run.branch_length_m, k=RYABOV_MASS_SHARE,
+                          roller_diameter=chain["roller_diameter"],
+                          roller_length=chain["inner_width"])
+    return sprocket, branch, to_si(definition.g_lim_J_per_mm2, "J/mm^2")
+
+
+def process_roller_engagement_run(
+    sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float, progress: Progress = _quiet
+) -> RollerEngagementResult:
+    """Ingest a roller chain's engagement log on a sprocket: its strikes and their amplitude.
+
+    The log goes through the one engagement pipeline
+    (:func:`pipeline.engagement_log.analyse_log`) read as a wheel of half the
+    sprocket's teeth (:func:`pipeline.fit.roller_engagement.engagement_teeth`):
+    two successive roller strikes make one seating. xi is fitted across the
+    runs of a sprocket in the summary (:mod:`pipeline.roller_summary`).
+
+    Parameters
+    ----------
+    E0 : float
+        Chain stiffness [N] (:func:`chain_stiffness_for`): it sets the expected
+        natural frequency of the branch, sqrt(E0 / (q L^2)).
+
+    Raises
+    ------
+    RunSheetError
+        When the sprocket's involute cannot engage the chain (Paper 002, eq. (3)).
+    """
+    sprocket, branch, _ = roller_engagement_inputs(sheet, run, E0)
+    xi_model, reason = sprocket.involute_xi(branch.pitch)
+    if math.isnan(xi_model) and (sprocket.module is not None or sprocket.base_radius is not None):
+        raise RunSheetError(f"sprocket {run.sprocket!r} cannot hold chain {run.chain!r}: {reason}",
+                            file=sheet.path, column=f"sprockets.{run.sprocket}",
+                            hint="check module_mm and profile_angle_deg (or base_radius_mm) "
+                                 "against the chain's pitch t_mm")
+    natural = math.sqrt(E0 / (branch.mass_per_length * branch.branch_length ** 2))
+    analysis, warned, file_layout = _analysed_log(
+        sheet, run, engagement_teeth(sprocket.teeth), natural, progress)
+    attrs = _attrs(sheet, run, f"Roller-chain engagement log {run.id} of campaign "
+                               f"{sheet.campaign.id}", raw_sha256)
+    attrs.update(sprocket=run.sprocket, sprocket_teeth=sprocket.teeth,
+                 engagement_teeth=engagement_teeth(sprocket.teeth), layout=file_layout)
+    return RollerEngagementResult.of(analysis.events, analysis.impacts, _preview(analysis),
+                                     attrs, warned)
 
 
 def process_wear_run(sheet: RunSheet, run: RunDef, raw_sha256: str,
@@ -380,3 +462,37 @@ def _load_notes(run: RunDef, table: pd.DataFrame) -> list[str]:
     return [f"the log's largest load, {peak / 1e3:.4g} kN, is above max_link_force_kN = "
             f"{run.max_link_force_kN:g} kN: the pin criterion is evaluated at a smaller force "
             "than the chain carried; set max_link_force_kN to the largest force on a link"]
+
+
+def segment_geometry(sheet: RunSheet, run: RunDef) -> dict[str, float]:
+    """The chain's ``r_outer``, ``d`` and the drum's ``groove_width`` [m], ``s`` [m],
+    ``beta``, ``eps_n`` [rad] of a segment-load run (Paper 003, eqs. (1)-(4))."""
+    chain = sheet.chains[run.chain].si()
+    return {"r_outer": chain["r_outer"], "d": chain["d"], **sheet.drums[run.drum].si()}
+
+
+def process_segment_load_run(sheet: RunSheet, run: RunDef, raw_sha256: str,
+                             progress: Progress = _quiet) -> SegmentLoadResult:
+    """Ingest and condition one segment-load log: one operating point of the drum's tooth.
+
+    The seatings are found on the segment-force sum and their plateau ratios
+    F_K / F and F_P / F taken (:func:`pipeline.condition.segment_load.condition_segment_load`);
+    the model's ratios at the run sheet's geometry (Paper 003, eqs. (1)-(4)) are
+    kept beside them. The contact geometry is fitted across the drum's runs at
+    the summary stage (:mod:`pipeline.segment_summary`).
+    """
+    progress(run.id, "ingest")
+    table, metadata = read_run(sheet, run)
+    progress(run.id, "condition")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the imbalance warning is kept in the result
+        events = condition_segment_load(
+            table["time"], table["force"], table["segment_force_1"], table["segment_force_2"],
+            table.get("side_force"), imbalance_tolerance=run.imbalance_tolerance_pct / 100)
+    geometry = segment_geometry(sheet, run)
+    declared = contact_ratios(geometry, beta=geometry["beta"], s=geometry["s"],
+                              eps_n=geometry["eps_n"])
+    attrs = _attrs(sheet, run, f"Segment-load run {run.id} of campaign {sheet.campaign.id}",
+                   raw_sha256)
+    attrs.update(drum=run.drum, fitted=sheet.drums[run.drum].fitted, layout=metadata.layout)
+    return SegmentLoadResult.of(events, declared, geometry, attrs, metadata.warnings)

@@ -23,6 +23,7 @@ run file must resolve inside the campaign folder.
 from __future__ import annotations
 
 import hashlib
+import math
 import tomllib
 from collections.abc import Callable, Collection
 from pathlib import Path
@@ -41,6 +42,7 @@ from pydantic import (
 from pipeline.catalog import chain as catalog_chain
 from pipeline.errors import RunSheetError
 from pipeline.store.layout import RUN_SHEET_NAME, reserved_id_reason, unportable_name_reason
+from pipeline.theory.tooth_segments import contact_radius
 from pipeline.units import to_si
 
 #: Ids become file and folder names: letters, digits, '.', '_', '-' (and not only dots).
@@ -122,6 +124,11 @@ class ChainDef(_Strict):
     pin_diameter_mm: PositiveFloat | None = None  #: nominal pin diameter d
     bush_length_mm: PositiveFloat | None = None  #: bush length l
     plate_span_mm: PositiveFloat | None = None  #: span l1 between the outer-plate mid-planes
+    # roller chains: the roller of Paper 002's specific impact energy (roller-engagement runs)
+    roller_diameter_mm: PositiveFloat | None = None  #: roller diameter D
+    inner_width_mm: PositiveFloat | None = None  #: inner width B between the inner plates
+    # round-link chains: the horizontal link on a segmented drum tooth (segment-load runs)
+    torus_radius_mm: PositiveFloat | None = None  #: outer torus radius r of the link
 
     @model_validator(mode="after")
     def _known_catalog(self) -> ChainDef:
@@ -137,9 +144,11 @@ class ChainDef(_Strict):
         spec = catalog_chain(self.catalog) if self.catalog else None
         from_catalog = (lambda key: spec.get(key)) if spec else (lambda key: None)
         values = {
+            "r_outer": self.torus_radius_mm,
             "d": self.d_mm, "t": self.t_mm, "R0": self.R0_mm, "a": self.a_mm,
             "pin_diameter": self.pin_diameter_mm, "bush_length": self.bush_length_mm,
-            "plate_span": self.plate_span_mm,
+            "plate_span": self.plate_span_mm, "roller_diameter": self.roller_diameter_mm,
+            "inner_width": self.inner_width_mm,
         }
         result: dict[str, float | None] = {
             key: to_si(value, "mm") if value is not None else from_catalog(key)
@@ -162,6 +171,56 @@ class WheelDef(_Strict):
     apex_angle_deg: float = Field(gt=0, lt=180)
 
 
+class SprocketDef(_Strict):
+    """A ``[sprockets.<key>]`` table: the sprocket of roller-engagement runs (Paper 002).
+
+    The involute geometry (``module_mm`` with ``profile_angle_deg``, or
+    ``base_radius_mm``) gives the model's xi; without it xi is only measured.
+    """
+
+    teeth: int = Field(ge=6, lt=500)
+    module_mm: PositiveFloat | None = None  #: module m of the cutting tool
+    profile_angle_deg: float | None = Field(default=None, gt=0, lt=90)  #: its profile angle
+    base_radius_mm: PositiveFloat | None = None  #: base-circle radius r_b, instead
+    #: the lab's limit of the specific impact energy G_lim (Paper 002, eq. (8))
+    g_lim_J_per_mm2: PositiveFloat = 3e-4
+
+    @model_validator(mode="after")
+    def _geometry(self) -> SprocketDef:
+        if self.teeth % 2:
+            raise ValueError(
+                f"teeth = {self.teeth}: chainbench reads a roller log by pairing two successive "
+                "strikes into one seating, which needs an even number of teeth; a sprocket of "
+                "odd z cannot be processed yet")
+        if (self.module_mm is None) != (self.profile_angle_deg is None):
+            raise ValueError("give module_mm and profile_angle_deg together")
+        if self.module_mm is not None and self.base_radius_mm is not None:
+            raise ValueError("give module_mm and profile_angle_deg, or base_radius_mm, not both")
+        return self
+
+
+class DrumDef(_Strict):
+    """A ``[drums.<key>]`` table: the segmented chain drum of segment-load runs (Paper 003).
+
+    Which of s and beta the campaign's load ratios are fitted for is stated, never
+    guessed; the other is held at its value here.
+    """
+
+    groove_width_mm: PositiveFloat  #: width c of the groove between a tooth's segments
+    contact_distance_mm: PositiveFloat  #: distance s between the contact points K
+    flank_inclination_deg: float = Field(gt=0, lt=180)  #: flank inclination beta at K
+    link_inclination_deg: float = Field(default=0.0, gt=-90, lt=90)  #: eps_n
+    #: the parameter fitted to the measured ratios: the contact distance s, or beta
+    fitted: Literal["s", "beta"]
+
+    def si(self) -> dict[str, float]:
+        """``groove_width``, ``s`` [m], ``beta`` and ``eps_n`` [rad]."""
+        return {"groove_width": to_si(self.groove_width_mm, "mm"),
+                "s": to_si(self.contact_distance_mm, "mm"),
+                "beta": to_si(self.flank_inclination_deg, "deg"),
+                "eps_n": to_si(self.link_inclination_deg, "deg")}
+
+
 class ColumnMap(_Strict):
     """Roles -> the file's column names (or TDMS ``Channel`` / ``Group/Channel``)."""
 
@@ -172,6 +231,9 @@ class ColumnMap(_Strict):
     cycle_count: str | None = None
     length: str | None = None
     speed: str | None = None
+    segment_force_1: str | None = None
+    segment_force_2: str | None = None
+    side_force: str | None = None
 
 
 class UnitMap(_Strict):
@@ -184,6 +246,9 @@ class UnitMap(_Strict):
     angle: str | None = None
     length: str | None = None
     speed: str | None = None
+    segment_force_1: str | None = None
+    segment_force_2: str | None = None
+    side_force: str | None = None
 
 
 class FitWindow(_Strict):
@@ -205,13 +270,16 @@ WEAR_KEYS = ("section_pitches", "elongation_reference", "sprocket_teeth")
 PIN_KEYS = ("max_link_force_kN", "pin_allowable_stress_MPa", "pin_wear_coefficient")
 #: Chain quantities the pin criterion needs: the pin, the bush and the plates.
 PIN_GEOMETRY = ("pin_diameter", "bush_length", "plate_span")
+#: Chain quantities a roller-engagement run needs: pitch, mass per metre and the roller.
+ROLLER_GEOMETRY = ("t", "mass_per_length", "roller_diameter", "inner_width")
 
 
 class RunDef(_Strict):
     """One ``[[runs]]`` entry."""
 
     id: SafeId
-    kind: Literal["tensile", "engagement", "wear"]
+    kind: Literal["tensile", "engagement", "wear", "roller-engagement",
+                   "segment-load"]
     file: str = Field(min_length=1)
     chain: str
     format: Literal["auto", "csv", "xlsx", "tdms"] = "auto"
@@ -244,6 +312,12 @@ class RunDef(_Strict):
     stiffness_from: Annotated[str | None, Field(pattern=SAFE_REFERENCE),
                               AfterValidator(_no_dot_names)] = None
     clip_level_kN: PositiveFloat | None = None
+    #: roller-engagement runs: the sprocket (``[sprockets.<key>]``) the roller chain runs on
+    sprocket: str | None = None
+    #: segment-load runs: the drum (``[drums.<key>]``) whose tooth segments are gauged
+    drum: str | None = None
+    #: relative disagreement of the two segments beyond which a seating is flagged [%]
+    imbalance_tolerance_pct: PositiveFloat = 5.0
     # wear runs
     #: pitches N of the measured section (1: the log gives one pitch's elongation)
     section_pitches: int | None = Field(default=None, ge=1)
@@ -274,6 +348,14 @@ class RunDef(_Strict):
                 raise ValueError(f"an engagement run needs {', '.join(missing)}")
             if (self.omega_per_s is None) == (self.rpm is None):
                 raise ValueError("an engagement run needs exactly one of omega_per_s or rpm")
+        if self.kind == "roller-engagement":
+            missing = [key for key in ("sprocket", "branch_length_m") if getattr(self, key) is None]
+            if missing:
+                raise ValueError(f"a roller-engagement run needs {', '.join(missing)}")
+            if (self.omega_per_s is None) == (self.rpm is None):
+                raise ValueError("a roller-engagement run needs exactly one of omega_per_s or rpm")
+        if self.kind == "segment-load" and self.drum is None:
+            raise ValueError("a segment-load run needs drum")
         if self.kind == "wear":
             missing = [key for key in WEAR_KEYS if getattr(self, key) is None]
             if missing:
@@ -315,6 +397,12 @@ class RunSheet(BaseModel):
     #: the error of each invalid wheel definition, by key, whether a run uses it or not
     invalid_wheels: dict[str, RunSheetError]
     entries: dict[str, dict[str, Any]]  #: the raw TOML table of each valid run, by id
+    sprockets: dict[str, SprocketDef] = {}  #: the valid sprocket definitions, by key
+    #: the error of each invalid sprocket definition, by key, whether a run uses it or not
+    invalid_sprockets: dict[str, RunSheetError] = {}
+    drums: dict[str, DrumDef] = {}  #: the valid drum definitions, by key
+    #: the error of each invalid drum definition, by key, whether a run uses it or not
+    invalid_drums: dict[str, RunSheetError] = {}
 
     @property
     def folder(self) -> Path:
@@ -525,6 +613,16 @@ def _wheel(key: str, data: Any, sheet: Path) -> WheelDef:
     return _validate(WheelDef, data, sheet, f"wheels.{key}")
 
 
+def _sprocket(key: str, data: Any, sheet: Path) -> SprocketDef:
+    """The sprocket ``[sprockets.<key>]``."""
+    return _validate(SprocketDef, data, sheet, f"sprockets.{key}")
+
+
+def _drum(key: str, data: Any, sheet: Path) -> DrumDef:
+    """The drum ``[drums.<key>]``."""
+    return _validate(DrumDef, data, sheet, f"drums.{key}")
+
+
 def _definitions(data: dict, name: str, sheet: Path,
                  validate: Callable[[str, Any, Path], ModelT]
                  ) -> tuple[dict[str, ModelT], dict[str, RunSheetError]]:
@@ -613,6 +711,57 @@ def _check_wear_chain(run: RunDef, position: str, sheet: Path,
                  "eq. (4)); check bush_length_mm and plate_span_mm")
 
 
+def _check_roller_chain(run: RunDef, position: str, sheet: Path,
+                        chains: dict[str, ChainDef]) -> None:
+    """Refuse a roller-engagement run whose chain lacks the pitch, mass or roller."""
+    if run.kind != "roller-engagement":
+        return
+    values = chains[run.chain].si()
+    missing = [key for key in ROLLER_GEOMETRY if values[key] is None]
+    if missing:
+        raise RunSheetError(
+            f"roller-engagement run {run.id!r}: chain {run.chain!r} gives no "
+            + ", ".join("mass_kg_per_m" if key == "mass_per_length" else f"{key}_mm"
+                        for key in missing), file=sheet, column=f"{position}.chain",
+            hint=f"give them in [chains.{run.chain}], or use a roller chain of the catalogue "
+                 "(08B, 10B, 16B...)")
+
+
+def _check_segment_drum(run: RunDef, position: str, sheet: Path,
+                        chains: dict[str, ChainDef], drums: dict[str, DrumDef]) -> None:
+    """Refuse a segment-load run whose chain and drum cannot hold (Paper 003, eqs. (1)-(2)).
+
+    The chain needs d and the torus radius r; the drum's s must lie in c <= s < 2 k
+    and beta in 0 < beta <= pi/2 + eps_n (the branch on which k grows with beta).
+    """
+    if run.kind != "segment-load":
+        return
+    values, drum = chains[run.chain].si(), drums[run.drum].si()
+    missing = [key for key in ("d", "r_outer") if values[key] is None]
+    if missing:
+        raise RunSheetError(
+            f"segment-load run {run.id!r}: chain {run.chain!r} gives no "
+            + ", ".join({"d": "d_mm", "r_outer": "torus_radius_mm"}[key] for key in missing),
+            file=sheet, column=f"{position}.chain",
+            hint=f"give them in [chains.{run.chain}] [mm], or use a chain of the catalogue "
+                 "that has them (34x126)")
+    if drum["beta"] > math.pi / 2 + drum["eps_n"]:
+        raise RunSheetError(
+            f"drum {run.drum!r}: flank_inclination_deg is above 90 deg + link_inclination_deg",
+            file=sheet, column=f"drums.{run.drum}.flank_inclination_deg",
+            hint="beta is the flank's inclination at the contact (Paper 003, eq. (1)), "
+                 "0 < beta <= 90 deg + eps_n")
+    k = float(contact_radius(values["r_outer"], values["d"], drum["beta"], drum["eps_n"]))
+    if not drum["groove_width"] <= drum["s"] < 2 * k:
+        raise RunSheetError(
+            f"drum {run.drum!r} with chain {run.chain!r}: s = {_mm(drum['s'])} lies outside "
+            f"c <= s < 2 k = [{_mm(drum['groove_width'])}, {_mm(2 * k)}): the link cannot "
+            "touch both segments (Paper 003, eq. (2))", file=sheet,
+            column=f"drums.{run.drum}.contact_distance_mm",
+            hint="check contact_distance_mm, groove_width_mm and flank_inclination_deg, and "
+                 "the chain's d_mm and torus_radius_mm")
+
+
 def _check_file(run: RunDef, position: str, sheet: Path) -> None:
     """Refuse a run whose file does not lie in the campaign folder."""
     try:
@@ -639,11 +788,11 @@ def _read(sheet: Path) -> tuple[bytes, dict[str, Any]]:
         raise RunSheetError(
             f"not a valid TOML file: {error}", file=sheet, hint="check the line named above"
         ) from None
-    unknown = set(data) - {"campaign", "chains", "wheels", "runs"}
+    unknown = set(data) - {"campaign", "chains", "wheels", "sprockets", "drums", "runs"}
     if unknown:
         raise RunSheetError(
             f"unknown top-level key(s) {sorted(unknown)}", file=sheet,
-            hint="expected [campaign], [chains.*], [wheels.*] and [[runs]]",
+            hint="expected [campaign], [chains.*], [wheels.*], [sprockets.*], [drums.*] and [[runs]]",
         )
     return raw_bytes, data
 
@@ -675,6 +824,8 @@ def load_run_sheet(path: str | Path) -> RunSheet:
     campaign = _validate(CampaignInfo, data.get("campaign", {}), sheet, "campaign")
     chains, invalid_chains = _definitions(data, "chains", sheet, _chain)
     wheels, invalid_wheels = _definitions(data, "wheels", sheet, _wheel)
+    sprockets, invalid_sprockets = _definitions(data, "sprockets", sheet, _sprocket)
+    drums, invalid_drums = _definitions(data, "drums", sheet, _drum)
 
     raw_runs = data.get("runs", [])
     if not isinstance(raw_runs, list) or not raw_runs:
@@ -693,6 +844,11 @@ def load_run_sheet(path: str | Path) -> RunSheet:
             _check_uses(run, position, sheet, "chain", run.chain, chains, invalid_chains)
             _check_uses(run, position, sheet, "wheel", run.wheel, wheels, invalid_wheels)
             _check_wear_chain(run, position, sheet, chains)
+            _check_uses(run, position, sheet, "sprocket", run.sprocket, sprockets,
+                        invalid_sprockets)
+            _check_roller_chain(run, position, sheet, chains)
+            _check_uses(run, position, sheet, "drum", run.drum, drums, invalid_drums)
+            _check_segment_drum(run, position, sheet, chains, drums)
             _check_file(run, position, sheet)
             _check_id(run, position, sheet, taken)
         except RunSheetError as error:
@@ -706,4 +862,6 @@ def load_run_sheet(path: str | Path) -> RunSheet:
         path=sheet, sha256=hashlib.sha256(raw_bytes).hexdigest(), campaign=campaign,
         chains=chains, wheels=wheels, runs=runs, invalid_runs=invalid,
         invalid_chains=invalid_chains, invalid_wheels=invalid_wheels, entries=entries,
+        sprockets=sprockets, invalid_sprockets=invalid_sprockets,
+        drums=drums, invalid_drums=invalid_drums,
     )

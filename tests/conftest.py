@@ -8,7 +8,8 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).parents[1]
-DEMOS = ("stiffness-demo", "engagement-demo", "pull-demo", "wear-demo")
+DEMOS = ("stiffness-demo", "engagement-demo", "pull-demo", "wear-demo", "roller-demo",
+         "segment-load-demo")
 
 #: Third-party exports (never copied into the repository); tests skip without them.
 REALDATA = ROOT / ".." / "shared" / "realdata"

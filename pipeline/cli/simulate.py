@@ -23,6 +23,7 @@ import typer
 from pipeline.catalog import chain as catalog_chain
 from pipeline.cli._options import MultiValueCommand
 from pipeline.cli._output import emit
+from pipeline.fit.roller_engagement import Sprocket
 from pipeline.condition.wear import REFERENCES
 from pipeline.simulate.campaign import (
     WEAR_ABSCISSAE,
@@ -47,6 +48,8 @@ from pipeline.simulate.export import (
     WEAR_SUFFIXES,
 )
 from pipeline.simulate.pull import REMOVAL_MODES, PullTruth
+from pipeline.simulate.roller_campaign import RollerRunSpec, SprocketSpec, write_roller_campaign
+from pipeline.simulate.roller_engagement import CHAIN_16B, RollerEngagementTruth
 from pipeline.simulate.tensile import TensileTruth
 from pipeline.simulate.wear import CHANNELS as WEAR_CHANNELS
 from pipeline.simulate.wear import HOUR, WearTruth
@@ -527,6 +530,73 @@ def wear(
                 for name in ("eq3", "lab") if f"life_{name}_s" in run.true_lives()}}
             for run in specs]
     emit(rows, title=f"Simulated wear campaign in {out}", as_json=as_json,
+         extra={"out": str(out), "run_sheet": str(sheet), "truth": str(out / "truth.json")},
+         digits=6)
+
+
+class RollerFormat(StrEnum):
+    """File formats of roller-engagement logs (the engagement writers)."""
+
+    csv = "csv"
+    tdms = "tdms"
+
+
+@simulate_app.command("roller-engagement", cls=MultiValueCommand)
+def roller_engagement(
+    out: Annotated[Path, typer.Option("--out", help="Campaign folder to write (created).")],
+    teeth: Annotated[
+        int, typer.Option("--teeth", min=6, max=498, help="Teeth z of the sprocket (even).")
+    ] = 18,
+    module_mm: Annotated[
+        float | None, typer.Option("--module-mm", help="Module of the involute's cutting tool "
+                                                        "in mm (0: none, xi only measured).")
+    ] = 8.0,
+    profile_angle_deg: Annotated[
+        float, typer.Option("--profile-angle-deg", help="Profile angle of the tool in deg.")
+    ] = 20.0,
+    xi: Annotated[
+        float | None, typer.Option("--xi", help="True xi (default: the involute's).")
+    ] = None,
+    rpm: Annotated[
+        list[float] | None, typer.Option("--rpm", help="Sprocket speeds in rpm, one run each "
+                                                       "(default: 100 200 300).")
+    ] = None,
+    file_format: Annotated[
+        RollerFormat, typer.Option("--format", help="File format of the logs.")
+    ] = RollerFormat.csv,
+    g_lim: Annotated[
+        float, typer.Option("--g-lim", help="The lab's G_lim in J/mm^2 (Paper 002, eq. (8)).")
+    ] = 3e-4,
+    campaign: Annotated[
+        str, typer.Option("--campaign", help="Campaign id written to the run sheet.")
+    ] = "simulated-roller",
+    seed: Annotated[int, typer.Option("--seed", help="Seed of all the randomness.")] = 1,
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
+) -> None:
+    """Write engagement logs of roller chain 16B on a sprocket with known xi (Paper 002)."""
+    spec = _campaign(campaign, f"Virtual roller bench, z = {teeth}", "roller-engagement", seed)
+    try:
+        involute = bool(module_mm)
+        sprocket = SprocketSpec(f"z{teeth}", teeth, module_mm=module_mm if involute else None,
+                                profile_angle_deg=profile_angle_deg if involute else None,
+                                g_lim_J_per_mm2=g_lim)
+        if xi is None and not involute:
+            raise ValueError("give --xi when the sprocket has no involute (--module-mm)")
+        true_xi = xi if xi is not None else Sprocket(
+            teeth, module=to_si(module_mm, "mm"),
+            profile_angle=math.radians(profile_angle_deg)).involute_xi(CHAIN_16B.pitch)[0]
+        truth = RollerEngagementTruth(teeth=teeth, xi=true_xi)
+        rng = np.random.default_rng(seed)
+        specs = [RollerRunSpec(id=f"R{teeth}-{n:g}", chain="16B", sprocket=sprocket, truth=truth,
+                               omega=float(to_si(n, "rpm")), seed=int(rng.integers(2**31)),
+                               file=f"R{teeth}-{n:g}.{file_format}", format=str(file_format))
+                 for n in dict.fromkeys(rpm or [100.0, 200.0, 300.0])]
+        sheet = write_roller_campaign(out, specs, spec)
+    except ValueError as error:
+        raise typer.BadParameter(str(error)) from None
+    rows = [{"id": run.id, "file": run.file, "rpm": float(from_si(run.omega, "rpm")),
+             "xi": true_xi, "amplitude_N": truth.amplitude(run.omega)} for run in specs]
+    emit(rows, title=f"Simulated roller-engagement campaign in {out}", as_json=as_json,
          extra={"out": str(out), "run_sheet": str(sheet), "truth": str(out / "truth.json")},
          digits=6)
 

@@ -77,10 +77,11 @@ def read_table(
     ----------
     path : str or Path
         The file.
-    kind : {"tensile", "engagement", "wear"}
+    kind : {"tensile", "engagement", "wear", "segment-load"}
         The run kind: a tensile log needs force and at least one gauge, an
         engagement log time and force, a wear log time or cycles and a
-        section length or a gauge (the section's elongation).
+        section length or a gauge (the section's elongation), a segment-load
+        log time, the chain force and the forces on both tooth segments.
     columns : mapping, optional
         Run-sheet ``columns``: role -> the file's column name (``"Load"``) or
         TDMS channel (``"Channel"`` or ``"Group/Channel"``); ``gauges`` may be

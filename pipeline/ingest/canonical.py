@@ -62,9 +62,11 @@ _LOWEST_POSITIVE = min(value for value in SENTINELS if value > 0)
 #: Roles a run of each kind must have: one role of each group (a wear log counts running
 #: time or cycles, and logs a section length or an elongation, a gauge).
 REQUIRED = {"tensile": (("force",), ("gauge",)), "engagement": (("time",), ("force",)),
-            "wear": (("time", "cycle_count"), ("length", "gauge"))}
+            "wear": (("time", "cycle_count"), ("length", "gauge")),
+            "segment-load": (("time",), ("force",), ("segment_force_1",), ("segment_force_2",))}
 
-_SINGLE = ("time", "force", "angle", "cycle_count", "length", "speed")
+_SINGLE = ("time", "force", "angle", "cycle_count", "length", "speed", "segment_force_1",
+           "segment_force_2", "side_force")
 
 
 class _Problems:
@@ -129,9 +131,10 @@ def settle(
         The file's header; warnings go to its metadata.
     empty : set of int
         Columns holding no value in the whole file (they take no role).
-    kind : {"tensile", "engagement", "wear"}
+    kind : {"tensile", "engagement", "wear", "segment-load"}
         The run kind: tensile runs need force and a gauge, engagement runs
-        time and force, wear runs time or cycles and a length or a gauge.
+        time and force, wear runs time or cycles and a length or a gauge,
+        segment-load runs time, force and both segment forces.
     units : mapping, optional
         Run-sheet ``units``: role -> unit (a list for several gauges). It
         overrides the file's unit, with a warning when they differ.

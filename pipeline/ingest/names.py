@@ -28,6 +28,9 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "cycle_count": ("cycle", "cycles", "cycle count", "count"),
         "length": ("length", "section length", "measured length", "chain length"),
         "speed": ("speed", "velocity", "chain speed"),
+        "segment_force_1": ("segment force 1", "segment 1", "f k1", "fk 1"),
+        "segment_force_2": ("segment force 2", "segment 2", "f k2", "fk 2"),
+        "side_force": ("side force", "f p", "fp"),
     },
     "de": {
         "time": ("zeit", "prüfzeit", "testzeit", "versuchszeit", "laufzeit", "betriebsstunden"),
@@ -39,6 +42,9 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "cycle_count": ("zyklus", "zyklen", "zykluszahl", "lastwechsel"),
         "length": ("länge", "messlänge", "kettenlänge", "abschnittslänge"),
         "speed": ("geschwindigkeit", "kettengeschwindigkeit"),
+        "segment_force_1": ("segmentkraft 1",),
+        "segment_force_2": ("segmentkraft 2",),
+        "side_force": ("seitenkraft", "querkraft"),
     },
     "pl": {
         "time": ("czas", "godzina"),
@@ -49,6 +55,9 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "cycle_count": ("cykl", "cykle", "liczba cykli"),
         "length": ("długość", "długość odcinka"),
         "speed": ("prędkość",),
+        "segment_force_1": ("siła segmentu 1", "segment 1"),
+        "segment_force_2": ("siła segmentu 2", "segment 2"),
+        "side_force": ("siła boczna",),
     },
     "es": {
         "time": ("tiempo",),

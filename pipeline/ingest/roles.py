@@ -27,11 +27,16 @@ ROLE_KEYS = {
     "cycle_count": "cycle_count",
     "length": "length",
     "speed": "speed",
+    "segment_force_1": "segment_force_1",
+    "segment_force_2": "segment_force_2",
+    "side_force": "side_force",
 }
 
 #: The run-sheet key shown in hints for each role.
 SHEET_KEY = {"time": "time", "force": "force", "gauge": "gauges", "angle": "angle",
-             "cycle_count": "cycle_count", "length": "length", "speed": "speed"}
+             "cycle_count": "cycle_count", "length": "length", "speed": "speed",
+             "segment_force_1": "segment_force_1", "segment_force_2": "segment_force_2",
+             "side_force": "side_force"}
 
 
 @dataclass(frozen=True)

@@ -20,6 +20,9 @@ A reader turns one raw file into ``(table, metadata)``:
     ``cycle_count`` 1       the machine's own cycle or segment counter
     ``length``      m       a measured length (the section of a wear log)
     ``speed``       m/s     a speed channel (the chain speed of a wear rig)
+    ``segment_force_1``, ``segment_force_2``
+                    N       forces F_K1, F_K2 on the two segments of a drum tooth
+    ``side_force``  N       side component F_P of the segment force
     ==============  ======  ==================================================
 
     Sentinel values of unused channels become NaN. Rows are in file order.
@@ -35,7 +38,8 @@ from dataclasses import asdict, dataclass, field
 
 #: Roles a column can take; gauges are numbered ``gauge_1``, ``gauge_2``, ... (``strain_1``,
 #: ... for gauges whose unit is a ratio).
-ROLES = ("time", "force", "gauge", "angle", "cycle_count", "length", "speed")
+ROLES = ("time", "force", "gauge", "angle", "cycle_count", "length", "speed",
+         "segment_force_1", "segment_force_2", "side_force")
 
 #: A time step longer than this many median steps is reported as a gap.
 GAP_FACTOR = 10.0

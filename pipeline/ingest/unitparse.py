@@ -13,7 +13,8 @@ from pipeline.units import to_si, ureg
 #: The SI unit of each canonical column; ``strain`` is a gauge column whose unit is a
 #: ratio (%, mm/mm, µm/m): the machine has already divided by its gauge length.
 ROLE_SI_UNIT = {"time": "s", "force": "N", "gauge": "m", "strain": "1", "angle": "rad",
-                "cycle_count": "1", "length": "m", "speed": "m/s"}
+                "cycle_count": "1", "length": "m", "speed": "m/s", "segment_force_1": "N",
+                "segment_force_2": "N", "side_force": "N"}
 
 #: The roles a unit alone may give a column (:func:`unit_role`), by dimension: a length
 #: unit makes a gauge, never a ``length`` (that role comes from a name or the run sheet).
@@ -25,7 +26,9 @@ _ROLE_DIMENSION = {
 
 #: The dimension of every role with one (angles are told by their radians).
 _DIMENSION = {**_ROLE_DIMENSION, "length": ureg.meter.dimensionality,
-              "speed": (ureg.meter / ureg.second).dimensionality}
+              "speed": (ureg.meter / ureg.second).dimensionality,
+              **dict.fromkeys(("segment_force_1", "segment_force_2", "side_force"),
+                              ureg.newton.dimensionality)}
 
 #: Units a machine's own counter may carry; the counter is kept as counted.
 COUNTER_UNITS = frozenset(

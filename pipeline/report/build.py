@@ -72,6 +72,12 @@ from pipeline.report.run_pages import (
     specimen_row,
     write_run_pages,
 )
+from pipeline.report.roller_figures import amplitude_vs_speed
+from pipeline.report.roller_section import roller_checks, roller_section
+from pipeline.report.roller_section import tested as roller_tested
+from pipeline.report.segment_figures import contact_ratios_vs_s
+from pipeline.report.segment_section import segment_checks, segment_section
+from pipeline.report.segment_section import tested as segment_tested
 from pipeline.report.wear_section import tested as wear_tested
 from pipeline.report.wear_section import wear_checks, wear_level, wear_section, wear_settings
 from pipeline.results.notes import lines
@@ -118,6 +124,10 @@ def _tested(summary: xr.Dataset) -> str:
                      "tensions N_u1 and N_u2")
     if _has(summary, "wear_run"):
         parts.append(wear_tested(summary))
+    if _has(summary, "sprocket_point"):
+        parts.append(roller_tested(summary))
+    if _has(summary, "segment_point"):
+        parts.append(segment_tested(summary))
     return "; ".join(parts) or "no run could be processed"
 
 
@@ -227,6 +237,10 @@ def _checks(summary: xr.Dataset, runs: Sequence[RunFile]) -> list[dict[str, str]
         rows.extend(_impact_checks(summary))
     if _has(summary, "wear_run"):
         rows.extend(wear_checks(summary))
+    if _has(summary, "sprocket_point"):
+        rows.extend(roller_checks(summary))
+    if _has(summary, "segment_point"):
+        rows.extend(segment_checks(summary))
     rows.extend(_plausibility_checks(summary))
     rows.extend({"check": f"run {run_id}", "result": "failed", "status": "fail",
                  "detail": error} for run_id, error in failures)
@@ -408,6 +422,14 @@ def _wear_runs(summary: xr.Dataset, runs: Sequence[RunFile]) -> list[xr.Dataset]
     return [run.results()[list(wear_figures.OVERVIEW_VARIABLES)] for run in wear]
 
 
+def _segment_ratios(summary: xr.Dataset) -> str:
+    return svg(contact_ratios_vs_s(summary))
+
+
+def _roller_amplitudes(summary: xr.Dataset) -> str:
+    return svg(amplitude_vs_speed(summary))
+
+
 def _rendered(figure: tuple[Callable, tuple], *, summary: xr.Dataset) -> Any:
     """A figure of the campaign page, rendered: ``figure`` is its function of the summary
     and the function's further arguments."""
@@ -441,6 +463,10 @@ def campaign_figures(summary: xr.Dataset, runs: Sequence[RunFile],
         figures.update(by_omega=(_impact_vs_omega, ()), by_apex=(_impact_vs_apex, ()))
     if _has(summary, "wear_run"):
         figures["wear"] = (_wear_overview, (_wear_runs(summary, runs),))
+    if _has(summary, "sprocket_point"):
+        figures["roller"] = (_roller_amplitudes, ())
+    if _has(summary, "segment_point"):
+        figures["segment"] = (_segment_ratios, ())
     rendering = Mapped(_rendered, list(figures.values()), client, summary=summary)
     return CampaignFigures(list(figures), rendering, specimens)
 
@@ -579,6 +605,10 @@ def report_context(summary: xr.Dataset, runs: Sequence[RunFile],
         "impact": (_impact(summary, runs, svgs["by_omega"], svgs["by_apex"])
                    if _has(summary, "operating_point") else None),
         "wear": wear_section(summary, svgs["wear"]) if _has(summary, "wear_run") else None,
+        "roller": (roller_section(summary, svgs["roller"])
+                   if _has(summary, "sprocket_point") else None),
+        "segment": (segment_section(summary, svgs["segment"])
+                    if _has(summary, "segment_point") else None),
         "design": svgs["design"],
     }
 

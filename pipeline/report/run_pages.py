@@ -46,6 +46,7 @@ from pipeline.report.formatting import (
 )
 from pipeline.report.recorded import level, recorded
 from pipeline.report.render import report_style, svg
+from pipeline.report.roller_section import roller_numbers
 from pipeline.report.wear_section import run_numbers, wear_run_page
 from pipeline.results.notes import run_notes
 from pipeline.store import layout
@@ -214,6 +215,9 @@ def run_rows(summary: xr.Dataset, runs: Sequence[RunFile],
         if run.kind == "tensile":
             what = f"chain {attrs.get('chain', '')}, specimen {attrs.get('specimen', '')}"
             numbers = f"E0 = {kilonewtons(e0.get(run_id, math.nan))} kN"
+        elif run.kind == "roller-engagement":
+            what = f"chain {attrs.get('chain', '')}, sprocket {attrs.get('sprocket', '')}"
+            numbers = roller_numbers(summary, run_id)
         elif run.kind == "wear":
             what = f"chain {attrs.get('chain', '')}, sprocket z = {attrs.get('sprocket_teeth', '')}"
             numbers = run_numbers(summary, run_id)
@@ -382,6 +386,8 @@ def run_page_context(summary: xr.Dataset, run: RunFile, dataset: xr.Dataset,
     """
     attrs = run.attrs
     engagement = None
+    if run.kind == "roller-engagement":
+        engagement = _engagement(dataset, None, "")
     if run.kind == "engagement":
         k_theory = f"{float(recorded(summary.attrs, 'k_theory')):g}"
         engagement = _engagement(dataset, _point(summary, run.run_id), k_theory)

@@ -13,13 +13,18 @@ from __future__ import annotations
 import xarray as xr
 
 from pipeline.results.engagement import EngagementResult
+from pipeline.results.roller_engagement import RollerEngagementResult
+from pipeline.results.segment_load import SegmentLoadResult
 from pipeline.results.tensile import TensileResult
 from pipeline.results.wear import WearResult
 
 #: A run's result, by its kind (the run file's ``kind`` attribute).
-RESULT_TYPES = {"tensile": TensileResult, "engagement": EngagementResult, "wear": WearResult}
+RESULT_TYPES = {"tensile": TensileResult, "engagement": EngagementResult, "wear": WearResult,
+                "roller-engagement": RollerEngagementResult,
+                "segment-load": SegmentLoadResult}
 
-RunResult = TensileResult | EngagementResult | WearResult
+RunResult = (TensileResult | EngagementResult | WearResult | RollerEngagementResult
+             | SegmentLoadResult)
 
 
 def result_from_dataset(dataset: xr.Dataset) -> RunResult:
@@ -38,5 +43,5 @@ def result_from_dataset(dataset: xr.Dataset) -> RunResult:
     return RESULT_TYPES[str(dataset.attrs.get("kind"))].from_dataset(dataset)
 
 
-__all__ = ["RESULT_TYPES", "EngagementResult", "RunResult", "TensileResult", "WearResult",
-           "result_from_dataset"]
+__all__ = ["RESULT_TYPES", "EngagementResult", "RollerEngagementResult", "RunResult",
+           "SegmentLoadResult", "TensileResult", "WearResult", "result_from_dataset"]

@@ -41,6 +41,20 @@ committed files).
     criterion for the hand-worked load (12 kN, 800 MPa, K_e = 1) with pinned
     and clamped pins: the pinned pin fails eq. (1), the clamped one passes.
 
+``segment-load-demo``
+    Segment-load tests of chain 34x126 on a segmented drum tooth (Paper 003;
+    :func:`pipeline.simulate.segment_campaign.write_segment_load_demo`): five
+    operating points of 50 to 150 kN in five layouts, true s = 60 mm, the run
+    sheet declaring 55 mm and fitting s.
+
+``roller-demo``
+    Roller chain 16B on a 1 m branch (E0 = 1e7 N) on two sprockets
+    (:data:`~pipeline.simulate.roller_campaign.ROLLER_DEMO`): an involute
+    sprocket of z = 18 (m = 8 mm, alpha = 20 deg; true xi the involute's,
+    0.535) at 100, 200 and 300 rpm as CSV, and a sprocket of z = 12 without
+    involute geometry (true xi 0.6) at 150, 250 and 350 rpm as TDMS, whose
+    lab's G_lim = 3e-5 J/mm^2 puts n_max at 305 rpm: the 350 rpm run is flagged.
+
 Every run sheet says ``synthetic = true``; ``truth.json`` beside them keeps the
 true values, and the run sheets do not depend on it.
 """
@@ -69,6 +83,8 @@ from pipeline.simulate.campaign import (
 )
 from pipeline.simulate.export import SUFFIXES, WEAR_SUFFIXES
 from pipeline.simulate.pull import YIELD_RATIO, PullTruth
+from pipeline.simulate.segment_campaign import write_segment_load_demo
+from pipeline.simulate.roller_campaign import write_roller_demo
 from pipeline.simulate.tensile import TensileTruth
 from pipeline.simulate.wear import HOUR, WearTruth
 from pipeline.units import to_si
@@ -323,4 +339,6 @@ DEMOS: dict[str, Callable[[str | Path], Path]] = {
     "engagement-demo": write_engagement_demo,
     "pull-demo": write_pull_demo,
     "wear-demo": write_wear_demo,
+    "segment-load-demo": write_segment_load_demo,
+    "roller-demo": write_roller_demo,
 }

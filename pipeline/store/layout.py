@@ -20,6 +20,8 @@ CHAIN_TABLE = "summary.csv"  #: one row per chain
 SPECIMEN_TABLE = "specimens.csv"  #: one row per tensile specimen
 IMPACT_TABLE = "impact_summary.csv"  #: one row per engagement operating point
 WEAR_TABLE = "wear_summary.csv"  #: one row per wear run
+ROLLER_TABLE = "roller_summary.csv"  #: one row per roller-engagement run (sprocket point)
+SEGMENT_TABLE = "segment_summary.csv"  #: one row per segment-load run (segment point)
 REPORT = "report.html"  #: the campaign report
 #: The folder of the report's per-run pages (``<run id>.html``), beside ``report.html``.
 RUN_PAGES = "report-runs"
@@ -32,7 +34,8 @@ HASHES = ".hashes.json"
 RERUN = ".rerun.json"
 
 #: Every campaign-level output of a processed folder.
-CAMPAIGN_OUTPUTS = (SUMMARY, CHAIN_TABLE, SPECIMEN_TABLE, IMPACT_TABLE, WEAR_TABLE, REPORT)
+CAMPAIGN_OUTPUTS = (SUMMARY, CHAIN_TABLE, SPECIMEN_TABLE, IMPACT_TABLE, WEAR_TABLE, ROLLER_TABLE,
+                    SEGMENT_TABLE, REPORT)
 
 #: File names Windows reserves for devices, with or without an extension.
 WINDOWS_DEVICE_NAMES = frozenset(
