@@ -499,6 +499,8 @@ def _event_table(prior1: np.ndarray, prior2: np.ndarray, status: np.ndarray,
     `fits` are those of the events `usable`.
     """
     coef, variance, rms = fits.coef, fits.variance, fits.rms
+    # a negative variance (round-off in a degenerate fit) is no error estimate either
+    variance = np.where(variance >= 0, variance, np.nan)
     finite = np.all(np.isfinite(coef), axis=1) & np.all(np.isfinite(variance), axis=1)
     failed = fits.moved | ~finite | ~(coef[:, 6] > 0) | ~(coef[:, 7] > 0)
     if np.any(~failed):
