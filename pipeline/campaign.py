@@ -64,6 +64,7 @@ from pipeline.results import (
 )
 from pipeline.results.notes import run_notes
 from pipeline.results.tensile import STRENGTH_VARIABLES
+from pipeline.roller_summary import roller_row, roller_summary
 from pipeline.runs import (
     Progress,
     chain_stiffness_for,
@@ -76,6 +77,7 @@ from pipeline.runs import (
     process_wear_run,
 )
 from pipeline.runsheet import ChainDef, RunDef, RunSheet, load_run_sheet
+from pipeline.segment_summary import segment_row, segment_summary
 from pipeline.store import layout
 from pipeline.store.fingerprint import code_fingerprint
 from pipeline.store.freshness import HashCache, HashedFile, forget_rerun, hash_file
@@ -90,8 +92,6 @@ from pipeline.store.netcdf import (
 )
 from pipeline.tasks import Mapped
 from pipeline.units import to_si
-from pipeline.roller_summary import roller_row, roller_summary
-from pipeline.segment_summary import segment_row, segment_summary
 from pipeline.wear_summary import wear_row, wear_summary
 
 if TYPE_CHECKING:

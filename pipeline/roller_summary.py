@@ -45,9 +45,9 @@ from pipeline.errors import FitError
 from pipeline.fit.impact_model import CONFIDENCE
 from pipeline.fit.roller_engagement import RollerEngagementFit, fit_roller_engagement
 from pipeline.results.roller_engagement import RollerEngagementResult
-from pipeline.results.tensile import variable_attrs
 from pipeline.runs import roller_engagement_inputs
 from pipeline.runsheet import RunDef, RunSheet
+from pipeline.summary_rows import table_dataset
 from pipeline.theory.roller_impact import max_angular_velocity
 from pipeline.units import from_si
 
@@ -216,13 +216,5 @@ def roller_summary(sheet: RunSheet, rows: Mapping[str, Mapping[str, Any]]
         for i in members:
             table[i].update(_fitted(fit, rows[i]) if fit is not None else
                             {name: -1.0 for name in CHECKS})
-    data = {name: ("sprocket_point", [str(table[i][name]) for i in ids], {"long_name": text})
-            for name, text in TEXTS.items()}
-    for name, (units, text) in NUMBERS.items():
-        values = np.array([table[i].get(name, math.nan) for i in ids], dtype=float)
-        data[name] = ("sprocket_point", values, variable_attrs(units, text, name, CONFIDENCE))
-    for name, text in CHECKS.items():
-        data[name] = ("sprocket_point", np.array([table[i][name] for i in ids], dtype="int8"), {
-            "long_name": text, "flag_values": np.array([-1, 0, 1], dtype="int8"),
-            "flag_meanings": "not_evaluated no yes"})
-    return xr.Dataset(data, coords={"sprocket_point": ids}), notes
+    numbers = {**NUMBERS, **{name: ("1", text) for name, text in CHECKS.items()}}
+    return table_dataset("sprocket_point", table, TEXTS, numbers, CHECKS, CONFIDENCE), notes

@@ -44,7 +44,7 @@ from pipeline.ingest.unitparse import COUNTER_UNITS
 from pipeline.results import EngagementResult, TensileResult, WearResult
 from pipeline.results.engagement import MAX_STORED_SAMPLES
 from pipeline.results.roller_engagement import RollerEngagementResult
-from pipeline.results.segment_load import SegmentLoadResult
+from pipeline.results.segment_load import SegmentLoadResult, log_excerpt
 from pipeline.results.wear import LimitOutcome
 from pipeline.runsheet import RunDef, RunSheet
 from pipeline.store.netcdf import provenance_attrs, read_dataset
@@ -495,4 +495,5 @@ def process_segment_load_run(sheet: RunSheet, run: RunDef, raw_sha256: str,
     attrs = _attrs(sheet, run, f"Segment-load run {run.id} of campaign {sheet.campaign.id}",
                    raw_sha256)
     attrs.update(drum=run.drum, fitted=sheet.drums[run.drum].fitted, layout=metadata.layout)
-    return SegmentLoadResult.of(events, declared, geometry, attrs, metadata.warnings)
+    return SegmentLoadResult.of(events, declared, geometry, attrs, metadata.warnings,
+                                log_excerpt(table, events.events))

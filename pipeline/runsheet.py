@@ -792,7 +792,8 @@ def _read(sheet: Path) -> tuple[bytes, dict[str, Any]]:
     if unknown:
         raise RunSheetError(
             f"unknown top-level key(s) {sorted(unknown)}", file=sheet,
-            hint="expected [campaign], [chains.*], [wheels.*], [sprockets.*], [drums.*] and [[runs]]",
+            hint="expected [campaign], [chains.*], [wheels.*], [sprockets.*], [drums.*] "
+                 "and [[runs]]",
         )
     return raw_bytes, data
 

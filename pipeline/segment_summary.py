@@ -35,14 +35,13 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
-import numpy as np
 import pandas as pd
 import xarray as xr
 
 from pipeline.errors import FitError
 from pipeline.fit.segment_load import CONFIDENCE, FRICTION_CLAIM, fit_segment_load
 from pipeline.results.segment_load import SegmentLoadResult
-from pipeline.results.tensile import variable_attrs
+from pipeline.summary_rows import YES_NO_FLAGS, table_dataset
 
 #: Largest |measured - model| in standard errors taken as agreement [1].
 AGREEMENT = 3.0
@@ -207,14 +206,6 @@ def segment_summary(rows: Mapping[str, Mapping[str, Any]]
         notes.append(note)
         for run_id in ids:
             filled[run_id].update(values)
-    ids = list(filled)
-    data = {name: ("segment_point", [str(filled[i][name]) for i in ids], {"long_name": text})
-            for name, text in TEXTS.items()}
-    for name, (units, text) in NUMBERS.items():
-        data[name] = ("segment_point", np.array([filled[i][name] for i in ids], dtype=float),
-                      variable_attrs(units, text, name, CONFIDENCE))
-    for name, text in CHECKS.items():
-        data[name] = ("segment_point", np.array([filled[i][name] for i in ids], dtype="int8"),
-                      {"long_name": text, "flag_values": np.array([0, 1], dtype="int8"),
-                       "flag_meanings": "no yes"})
-    return xr.Dataset(data, coords={"segment_point": ids}), notes
+    numbers = {**NUMBERS, **{name: ("1", text) for name, text in CHECKS.items()}}
+    return table_dataset("segment_point", filled, TEXTS, numbers, CHECKS, CONFIDENCE,
+                         YES_NO_FLAGS), notes

@@ -34,11 +34,10 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
-import numpy as np
 import xarray as xr
 
-from pipeline.results.tensile import variable_attrs
 from pipeline.results.wear import LIMITS, RUNNING_UNITS, WearResult
+from pipeline.summary_rows import table_dataset
 
 #: Suffix of the stem of a value counted over the running coordinate, by abscissa.
 RUNNING_SUFFIX = {"time": "", "cycles": "_cycles"}
@@ -176,17 +175,6 @@ def wear_summary(rows: Mapping[str, Mapping[str, Any]], confidence: float) -> xr
         then every variable of :func:`variables` some row has (NaN where a row
         lacks it: a log over cycles has no life in seconds); checks as int8.
     """
-    ids = list(rows)
-    data = {name: ("wear_run", [str(rows[i][name]) for i in ids], {"long_name": text})
-            for name, text in TEXTS.items()}
-    for name, (units, text) in variables().items():
-        if not any(name in row for row in rows.values()):
-            continue
-        values = np.array([rows[i].get(name, math.nan) for i in ids], dtype=float)
-        if name in CHECKS:
-            data[name] = ("wear_run", values.astype("int8"), {
-                "long_name": text, "flag_values": np.array([-1, 0, 1], dtype="int8"),
-                "flag_meanings": "not_evaluated no yes"})
-        else:
-            data[name] = ("wear_run", values, variable_attrs(units, text, name, confidence))
-    return xr.Dataset(data, coords={"wear_run": ids})
+    numbers = {name: value for name, value in variables().items()
+               if any(name in row for row in rows.values())}
+    return table_dataset("wear_run", rows, TEXTS, numbers, CHECKS, confidence)

@@ -67,6 +67,36 @@ def test_summary_table_and_report(demo):
     assert table.startswith("segment_point,") and "segment_fit_s [m]" in table
     page = (result.output / "report.html").read_text(encoding="utf-8")
     assert 'id="segment"' in page and "campaign result" in page
+    # the measured section stands for Paper 003: no catalogue reference case beside it
+    assert "Reference case" not in page and "reference case (catalogue chain 34x126)" in page
+
+
+def test_run_file_keeps_the_log_around_the_first_seatings(demo):
+    result, truth = demo
+    run = read_dataset(result.output / "S34-1.nc")
+    time = run["trace_time"].values
+    # one seating a second: half a period before the first seating (the log starts 0.22 s
+    # before it), half a period after the fourth
+    assert time[0] == 0.0 and float(run["start"][0]) < 0.5
+    assert time[-1] == pytest.approx(float(run["stop"][3]) + 0.5, abs=0.01)
+    plateau = (time > float(run["plateau_start"][0])) & (time < float(run["plateau_stop"][0]))
+    level = truth["S34-1"]["truth"]["chain_force"][0]
+    assert run["trace_F"].values[plateau].mean() == pytest.approx(level, rel=0.01)
+    assert {"trace_F_K1", "trace_F_K2", "trace_F_P"} <= set(run.data_vars)
+
+
+def test_run_page_shows_the_seatings_against_the_model(demo):
+    result, truth = demo
+    page = (result.output / "report-runs" / "S34-1.html").read_text(encoding="utf-8")
+    assert 'id="segment"' in page and "<svg" in page
+    assert "Seatings found: 30, of which 30 valid; excluded: none" in page
+    run = read_dataset(result.output / "S34-1.nc")
+    median = float(run["contact_force_ratio_median"])
+    assert median == pytest.approx(truth["S34-1"]["contact_force_ratio"], rel=0.01)
+    assert f'<td class="num">{median:.4g}</td>' in page
+    assert f'<td class="num">{float(run["model_contact_force_ratio"]):.4g}</td>' in page
+    campaign = (result.output / "report.html").read_text(encoding="utf-8")
+    assert "chain c34x126, drum D34" in campaign and "F_K/F = " in campaign
 
 
 @pytest.mark.parametrize("change, column", [

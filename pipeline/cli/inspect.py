@@ -44,6 +44,9 @@ class Kind(StrEnum):
     tensile = "tensile"
     engagement = "engagement"
     wear = "wear"
+    segment_load = "segment-load"
+    #: Read as an engagement log (time and branch tension), as ``chainbench run`` reads it.
+    roller_engagement = "roller-engagement"
 
 
 def machine_cycles(table: pd.DataFrame, metadata: TableMetadata) -> int | None:
@@ -119,8 +122,10 @@ def command(
     """Show what the readers detect in FILE (layout, columns, units, cycles), processing nothing."""
     try:
         from pipeline.ingest import read_table
+        from pipeline.runs import READ_AS
 
-        table, metadata = read_table(file, kind=kind.value, strict=False)
+        table, metadata = read_table(file, kind=READ_AS.get(kind.value, kind.value),
+                                     strict=False)
         report = summary(table, metadata)
     except ChainbenchError as error:
         if debug:

@@ -149,12 +149,19 @@ def _fmt(value: float, scale: float = 1.0, digits: int = 4) -> str:
     return "-" if not math.isfinite(value) else f"{value / scale:.{digits}g}"
 
 
+def _table(title: str, columns: tuple[str, ...]) -> Table:
+    """An empty console table titled `title`, with right-aligned `columns` (escaped)."""
+    table = Table(title=title)
+    for column in columns:
+        table.add_column(escape(column), justify="right")
+    return table
+
+
 def _chain_table(summary) -> Table:
     low, high = (100 * float(value) for value in summary.attrs["band"].split())
-    table = Table(title=f"chain stiffness E0 (forces in kN; lab band {low:g} to {high:g} %)")
-    for column in ("chain", "n", "E0_exp [kN]", "95 % interval [kN]", "E0_theory [kN]",
-                   "d [%]", "in band"):
-        table.add_column(escape(column), justify="right")
+    table = _table(f"chain stiffness E0 (forces in kN; lab band {low:g} to {high:g} %)",
+                   ("chain", "n", "E0_exp [kN]", "95 % interval [kN]", "E0_theory [kN]",
+                    "d [%]", "in band"))
     for chain in summary["chain"].values:
         row = summary.sel(chain=chain)
         interval = (f"{_fmt(float(row['E0_exp_ci_low']), 1e3, 5)}.."
@@ -169,11 +176,10 @@ def _chain_table(summary) -> Table:
 
 
 def _impact_table(summary) -> Table:
-    table = Table(title="impact tensions (forces in N): measured (median) vs Paper 000 "
-                  "eq. (16), k = 2")
-    for column in ("run", "z", "psi [deg]", "omega [1/s]", "N_u1 meas [N]", "N_u1 theory [N]",
-                   "N_u2 meas [N]", "N_u2 theory [N]"):
-        table.add_column(escape(column), justify="right")
+    table = _table("impact tensions (forces in N): measured (median) vs Paper 000 "
+                   "eq. (16), k = 2",
+                   ("run", "z", "psi [deg]", "omega [1/s]", "N_u1 meas [N]", "N_u1 theory [N]",
+                    "N_u2 meas [N]", "N_u2 theory [N]"))
     for point in summary["operating_point"].values:
         row = summary.sel(operating_point=point)
         table.add_row(escape(str(point)), *(_fmt(float(row[name])) for name in (
@@ -195,11 +201,10 @@ def _with_interval(row, name: str, scale: float, unit: str, digits: int = 4) -> 
 
 
 def _wear_table(summary) -> Table:
-    table = Table(title="wear runs: steady wear rate and life to the limits (95 % intervals; "
-                  "eq. (3): Paper 004's jump-off growth)")
-    for column in ("run", "chain", "z", "model", "wear rate", "life eq. (3)", "life lab limit",
-                   "pin eq. (1)"):
-        table.add_column(escape(column), justify="right")
+    table = _table("wear runs: steady wear rate and life to the limits (95 % intervals; "
+                   "eq. (3): Paper 004's jump-off growth)",
+                   ("run", "chain", "z", "model", "wear rate", "life eq. (3)", "life lab limit",
+                    "pin eq. (1)"))
     for run in summary["wear_run"].values:
         row = summary.sel(wear_run=run)
         suffix, rate_unit, rate_scale, life_unit, life_scale = _WEAR_UNITS[
@@ -212,6 +217,64 @@ def _wear_table(summary) -> Table:
             _with_interval(row, f"life_eq3{suffix}", life_scale, life_unit),
             _with_interval(row, f"life_lab{suffix}", life_scale, life_unit) if lab else "-",
             {1: "pass", 0: "FAIL", -1: "-"}[int(row["pin_passes"])])
+    return table
+
+
+#: How a drum's fitted parameter is printed: scale (SI per printed unit) and unit.
+_GEOMETRY_UNITS = {"s": (1e-3, "mm", "segment_contact_distance"),
+                   "beta": (math.pi / 180, "deg", "segment_flank_inclination")}
+
+
+def _segment_table(summary) -> Table:
+    """Per drum: the fitted s or beta against the run sheet's, F_K/F measured against model."""
+    from pipeline.report.formatting import first_rows
+    from pipeline.segment_summary import AGREEMENT
+
+    table = _table("segment-load drums: contact geometry fitted to the measured F_K/F, "
+                   "F_P/F (95 % intervals; Paper 003, eqs. (1)-(4))",
+                   ("drum", "runs", "fitted", "sheet", "F_K/F meas.", "model sheet",
+                    "model fit", "agree"))
+    drums = summary["segment_drum"].values.astype(str)
+    for row in first_rows(summary, "segment_point", "segment_drum"):
+        drum = str(row["segment_drum"].values)
+        runs = summary.isel(segment_point=drums == drum)
+        name = str(row["segment_fitted"].values)
+        scale, unit, declared = _GEOMETRY_UNITS[name]
+        measured = runs["segment_contact_ratio"].values
+        table.add_row(
+            escape(drum), str(runs.sizes["segment_point"]),
+            f"{name} {_with_interval(row, f'segment_fit_{name}', scale, unit)}",
+            f"{_fmt(float(row[declared]), scale)} {unit}",
+            f"{_fmt(float(measured.min()))}..{_fmt(float(measured.max()))}",
+            _fmt(float(row["segment_model_contact_ratio"])),
+            _fmt(float(row["segment_fitted_contact_ratio"])),
+            f"{int(runs['segment_model_agrees'].sum())}/{runs.sizes['segment_point']}")
+    table.caption = (f"F_K/F meas.: the runs' medians; model: eqs. (1)-(3) at the run sheet's "
+                     f"and at the fitted geometry; agree: runs within {AGREEMENT:g} standard "
+                     "errors of the run sheet's model")
+    return table
+
+
+def _roller_table(summary) -> Table:
+    """Per sprocket: the fitted xi against the involute's, and the speeds above n_max."""
+    from pipeline.report.formatting import first_rows
+
+    table = _table("roller-chain sprockets: impact-velocity coefficient xi fitted to the "
+                   "strike amplitudes (95 % intervals; Paper 002)",
+                   ("sprocket", "z", "xi fitted", "xi model", "bounds", "n_max [rpm]",
+                    "above n_max [rpm]"))
+    keys = summary["roller_sprocket"].values.astype(str)
+    for row in first_rows(summary, "sprocket_point", "roller_sprocket"):
+        runs = summary.isel(sprocket_point=keys == str(row["roller_sprocket"].values))
+        above = runs["roller_n"].values[runs["above_n_max"].values == 1]
+        table.add_row(
+            escape(str(row["roller_sprocket"].values)), _fmt(float(row["roller_teeth"])),
+            _with_interval(row, "xi_fit", 1.0, "").strip(),
+            _fmt(float(row["xi_model"])),
+            {1: "yes", 0: "NO", -1: "-"}[int(row["xi_within_bounds"])],
+            _fmt(float(row["n_max"])), " ".join(_fmt(float(n)) for n in above) or "none")
+    table.caption = ("xi model: the involute's (eqs. (3)-(5)); bounds: sin(pi/z) <= xi <= "
+                     "cos(pi/z), eq. (3); n_max: eq. (8) with the fitted xi")
     return table
 
 
@@ -233,11 +296,10 @@ def _verdicts(row, prefix: str) -> str:
 
 
 def _specimen_table(summary) -> Table:
-    table = Table(title="tensile specimens (forces in kN, elongations A in % of the gauge "
-                  "length)")
-    for column in ("run", "E0 [kN]", "F_max [kN]", "A at F_max [%]", "A at fracture [%]",
-                   "F_yield [kN]", "A at proof [%]", "set [%]"):
-        table.add_column(escape(column), justify="right")
+    table = _table("tensile specimens (forces in kN, elongations A in % of the gauge "
+                   "length)",
+                   ("run", "E0 [kN]", "F_max [kN]", "A at F_max [%]", "A at fracture [%]",
+                    "F_yield [kN]", "A at proof [%]", "set [%]"))
     for run_id in summary["specimen"].values:
         row = summary.sel(specimen=run_id)
         table.add_row(
@@ -305,6 +367,10 @@ def _print_result(result: CampaignResult, out: Console = console) -> None:
                 f"{float(summary['k_fit_ci_high']):.4g}; Ryabov: k = 2)", highlight=False)
     if summary.sizes.get("wear_run", 0):
         out.print(_wear_table(summary))
+    if summary.sizes.get("segment_point", 0):
+        out.print(_segment_table(summary))
+    if summary.sizes.get("sprocket_point", 0):
+        out.print(_roller_table(summary))
     for note in filter(None, summary.attrs.get("notes", "").split("\n")):
         say("note", "yellow", note, to=out)
     _print_findings(result, failure_tag="failed", out=out)

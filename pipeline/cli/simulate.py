@@ -2,7 +2,9 @@
 
 ``chainbench simulate tensile`` (cyclic runs, or with ``--single-pull`` single
 pulls to fracture and proof-load tests), ``chainbench simulate engagement`` and
-``chainbench simulate wear`` (wear tests of a roller chain) write the logs of a
+``chainbench simulate wear`` (wear tests of a roller chain), ``chainbench
+simulate segment-load`` (the segments of a chain-drum tooth) and ``chainbench
+simulate roller-engagement`` (a roller chain on a sprocket) write the logs of a
 campaign (one file per run, in any layout and units the readers
 accept), its run sheet ``campaign.toml`` and ``truth.json``, the true values each
 log was made from (:mod:`pipeline.simulate.campaign`). ``chainbench simulate
@@ -23,8 +25,8 @@ import typer
 from pipeline.catalog import chain as catalog_chain
 from pipeline.cli._options import MultiValueCommand
 from pipeline.cli._output import emit
-from pipeline.fit.roller_engagement import Sprocket
 from pipeline.condition.wear import REFERENCES
+from pipeline.fit.roller_engagement import Sprocket
 from pipeline.simulate.campaign import (
     WEAR_ABSCISSAE,
     CampaignSpec,
@@ -50,6 +52,14 @@ from pipeline.simulate.export import (
 from pipeline.simulate.pull import REMOVAL_MODES, PullTruth
 from pipeline.simulate.roller_campaign import RollerRunSpec, SprocketSpec, write_roller_campaign
 from pipeline.simulate.roller_engagement import CHAIN_16B, RollerEngagementTruth
+from pipeline.simulate.segment_campaign import (
+    SEGMENT_LAYOUTS,
+    DrumSpec,
+    SegmentRunSpec,
+    demo_runs,
+    write_segment_campaign,
+)
+from pipeline.simulate.segment_load import SegmentLoadTruth
 from pipeline.simulate.tensile import TensileTruth
 from pipeline.simulate.wear import CHANNELS as WEAR_CHANNELS
 from pipeline.simulate.wear import HOUR, WearTruth
@@ -599,6 +609,126 @@ def roller_engagement(
     emit(rows, title=f"Simulated roller-engagement campaign in {out}", as_json=as_json,
          extra={"out": str(out), "run_sheet": str(sheet), "truth": str(out / "truth.json")},
          digits=6)
+
+
+SegmentLayout = StrEnum("SegmentLayout", {name: name for name in SEGMENT_LAYOUTS})
+
+
+class FittedGeometry(StrEnum):
+    """The drum parameter fitted to the measured ratios (Paper 003)."""
+
+    s = "s"
+    beta = "beta"
+
+
+@simulate_app.command("segment-load", cls=MultiValueCommand)
+def segment_load(
+    out: Annotated[Path, typer.Option("--out", help="Campaign folder to write (created).")],
+    chain: Annotated[
+        str, typer.Option("--chain", help="Catalogue round-link chain with a torus radius.")
+    ] = "34x126",
+    groove_width_mm: Annotated[
+        float, typer.Option("--groove-width-mm", help="Groove width c between the segments "
+                                                      "in mm.")
+    ] = 45.0,
+    s_mm: Annotated[
+        float, typer.Option("--s-mm", help="True contact distance s in mm.")
+    ] = 60.0,
+    beta_deg: Annotated[
+        float, typer.Option("--beta-deg", help="True flank inclination beta in deg.")
+    ] = 50.0,
+    eps_n_deg: Annotated[
+        float, typer.Option("--eps-n-deg", help="Link inclination eps_n in deg.")
+    ] = 0.0,
+    fit: Annotated[
+        FittedGeometry, typer.Option("--fit", help="Parameter the drum fits (Paper 003).")
+    ] = FittedGeometry.s,
+    declared_mm: Annotated[
+        float | None, typer.Option("--declared-mm", help="The run sheet's s in mm (with "
+                                                         "--fit s; default 55).")
+    ] = None,
+    declared_deg: Annotated[
+        float | None, typer.Option("--declared-deg", help="The run sheet's beta in deg (with "
+                                                          "--fit beta; default 45).")
+    ] = None,
+    levels_kn: Annotated[
+        list[float] | None, typer.Option("--levels-kn", help="Chain-force levels in kN, one "
+                                                             "run each (default: 50 100 150).")
+    ] = None,
+    seatings: Annotated[
+        int, typer.Option("--seatings", min=1, help="Seatings per run.")
+    ] = 30,
+    layout: Annotated[
+        list[SegmentLayout] | None,
+        typer.Option("--layout", help="File layouts, taken in turn by the runs (default: plain).")
+    ] = None,
+    gain_imbalance: Annotated[
+        float, typer.Option("--gain-imbalance", help="Relative gain difference of the two "
+                                                     "segments.")
+    ] = 0.0,
+    side_force: Annotated[
+        bool, typer.Option("--side-force/--no-side-force", help="Log the side force F_P.")
+    ] = True,
+    campaign: Annotated[
+        str, typer.Option("--campaign", help="Campaign id written to the run sheet.")
+    ] = "simulated-segment-load",
+    seed: Annotated[int, typer.Option("--seed", help="Seed of all the randomness.")] = 1,
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
+) -> None:
+    """Write segment-load logs of a chain-drum tooth with known contact geometry (Paper 003)."""
+    spec = _campaign(campaign, f"Virtual drum rig, chain {chain}", "segment-load", seed)
+    wrong = {FittedGeometry.s: ("--declared-deg", declared_deg),
+             FittedGeometry.beta: ("--declared-mm", declared_mm)}[fit]
+    if wrong[1] is not None:
+        raise typer.BadParameter(f"{wrong[0]} goes with the other --fit; with --fit {fit} "
+                                 "give " + ("--declared-mm" if fit == "s" else "--declared-deg"),
+                                 param_hint=wrong[0])
+    try:
+        catalogue = catalog_chain(chain)
+    except KeyError as error:
+        raise typer.BadParameter(str(error).strip("'\""), param_hint="--chain") from None
+    if not catalogue.get("r_outer"):
+        raise typer.BadParameter(f"the catalogue gives chain {chain} no torus radius r_outer "
+                                 "(Paper 003 needs it)", param_hint="--chain")
+    layouts = [str(kind) for kind in dict.fromkeys(layout or [SegmentLayout.plain])]
+    levels = [to_si(level, "kN") for level in dict.fromkeys(levels_kn or [50.0, 100.0, 150.0])]
+    if len(layouts) > len(levels):
+        raise typer.BadParameter(f"{len(layouts)} layouts for {len(levels)} runs: the runs take "
+                                 "the layouts in turn, give as many --levels-kn at least",
+                                 param_hint="--layout")
+    declared = (to_si(55.0 if declared_mm is None else declared_mm, "mm") if fit == "s"
+                else math.radians(45.0 if declared_deg is None else declared_deg))
+    try:
+        truth = SegmentLoadTruth(
+            r_outer=float(catalogue["r_outer"]), d=float(catalogue["d"]),
+            groove_width=to_si(groove_width_mm, "mm"), beta=math.radians(beta_deg),
+            eps_n=math.radians(eps_n_deg), s=to_si(s_mm, "mm"), seatings=seatings,
+            seating_rate=1.0, plateau=0.4, transition=0.1, sample_rate=200.0,
+            gain_imbalance=gain_imbalance, with_side_force=side_force)
+    except ValueError as error:
+        raise typer.BadParameter(str(error)) from None
+    try:
+        truth.with_(**{str(fit): declared})
+    except ValueError as error:
+        raise typer.BadParameter(f"the run sheet's {fit} cannot hold: {error}", param_hint=(
+            "--declared-mm" if fit == "s" else "--declared-deg")) from None
+    try:
+        runs = demo_runs(chain, truth, levels, layouts, seed, f"S{chain}")
+        sheet = write_segment_campaign(out, runs, DrumSpec("drum", str(fit), declared), spec)
+    except ValueError as error:
+        raise typer.BadParameter(str(error)) from None
+    rows = [_segment_row(run) for run in runs]
+    emit(rows, title=f"Simulated segment-load campaign in {out}", as_json=as_json,
+         extra={"out": str(out), "run_sheet": str(sheet), "truth": str(out / "truth.json")},
+         digits=6)
+
+
+def _segment_row(run: SegmentRunSpec) -> dict[str, str | float]:
+    """What the command prints of a simulated segment-load run: its file and truth."""
+    truth = run.truth
+    return {"id": run.id, "file": run.file, "F_kN": from_si(truth.chain_force[0], "kN"),
+            "F_K/F": truth.contact_force_ratio, "F_P/F": truth.side_force_ratio,
+            "s_mm": from_si(truth.s, "mm"), "beta_deg": math.degrees(truth.beta)}
 
 
 @simulate_app.command("demo")

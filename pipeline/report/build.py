@@ -61,6 +61,9 @@ from pipeline.report.formatting import (
 )
 from pipeline.report.recorded import level, recorded
 from pipeline.report.render import report_style, svg
+from pipeline.report.roller_figures import amplitude_vs_speed
+from pipeline.report.roller_section import roller_checks, roller_section
+from pipeline.report.roller_section import tested as roller_tested
 from pipeline.report.run_pages import (
     RunFile,
     RunStatus,
@@ -72,9 +75,6 @@ from pipeline.report.run_pages import (
     specimen_row,
     write_run_pages,
 )
-from pipeline.report.roller_figures import amplitude_vs_speed
-from pipeline.report.roller_section import roller_checks, roller_section
-from pipeline.report.roller_section import tested as roller_tested
 from pipeline.report.segment_figures import contact_ratios_vs_s
 from pipeline.report.segment_section import segment_checks, segment_section
 from pipeline.report.segment_section import tested as segment_tested

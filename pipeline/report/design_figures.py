@@ -3,19 +3,25 @@
 Which papers a campaign gets
 ----------------------------
 Paper 003 (segmented teeth of a chain drum) needs a round-link chain's outer
-torus radius r and the drum's groove width c. A run sheet does not give them
-(its chains carry d, t, R0, a and the mass per metre) and the campaign summary
-records no catalogue name, so no campaign chain can be checked: the report
-always shows Paper 003's own case, chain 34x126 of the catalogue (r, d, c from
-the paper), labelled as a reference and not as a result of the campaign.
+torus radius r and the drum's groove width c. A campaign with segment-load
+runs has them (its ``[drums.*]`` tables and catalogue chains): its measured
+ratios and the geometry fitted to them are the report's segment section
+(:mod:`pipeline.report.segment_section`), a campaign result, and
+:func:`design_checks` then shows no Paper 003 figure. A campaign without drum
+runs gives no r and c (tensile and engagement chains carry d, t, R0, a and
+the mass per metre), so the report shows Paper 003's own case instead, chain
+34x126 of the catalogue (r, d, c from the paper), labelled as a reference
+and not as a result of the campaign.
 
 Papers 002 (impact of roller chains on sprockets: xi, n_max) and 004 (pin
 criterion of roller chains) concern roller chains. Tensile and engagement
 runs test round-link chains, so :func:`design_checks` returns no item for
 them; ``chainbench theory roller-impact`` and ``chainbench theory pin``
-compute them for a given chain. A campaign's wear runs test roller chains:
-Paper 004 is set against their measured wear as a campaign result, in the
-report's wear section (:mod:`pipeline.report.wear_section`), not here.
+compute them for a given chain. A campaign's wear and roller-engagement runs
+test roller chains: Paper 004 is set against their measured wear and Paper
+002 against their measured xi as campaign results, in the report's wear and
+roller sections (:mod:`pipeline.report.wear_section`,
+:mod:`pipeline.report.roller_section`), not here.
 
 Published numbers not reproduced
 --------------------------------
@@ -292,10 +298,14 @@ def design_checks(summary: xr.Dataset) -> list[tuple[str, Figure]]:
     list of (str, matplotlib.figure.Figure)
         Paper 003's curves (Figs. 3-9) for its reference chain
         :data:`REFERENCE_CHAIN`, labelled as a reference (a campaign's chains
-        lack r and c), with the published values marked. Nothing for Papers
-        002 and 004: they concern roller chains; wear runs set Paper 004
-        against their measurements in the wear section (module docstring).
+        lack r and c), with the published values marked; nothing when the
+        campaign has segment-load runs (``segment_point``): their measured
+        section stands for Paper 003. Nothing for Papers 002 and 004: they
+        concern roller chains; roller-engagement and wear runs set them
+        against their measurements in their own sections (module docstring).
     """
+    if summary.sizes.get("segment_point", 0):
+        return []
     reference = _reference_text(summary)
     side_friction, claims = _side_force_friction_figure()
     return [

@@ -70,6 +70,30 @@ def natural_key(text: str) -> list[int | str]:
     return [int(part) if part.isdigit() else part for part in re.split(r"(\d+)", text)]
 
 
+def first_rows(summary, dim: str, key: str) -> list:
+    """The first row of every group of a summary table, in the order the groups appear.
+
+    The fit of a drum or a sprocket is repeated on each of its runs' rows, so
+    its first row stands for the group.
+
+    Parameters
+    ----------
+    summary : xarray.Dataset
+        A campaign summary.
+    dim : str
+        The table's dimension, e.g. ``"segment_point"`` or ``"sprocket_point"``.
+    key : str
+        The text variable naming each row's group, e.g. ``"segment_drum"``.
+
+    Returns
+    -------
+    list of xarray.Dataset
+        One row per group.
+    """
+    keys = list(summary[key].values.astype(str))
+    return [summary.isel({dim: keys.index(group)}) for group in dict.fromkeys(keys)]
+
+
 def verdict_class(passed: bool | None) -> str:
     """The CSS class of a verdict: ``pass``, ``fail``, or ``info`` (None: no verdict)."""
     return {True: "pass", False: "fail", None: "info"}[passed]

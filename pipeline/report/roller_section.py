@@ -15,15 +15,13 @@ from typing import Any
 
 import xarray as xr
 
-from pipeline.report.formatting import MISSING, interval, number, verdict_class
+from pipeline.report.formatting import MISSING, first_rows, interval, number, verdict_class
 from pipeline.report.recorded import level
 
 
 def _sprocket_rows(summary: xr.Dataset) -> list[xr.Dataset]:
     """The first row of every sprocket (its fit's values are repeated on its rows)."""
-    keys = summary["roller_sprocket"].values.astype(str)
-    firsts = [list(keys).index(key) for key in dict.fromkeys(keys)]
-    return [summary.isel(sprocket_point=index) for index in firsts]
+    return first_rows(summary, "sprocket_point", "roller_sprocket")
 
 
 def tested(summary: xr.Dataset) -> str:

@@ -47,6 +47,7 @@ from pipeline.report.formatting import (
 from pipeline.report.recorded import level, recorded
 from pipeline.report.render import report_style, svg
 from pipeline.report.roller_section import roller_numbers
+from pipeline.report.segment_section import segment_numbers, segment_run_page
 from pipeline.report.wear_section import run_numbers, wear_run_page
 from pipeline.results.notes import run_notes
 from pipeline.store import layout
@@ -221,6 +222,9 @@ def run_rows(summary: xr.Dataset, runs: Sequence[RunFile],
         elif run.kind == "wear":
             what = f"chain {attrs.get('chain', '')}, sprocket z = {attrs.get('sprocket_teeth', '')}"
             numbers = run_numbers(summary, run_id)
+        elif run.kind == "segment-load":
+            what = f"chain {attrs.get('chain', '')}, drum {attrs.get('drum', '')}"
+            numbers = segment_numbers(summary, run_id)
         else:
             what = f"chain {attrs.get('chain', '')}, wheel {attrs.get('wheel', '')}"
             numbers = ", ".join(f"{name} = {number(impacts[name].get(run_id, math.nan))} N"
@@ -381,8 +385,8 @@ def run_page_context(summary: xr.Dataset, run: RunFile, dataset: xr.Dataset,
     -------
     dict
         ``run`` (id, kind, status, flags, warnings, raw file, link back),
-        ``previous`` and ``next`` (or None), ``tensile``, ``engagement`` and
-        ``wear`` (the one of its kind; the others None).
+        ``previous`` and ``next`` (or None), ``tensile``, ``engagement``,
+        ``wear`` and ``segment`` (the one of its kind; the others None).
     """
     attrs = run.attrs
     engagement = None
@@ -403,6 +407,7 @@ def run_page_context(summary: xr.Dataset, run: RunFile, dataset: xr.Dataset,
         "tensile": _tensile(dataset) if run.kind == "tensile" else None,
         "engagement": engagement,
         "wear": wear_run_page(dataset) if run.kind == "wear" else None,
+        "segment": segment_run_page(dataset) if run.kind == "segment-load" else None,
     }
 
 

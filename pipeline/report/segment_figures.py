@@ -102,3 +102,83 @@ def contact_ratios_vs_s(summary: xr.Dataset) -> Figure:
         figure.suptitle("Segment loads (Paper 003, eqs. (1)-(4)): model curves, measured medians "
                         "at the fitted geometry; dotted: the run sheet's s")
     return figure
+
+
+#: Colours of the logged channels on a run's page.
+_CHANNEL_COLOURS = {"F": "0.2", "F_K1": "C0", "F_K2": "C1", "F_P": "C2"}
+#: Labels of the logged channels.
+_CHANNEL_LABELS = {"F": "chain force F", "F_K1": "segment 1 F_K1", "F_K2": "segment 2 F_K2",
+                   "F_P": "side force F_P"}
+#: The zero each channel's plateau median was taken from (None: the chain force has none).
+_ZEROS = {"F": None, "F_K1": "zero_K1", "F_K2": "zero_K2", "F_P": "zero_P"}
+
+
+def _plateaus(ax, run: xr.Dataset, start: float, end: float) -> None:
+    """The detected plateaus within [start, end] [s]: shaded, each channel's median drawn."""
+    valid = run["status"].values.astype(str) == "ok"
+    for index in np.flatnonzero((run["plateau_stop"].values >= start)
+                                & (run["plateau_start"].values <= end)):
+        left, right = (float(run[name][index]) for name in ("plateau_start", "plateau_stop"))
+        ax.axvspan(left, right, color="C2" if valid[index] else "0.6", alpha=0.15, linewidth=0)
+        for channel, zero in _ZEROS.items():
+            if channel not in run or f"trace_{channel}" not in run:
+                continue
+            level = float(run[channel][index]) + (0.0 if zero is None else float(run[zero][index]))
+            ax.hlines(level / 1e3, left, right, color=_CHANNEL_COLOURS[channel], linewidth=2.2)
+
+
+def segment_run(run: xr.Dataset) -> Figure:
+    """A segment-load run: its log with the detected plateaus, and the ratio per seating.
+
+    Parameters
+    ----------
+    run : xarray.Dataset
+        One segment-load run file (:class:`pipeline.results.segment_load.SegmentLoadResult`):
+        ``trace_*`` on ``sample``, the seatings' times, plateau medians, zeros,
+        ratios and ``status`` on ``seating``, the medians and the model's ratios.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Top: the chain force and the segment forces [kN] as logged around the
+        first seatings, the plateaus the ratios were taken over shaded (grey:
+        excluded seatings) with each channel's plateau median as a thick line.
+        Bottom: F_K / F (and F_P / F) of every seating (Paper 003, eqs. (3)-(4)),
+        excluded seatings open, with the run's medians and the model's ratios
+        at the run sheet's geometry.
+    """
+    with report_style():
+        figure = Figure(figsize=(10.0, 7.0), layout="constrained")
+        log_ax, ratio_ax = figure.subplots(2, 1)
+        time = run["trace_time"].values
+        for channel in _CHANNEL_COLOURS:
+            if f"trace_{channel}" in run:
+                log_ax.plot(time, run[f"trace_{channel}"].values / 1e3, linewidth=0.8,
+                            color=_CHANNEL_COLOURS[channel], label=_CHANNEL_LABELS[channel])
+        if time.size:
+            _plateaus(log_ax, run, float(time[0]), float(time[-1]))
+        log_ax.set_xlabel("time [s]")
+        log_ax.set_ylabel("force [kN]")
+        log_ax.legend(loc="center right", fontsize="small")
+        log_ax.set_title("log around the first seatings; shaded: the plateaus, thick: their "
+                         "medians", fontsize="medium")
+        seating = run["seating"].values
+        valid = run["status"].values.astype(str) == "ok"
+        for name, label, colour in (("contact_force_ratio", "F_K/F", "C0"),
+                                    ("side_force_ratio", "F_P/F", "C2")):
+            if name not in run:
+                continue
+            values = run[name].values
+            ratio_ax.plot(seating[valid], values[valid], "o", color=colour, markersize=4,
+                          label=f"{label} per seating")
+            ratio_ax.plot(seating[~valid], values[~valid], "o", color=colour, mfc="none",
+                          markersize=4, label=f"{label} excluded" if (~valid).any() else None)
+            ratio_ax.axhline(float(run[f"{name}_median"]), color=colour,
+                             label=f"{label} median of the run")
+            ratio_ax.axhline(float(run[f"model_{name}"]), color=colour, linestyle="--",
+                             label=f"{label} model, run sheet's geometry")
+        ratio_ax.set_xlabel("seating [-]")
+        ratio_ax.set_ylabel("load ratio [-]")
+        ratio_ax.legend(loc="center right", fontsize="small")
+        figure.suptitle("Segment-load run (Paper 003, eqs. (3)-(4))")
+    return figure

@@ -11,7 +11,10 @@ segments' ``imbalance`` [1], ``imbalanced`` (1 yes, 0 no) and ``status``
 (``ok`` or the reason it is excluded). As scalars: per quantity over the valid
 seatings its ``_median``, ``_iqr``, ``_stderr`` and ``_count``; the seatings
 excluded per reason; the detection's levels; and the model of eqs. (1)-(4) at
-the run sheet's geometry (``model_*``), with that geometry.
+the run sheet's geometry (``model_*``), with that geometry. On dimension
+``sample``, the log around its first :data:`TRACE_SEATINGS` seatings as read
+(``trace_time`` [s], ``trace_F``, ``trace_F_K1``, ``trace_F_K2`` and
+``trace_F_P`` [N], the segment forces with their zeros), for the run's page.
 
 netCDF names carry no ``/``: the ratios are named as in :data:`NAMES`.
 """
@@ -78,6 +81,56 @@ MODEL_VARIABLES = {
     "model_friction_increase": ("1", "friction increase 2 F_K / F - 1 of the model"),
 }
 
+#: Seatings of the log kept in the run file for its page (:func:`log_excerpt`).
+TRACE_SEATINGS = 4
+
+#: The reader's roles -> the channels of the conditioning and of the excerpt.
+TRACE_ROLES = {"time": "time", "force": "F", "segment_force_1": "F_K1",
+               "segment_force_2": "F_K2", "side_force": "F_P"}
+
+#: The log excerpt on dimension ``sample``: units and long names (run-file names).
+TRACE_VARIABLES = {
+    "trace_time": ("s", "time of the logged sample"),
+    "trace_F": ("N", "chain force F as logged"),
+    "trace_F_K1": ("N", "force on segment 1 as logged (with its zero)"),
+    "trace_F_K2": ("N", "force on segment 2 as logged (with its zero)"),
+    "trace_F_P": ("N", "side force F_P as logged (with its zero)"),
+}
+
+
+def log_excerpt(table: pd.DataFrame, seatings: pd.DataFrame,
+                count: int = TRACE_SEATINGS) -> pd.DataFrame:
+    """The stretch of a segment-load log around its first `count` seatings.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        The canonical table (:func:`pipeline.ingest.read_table`): ``time`` [s],
+        ``force``, ``segment_force_1``, ``segment_force_2`` and optionally
+        ``side_force`` [N].
+    seatings : pandas.DataFrame
+        The seatings found in it, with ``start`` and ``stop`` [s], in time order.
+    count : int
+        Seatings to keep [-].
+
+    Returns
+    -------
+    pandas.DataFrame
+        ``time``, ``F``, ``F_K1``, ``F_K2`` (and ``F_P``) from half a seating
+        period before the first seating to half a period after the
+        `count`-th; the whole log when it has one seating (its idle time
+        around it as margin).
+    """
+    starts, stops = seatings["start"].to_numpy(), seatings["stop"].to_numpy()
+    shown = min(count, len(starts))
+    margin = (float(np.median(np.diff(starts))) / 2 if len(starts) > 1
+              else float(table["time"].iloc[-1] - table["time"].iloc[0]))
+    time = table["time"].to_numpy()
+    inside = (time >= starts[0] - margin) & (time <= stops[shown - 1] + margin)
+    columns = {role: name for role, name in TRACE_ROLES.items() if role in table}
+    return table.loc[inside, list(columns)].rename(columns=columns).reset_index(drop=True)
+
+
 #: Global attributes written from the result's fields (the others are its :attr:`attrs`).
 DERIVED_ATTRS = ("ingest_warnings", "warnings")
 
@@ -105,6 +158,8 @@ class SegmentLoadResult:
         quantities with run-file names), and ``excluded_<reason>``.
     model : dict of str to float
         The scalars of :data:`MODEL_VARIABLES`.
+    trace : pandas.DataFrame
+        The log around the first seatings (:func:`log_excerpt`).
     ingest_warnings, warnings : tuple of str
         What the reader, and the conditioning, decided or found.
     """
@@ -113,13 +168,14 @@ class SegmentLoadResult:
     seatings: pd.DataFrame
     statistics: dict[str, float]
     model: dict[str, float]
+    trace: pd.DataFrame
     ingest_warnings: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
 
     @classmethod
     def of(cls, events: SegmentLoadEvents, declared: ContactRatios,
            geometry: dict[str, float], attrs: dict[str, Any],
-           ingest_warnings: list[str]) -> SegmentLoadResult:
+           ingest_warnings: list[str], trace: pd.DataFrame) -> SegmentLoadResult:
         """The result of the stages' outputs.
 
         Parameters
@@ -134,6 +190,8 @@ class SegmentLoadResult:
             Provenance, identity and settings (see :attr:`attrs`).
         ingest_warnings : list of str
             The reader's warnings.
+        trace : pandas.DataFrame
+            The log around the first seatings (:func:`log_excerpt`).
         """
         seatings = events.events.rename(columns=NAMES)
         seatings["imbalanced"] = seatings["imbalanced"].astype(int)
@@ -152,7 +210,8 @@ class SegmentLoadResult:
         attrs = {**attrs, "imbalance_tolerance": events.imbalance_tolerance,
                  "noise": detection.noise, "idle": detection.idle, "height": detection.height}
         return cls(attrs=attrs, seatings=seatings, statistics=statistics, model=model,
-                   ingest_warnings=tuple(ingest_warnings), warnings=events.messages)
+                   trace=trace, ingest_warnings=tuple(ingest_warnings),
+                   warnings=events.messages)
 
     @property
     def has_side_force(self) -> bool:
@@ -198,6 +257,10 @@ class SegmentLoadResult:
         for name, value in self.model.items():
             units, long_name = MODEL_VARIABLES[name]
             data[name] = ((), float(value), {"units": units, "long_name": long_name})
+        for name in self.trace.columns:
+            units, long_name = TRACE_VARIABLES[f"trace_{name}"]
+            data[f"trace_{name}"] = ("sample", self.trace[name].to_numpy(dtype=float),
+                                     {"units": units, "long_name": long_name})
         dataset = xr.Dataset(data, coords={"seating": np.arange(len(self.seatings))})
         dataset.attrs.update(self.global_attrs())
         return dataset
@@ -216,9 +279,11 @@ class SegmentLoadResult:
         seatings["status"] = dataset["status"].values.astype(str)
         statistics = {name: float(dataset[name]) for name in dataset.data_vars
                       if dataset[name].ndim == 0 and name not in MODEL_VARIABLES}
+        trace = pd.DataFrame({name[len("trace_"):]: dataset[name].values
+                              for name in TRACE_VARIABLES if name in dataset})
         attrs = {key: value for key, value in dataset.attrs.items() if key not in DERIVED_ATTRS}
         return cls(attrs=attrs, seatings=seatings, statistics=statistics,
-                   model={name: float(dataset[name]) for name in MODEL_VARIABLES},
+                   model={name: float(dataset[name]) for name in MODEL_VARIABLES}, trace=trace,
                    ingest_warnings=lines(dataset.attrs["ingest_warnings"]),
                    warnings=lines(dataset.attrs["warnings"]))
 

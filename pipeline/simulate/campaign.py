@@ -24,6 +24,7 @@ import re
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import asdict, dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -126,7 +127,7 @@ class TensileRunSpec:
     language: str = "pl"
 
     def __post_init__(self) -> None:
-        _check_run(self.id, self.file)
+        check_run(self.id, self.file)
         for name, value, allowed in (("layout", self.layout, LAYOUTS),
                                      ("force_unit", self.force_unit, FORCE_UNITS),
                                      ("length_unit", self.length_unit, LENGTH_UNITS),
@@ -194,7 +195,7 @@ class EngagementRunSpec:
     format: str = "tdms"
 
     def __post_init__(self) -> None:
-        _check_run(self.id, self.file)
+        check_run(self.id, self.file)
         if self.format not in ENGAGEMENT_WRITERS:
             raise ValueError(f"run {self.id}: format must be one of "
                              f"{', '.join(ENGAGEMENT_WRITERS)}, got {self.format!r}")
@@ -258,7 +259,7 @@ class WearRunSpec:
     pin: Mapping[str, float | str] | None = None
 
     def __post_init__(self) -> None:
-        _check_run(self.id, self.file)
+        check_run(self.id, self.file)
         for name, value, allowed in (("layout", self.layout, WEAR_LAYOUTS),
                                      ("abscissa", self.abscissa, WEAR_ABSCISSAE),
                                      ("time_unit", self.time_unit, TIME_UNITS),
@@ -302,7 +303,22 @@ class WearRunSpec:
         return lives
 
 
-def _check_run(run_id: str, file: str) -> None:
+def check_run(run_id: str, file: str) -> None:
+    """Refuse a run id or file name a synthetic run sheet cannot hold.
+
+    Parameters
+    ----------
+    run_id : str
+        Run id [-]: letters, digits, ``.``, ``_`` and ``-`` only.
+    file : str
+        File name of the run's log [-]: a plain name in the campaign folder,
+        neither the run sheet's nor ``truth.json``.
+
+    Raises
+    ------
+    ValueError
+        For an id or a file name that breaks these rules; the message says why.
+    """
     if not re.fullmatch(SAFE_ID, run_id):
         raise ValueError(f"run id {run_id!r}: use letters, digits, '.', '_' and '-' only")
     if Path(file).name != file or file in (RUN_SHEET_NAME, TRUTH_NAME):
@@ -369,12 +385,43 @@ def _toml_value(value: str | bool | int | float) -> str:
     raise TypeError(f"cannot write {type(value).__name__} {value!r} to a run sheet")
 
 
-def _toml_key(key: str) -> str:
+def toml_key(key: str) -> str:
+    """`key` as a TOML key: bare when it can be, else quoted.
+
+    Examples
+    --------
+    >>> toml_key("D34"), toml_key("z 18")
+    ('D34', '"z 18"')
+    """
     return key if _BARE_KEY.fullmatch(key) else _toml_value(key)
 
 
-def _toml_table(header: str, values: dict[str, str | bool | int | float]) -> list[str]:
-    return ["", header, *(f"{_toml_key(key)} = {_toml_value(value)}"
+def toml_table(header: str, values: dict[str, str | bool | int | float]) -> list[str]:
+    """Lines of a TOML table: a blank line, `header`, then one ``key = value`` each.
+
+    Parameters
+    ----------
+    header : str
+        The table's header line, e.g. ``"[drums.D34]"`` or ``"[[runs]]"``.
+    values : dict
+        Keys and values (strings, booleans, integers, finite floats).
+
+    Returns
+    -------
+    list of str
+        The lines, without line ends.
+
+    Raises
+    ------
+    ValueError
+        For a value that is not finite.
+
+    Examples
+    --------
+    >>> toml_table("[drums.D34]", {"fitted": "s", "groove_width_mm": 45.0})
+    ['', '[drums.D34]', 'fitted = "s"', 'groove_width_mm = 45']
+    """
+    return ["", header, *(f"{toml_key(key)} = {_toml_value(value)}"
                           for key, value in values.items())]
 
 
@@ -418,16 +465,16 @@ def run_sheet_text(
              "[campaign]", *(f"{key} = {_toml_value(value)}" for key, value in info.items())]
     for chain in dict.fromkeys(chains):
         settings = {"catalog": chain, **(chain_settings or {}).get(chain, {})}
-        lines += _toml_table(f"[chains.{_toml_key(chain_key(chain))}]", settings)
+        lines += toml_table(f"[chains.{toml_key(chain_key(chain))}]", settings)
     for key, (teeth, apex_deg) in (wheels or {}).items():
-        lines += _toml_table(f"[wheels.{_toml_key(key)}]",
+        lines += toml_table(f"[wheels.{toml_key(key)}]",
                              {"teeth": teeth, "apex_angle_deg": float(apex_deg)})
     for run in runs:
-        lines += _toml_table("[[runs]]", run)
+        lines += toml_table("[[runs]]", run)
     return "\n".join(lines) + "\n"
 
 
-def _check_unique(runs: Sequence[TensileRunSpec | EngagementRunSpec]) -> None:
+def _check_unique(runs: Sequence[Any]) -> None:
     if not runs:
         raise ValueError("a campaign needs at least one run")
     for attribute in ("id", "file"):
@@ -446,17 +493,52 @@ def _plain(value):
     return value
 
 
-def _folder(out: str | Path, runs: Sequence[TensileRunSpec | EngagementRunSpec]) -> Path:
-    """The campaign folder, created, after checking the run list."""
+def campaign_folder(out: str | Path, runs: Sequence[Any]) -> Path:
+    """The campaign folder of a synthetic campaign, created, after checking its run list.
+
+    Parameters
+    ----------
+    out : str or Path
+        Campaign folder (created with its parents when missing).
+    runs : sequence
+        Run specs of any kind, each with an ``id`` and a ``file``.
+
+    Returns
+    -------
+    Path
+        The folder.
+
+    Raises
+    ------
+    ValueError
+        For an empty run list, or run ids or files given twice.
+    """
     _check_unique(runs)
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     return out
 
 
-def _write_sheet_and_truth(out: Path, campaign: CampaignSpec, sheet_text: str,
-                           truths: dict[str, dict]) -> Path:
-    """Write the run sheet and ``truth.json``; the run sheet's path."""
+def write_sheet_and_truth(out: Path, campaign: CampaignSpec, sheet_text: str,
+                          truths: dict[str, dict]) -> Path:
+    """Write a synthetic campaign's run sheet and its ``truth.json`` (both atomically).
+
+    Parameters
+    ----------
+    out : Path
+        Campaign folder.
+    campaign : CampaignSpec
+        The campaign; its id heads ``truth.json``.
+    sheet_text : str
+        Text of the run sheet (:func:`run_sheet_text` and more tables).
+    truths : dict
+        Run id -> what the run's truth is (SI; numpy values are made plain).
+
+    Returns
+    -------
+    Path
+        The run sheet written.
+    """
     sheet = write_text_atomic(sheet_text, out / RUN_SHEET_NAME)
     document = {"campaign": campaign.id, "runs": truths}
     write_text_atomic(json.dumps(_plain(document), indent=2) + "\n", out / TRUTH_NAME)
@@ -497,7 +579,7 @@ def write_tensile_campaign(
     ValueError
         For an empty or duplicated run list.
     """
-    out = _folder(out, runs)
+    out = campaign_folder(out, runs)
     entries, truths = [], {}
     for run in runs:
         write_table(simulate_tensile(run.truth, run.seed), out / run.file, layout=run.layout,
@@ -516,7 +598,7 @@ def write_tensile_campaign(
             "hysteresis_energy_J": [run.truth.hysteresis_energy(k) for k in cycles],
         }
     text = run_sheet_text(campaign, [run.chain for run in runs], entries)
-    return _write_sheet_and_truth(out, campaign, text, truths)
+    return write_sheet_and_truth(out, campaign, text, truths)
 
 
 def write_pull_campaign(
@@ -556,7 +638,7 @@ def write_pull_campaign(
     ValueError
         For an empty or duplicated run list.
     """
-    out = _folder(out, runs)
+    out = campaign_folder(out, runs)
     entries, truths = [], {}
     for run in runs:
         table = simulate_pull(run.truth, run.seed)
@@ -575,7 +657,7 @@ def write_pull_campaign(
                           **run.truth.summary()}
     text = run_sheet_text(campaign, [run.chain for run in runs], entries,
                           chain_settings=limits)
-    return _write_sheet_and_truth(out, campaign, text, truths)
+    return write_sheet_and_truth(out, campaign, text, truths)
 
 
 def write_engagement_campaign(
@@ -606,7 +688,7 @@ def write_engagement_campaign(
     ValueError
         For an empty or duplicated run list.
     """
-    out = _folder(out, runs)
+    out = campaign_folder(out, runs)
     entries, truths, wheels = [], {}, {}
     for run in runs:
         s = run.settings
@@ -623,7 +705,7 @@ def write_engagement_campaign(
         truths[run.id] = {"file": run.file, "format": run.format, "chain": run.chain,
                           "seed": run.seed, **truth}
     text = run_sheet_text(campaign, [run.chain for run in runs], entries, wheels)
-    return _write_sheet_and_truth(out, campaign, text, truths)
+    return write_sheet_and_truth(out, campaign, text, truths)
 
 
 def write_wear_campaign(
@@ -652,7 +734,7 @@ def write_wear_campaign(
     ValueError
         For an empty or duplicated run list.
     """
-    out = _folder(out, runs)
+    out = campaign_folder(out, runs)
     truths = {}
     for run in runs:
         table = simulate_wear(run.truth, run.seed)
@@ -665,4 +747,4 @@ def write_wear_campaign(
                           "length_unit": run.length_unit, "seed": run.seed,
                           "truth": asdict(run.truth), **run.true_lives()}
     text = run_sheet_text(campaign, [run.chain for run in runs], [run.entry() for run in runs])
-    return _write_sheet_and_truth(out, campaign, text, truths)
+    return write_sheet_and_truth(out, campaign, text, truths)

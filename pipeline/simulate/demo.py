@@ -83,8 +83,8 @@ from pipeline.simulate.campaign import (
 )
 from pipeline.simulate.export import SUFFIXES, WEAR_SUFFIXES
 from pipeline.simulate.pull import YIELD_RATIO, PullTruth
-from pipeline.simulate.segment_campaign import write_segment_load_demo
 from pipeline.simulate.roller_campaign import write_roller_demo
+from pipeline.simulate.segment_campaign import write_segment_load_demo
 from pipeline.simulate.tensile import TensileTruth
 from pipeline.simulate.wear import HOUR, WearTruth
 from pipeline.units import to_si

@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import io
 import os
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from datetime import datetime
 from pathlib import Path
 from zipfile import ZIP_DEFLATED, ZipFile, ZipInfo
@@ -490,30 +490,91 @@ def write_wear_table(
     ValueError
         On an unknown layout, language or unit.
     """
-    if layout not in WEAR_LAYOUTS:
-        raise ValueError(f"layout must be one of {', '.join(WEAR_LAYOUTS)}, got {layout!r}")
     if time_unit not in TIME_UNITS:
         raise ValueError(f"time_unit must be one of {', '.join(TIME_UNITS)}, got {time_unit!r}")
-    if layout == "european" and language not in EUROPEAN_ENCODINGS:
-        raise ValueError(f"language must be one of {', '.join(EUROPEAN_ENCODINGS)}")
     _check_units(force_unit, length_unit)
     units = {"time": time_unit, "cycles": "1", "length": length_unit,
              "elongation": length_unit, "load": force_unit, "speed": "m/s"}
+    return write_log(table, path, units, WEAR_NAMES, layout=layout, language=language,
+                     encoding=encoding, preamble=preamble)
+
+
+def write_log(table: pd.DataFrame, path: str | Path, units: Mapping[str, str],
+              names: Mapping[str, Mapping[str, str]], *, layout: str, language: str,
+              encoding: str | None = None, preamble: Sequence[tuple[str, str]] = ()) -> Path:
+    """Write the columns of a log (SI) in their units, named and laid out as a machine would.
+
+    The writer of the wear and segment-load logs: one column (or TDMS
+    channel) per role of `units` that `table` has, in the order of `units`.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        The log: one column per role, in SI units [s, m, N, m/s, ...].
+    path : str or Path
+        File to write (replaced atomically if it exists).
+    units : mapping of str to str
+        Role -> the unit its column is written in.
+    names : mapping
+        Naming scheme (``"plain"``, ``"machine"`` and each language of
+        :data:`EUROPEAN_ENCODINGS`) -> role -> column name.
+    layout : str
+        One of :data:`WEAR_LAYOUTS`: the plain scheme's names but for the
+        European layout (the `language`'s) and the machine export (the
+        ``"machine"`` scheme's).
+    language : str
+        Column names and encoding of the European layout: a key of
+        :data:`EUROPEAN_ENCODINGS`.
+    encoding, preamble
+        As for :func:`write_columns` (`encoding` default: the language's for
+        the European layout).
+
+    Returns
+    -------
+    Path
+        The file written.
+
+    Raises
+    ------
+    ValueError
+        On an unknown layout or language.
+    """
+    if layout not in WEAR_LAYOUTS:
+        raise ValueError(f"layout must be one of {', '.join(WEAR_LAYOUTS)}, got {layout!r}")
+    if layout == "european" and language not in EUROPEAN_ENCODINGS:
+        raise ValueError(f"language must be one of {', '.join(EUROPEAN_ENCODINGS)}")
     roles = [role for role in units if role in table.columns]
     values = [from_si(table[role].to_numpy(dtype=float), units[role]) for role in roles]
     scheme = {"european": language, "machine": "machine"}.get(layout, "plain")
-    names = [WEAR_NAMES[scheme][role] for role in roles]
+    columns = [names[scheme][role] for role in roles]
     if layout == "tdms":
-        return _write_tdms(Path(path), names, [units[role] for role in roles], values)
-    return write_columns(Path(path), names, [units[role] for role in roles], values,
+        return write_tdms(Path(path), columns, [units[role] for role in roles], values)
+    return write_columns(Path(path), columns, [units[role] for role in roles], values,
                          layout=layout, preamble=preamble,
                          encoding=encoding or (EUROPEAN_ENCODINGS[language]
                                                if layout == "european" else None))
 
 
-def _write_tdms(path: Path, names: Sequence[str], units: Sequence[str],
-                columns: Sequence[np.ndarray]) -> Path:
-    """Named columns as channels of group :data:`WEAR_TDMS_GROUP`, each with its unit."""
+def write_tdms(path: Path, names: Sequence[str], units: Sequence[str],
+               columns: Sequence[np.ndarray]) -> Path:
+    """Write named columns as the channels of a TDMS file, each with its unit.
+
+    Parameters
+    ----------
+    path : Path
+        File to write (replaced atomically if it exists).
+    names : sequence of str
+        Channel names, in group :data:`WEAR_TDMS_GROUP`.
+    units : sequence of str
+        Each channel's ``unit_string`` (the unit its values are in).
+    columns : sequence of numpy.ndarray
+        Each channel's values [its unit].
+
+    Returns
+    -------
+    Path
+        The file written.
+    """
     from nptdms import ChannelObject, GroupObject, RootObject, TdmsWriter
 
     channels = [ChannelObject(WEAR_TDMS_GROUP, name, np.asarray(values, dtype=float),

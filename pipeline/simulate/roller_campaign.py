@@ -22,13 +22,13 @@ from pipeline.fit.roller_engagement import Sprocket
 from pipeline.simulate.campaign import (
     ENGAGEMENT_WRITERS,
     CampaignSpec,
-    _check_run,
-    _folder,
-    _toml_key,
-    _toml_table,
-    _write_sheet_and_truth,
+    campaign_folder,
     chain_key,
+    check_run,
     run_sheet_text,
+    toml_key,
+    toml_table,
+    write_sheet_and_truth,
 )
 from pipeline.simulate.roller_engagement import (
     CHAIN_16B,
@@ -106,7 +106,7 @@ class RollerRunSpec:
     format: str = "csv"
 
     def __post_init__(self) -> None:
-        _check_run(self.id, self.file)
+        check_run(self.id, self.file)
         if self.format not in ENGAGEMENT_WRITERS:
             raise ValueError(f"run {self.id}: format must be one of "
                              f"{', '.join(ENGAGEMENT_WRITERS)}, got {self.format!r}")
@@ -149,7 +149,7 @@ def write_roller_campaign(out: str | Path, runs: Sequence[RollerRunSpec],
     ValueError
         For an empty or duplicated run list, or two sprockets of one key.
     """
-    out = _folder(out, runs)
+    out = campaign_folder(out, runs)
     sprockets = {run.sprocket.key: run.sprocket for run in runs}
     if len(set(sprockets.values())) != len(sprockets):
         raise ValueError("two different sprockets share a key")
@@ -163,9 +163,9 @@ def write_roller_campaign(out: str | Path, runs: Sequence[RollerRunSpec],
                           "branch": asdict(run.truth.branch), **truth}
     text = run_sheet_text(campaign, [run.chain for run in runs], [])
     for key, sprocket in sprockets.items():
-        text += "\n".join(_toml_table(f"[sprockets.{_toml_key(key)}]", sprocket.table())) + "\n"
-    text += "\n".join(line for run in runs for line in _toml_table("[[runs]]", run.entry()))
-    return _write_sheet_and_truth(out, campaign, text + "\n", truths)
+        text += "\n".join(toml_table(f"[sprockets.{toml_key(key)}]", sprocket.table())) + "\n"
+    text += "\n".join(line for run in runs for line in toml_table("[[runs]]", run.entry()))
+    return write_sheet_and_truth(out, campaign, text + "\n", truths)
 
 
 #: Seed of the ``roller-demo`` campaign.

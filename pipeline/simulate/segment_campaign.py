@@ -21,21 +21,14 @@ import pandas as pd
 
 from pipeline.simulate.campaign import (
     CampaignSpec,
-    _check_run,
-    _folder,
-    _toml_table,
-    _write_sheet_and_truth,
+    campaign_folder,
     chain_key,
+    check_run,
     run_sheet_text,
+    toml_table,
+    write_sheet_and_truth,
 )
-from pipeline.simulate.export import (
-    EUROPEAN_ENCODINGS,
-    FORCE_UNITS,
-    WEAR_LAYOUTS,
-    WEAR_SUFFIXES,
-    _write_tdms,
-    write_columns,
-)
+from pipeline.simulate.export import FORCE_UNITS, WEAR_LAYOUTS, WEAR_SUFFIXES, write_log
 from pipeline.simulate.segment_load import SegmentLoadTruth, simulate_segment_load
 from pipeline.units import from_si
 
@@ -85,22 +78,10 @@ def write_segment_table(table: pd.DataFrame, path: str | Path, *, layout: str = 
     ValueError
         On an unknown layout, unit or language.
     """
-    if layout not in SEGMENT_LAYOUTS:
-        raise ValueError(f"layout must be one of {', '.join(SEGMENT_LAYOUTS)}, got {layout!r}")
     if force_unit not in FORCE_UNITS:
         raise ValueError(f"force_unit must be one of {', '.join(FORCE_UNITS)}")
-    if layout == "european" and language not in EUROPEAN_ENCODINGS:
-        raise ValueError(f"language must be one of {', '.join(EUROPEAN_ENCODINGS)}")
-    roles = [role for role in SEGMENT_NAMES["plain"] if role in table.columns]
-    units = ["s" if role == "time" else force_unit for role in roles]
-    values = [from_si(table[role].to_numpy(dtype=float), unit)
-              for role, unit in zip(roles, units, strict=True)]
-    scheme = {"european": language, "machine": "machine"}.get(layout, "plain")
-    names = [SEGMENT_NAMES[scheme][role] for role in roles]
-    if layout == "tdms":
-        return _write_tdms(Path(path), names, units, values)
-    return write_columns(Path(path), names, units, values, layout=layout,
-                         encoding=EUROPEAN_ENCODINGS[language] if layout == "european" else None)
+    units = {role: "s" if role == "time" else force_unit for role in SEGMENT_NAMES["plain"]}
+    return write_log(table, path, units, SEGMENT_NAMES, layout=layout, language=language)
 
 
 @dataclass(frozen=True)
@@ -162,7 +143,7 @@ class SegmentRunSpec:
     language: str = "pl"
 
     def __post_init__(self) -> None:
-        _check_run(self.id, self.file)
+        check_run(self.id, self.file)
 
     def entry(self, drum: str) -> dict[str, str]:
         """The run's ``[[runs]]`` entry of the run sheet."""
@@ -198,7 +179,7 @@ def write_segment_campaign(out: str | Path, runs: Sequence[SegmentRunSpec], drum
     ValueError
         For an empty or duplicated run list, or runs of different geometries.
     """
-    out = _folder(out, runs)
+    out = campaign_folder(out, runs)
     geometry = {(run.truth.r_outer, run.truth.d, run.truth.groove_width, run.truth.s,
                  run.truth.beta, run.truth.eps_n) for run in runs}
     if len(geometry) > 1:
@@ -217,8 +198,8 @@ def write_segment_campaign(out: str | Path, runs: Sequence[SegmentRunSpec], drum
                           "s": truth.s, "beta": truth.beta}
     text = run_sheet_text(campaign, [run.chain for run in runs],
                           [run.entry(drum.key) for run in runs])
-    text += "\n".join(_toml_table(f"[drums.{drum.key}]", drum.entry(runs[0].truth))) + "\n"
-    return _write_sheet_and_truth(out, campaign, text, truths)
+    text += "\n".join(toml_table(f"[drums.{drum.key}]", drum.entry(runs[0].truth))) + "\n"
+    return write_sheet_and_truth(out, campaign, text, truths)
 
 
 def demo_runs(chain: str, truth: SegmentLoadTruth, levels: Sequence[float],
@@ -265,8 +246,8 @@ def write_segment_load_demo(folder: str | Path) -> Path:
 
     Chain 34x126 on a drum with a groove of 45 mm, true s = 60 mm at
     beta = 50 deg, eps_n = 0 (Paper 003, section 3); five runs of 30 seatings
-    (one a second, logged at 200 Hz) at 50 to 150 kN in five layouts, the last one without the side force. The
-    run sheet declares s = 55 mm and fits s.
+    (one a second, logged at 200 Hz) at 50 to 150 kN in five layouts, the last
+    one without the side force. The run sheet declares s = 55 mm and fits s.
 
     Parameters
     ----------

@@ -100,3 +100,20 @@ def test_mts(realdata, number):
         str(realdata / f"ramonbotella__MTS_data_process_Python__sampledatafiletype{number}.dat"))
     assert (report["layout"], report["delimiter"], report["decimal"]) == ("mts", "\t", ",")
     assert report["machine_cycles"] == 10
+
+
+@pytest.mark.parametrize("kind, header, roles", [
+    ("segment-load", "Czas [s];Siła w łańcuchu [kN];Siła segmentu 1 [kN];Siła segmentu 2 [kN]",
+     ["time", "force", "segment_force_1", "segment_force_2"]),
+    # read as the engagement log chainbench run reads it: time and the branch tension
+    ("roller-engagement", "time [s];force [kN]", ["time", "force"]),
+])
+def test_the_new_kinds_are_checked_as_run_reads_them(tmp_path, kind, header, roles):
+    path = tmp_path / "log.csv"
+    width = header.count(";") + 1
+    rows = "".join(";".join(str(i + column) for column in range(width)) + "\n"
+                   for i in range(20))
+    path.write_text(header + "\n" + rows, encoding="cp1250")
+    report = inspect_json(str(path), "--kind", kind)
+    assert [column["role"] for column in report["columns"]] == roles
+    assert report["columns"][1]["si_unit"] == "N"

@@ -90,6 +90,15 @@ def test_design_checks_of_a_summary_without_chains():
     assert "for its chains." in items[0][0]
 
 
+def test_drum_runs_stand_for_paper_003_instead_of_its_reference_case():
+    drums = xr.Dataset({"segment_contact_ratio": ("segment_point", [0.64])},
+                       coords={"segment_point": ["S1"]})
+    assert design.design_checks(drums) == []
+    none = drums.isel(segment_point=slice(0, 0))  # no drum run processed: the reference again
+    with report_style():
+        assert len(design.design_checks(none)) == 4
+
+
 def test_contact_radius_curves_and_published_points(checks):
     (ax,) = checks[0][1].axes
     assert at(line(ax, "model, ε_n = 0°"), 50) == pytest.approx(48.023, abs=5e-3)
