@@ -724,7 +724,8 @@ def process_campaign(
         result.summary.attrs[INPUT_KEY] = key
         written = _write_summary(result.summary, output)
         try:  # the results are written: a failing report loses nothing but itself
-            report = build_report(output, client=client)
+            report = build_report(output, client=client,
+                                  run_attrs={run_id: current[run_id] for run_id in files})
             result.report = report.page
             written += report.outputs  # the campaign page and every run's page
         except OutputError:

@@ -32,7 +32,7 @@ setting it shows is read from the processed files (the settings through
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from contextlib import suppress
 from dataclasses import dataclass
 from datetime import UTC, datetime
@@ -628,7 +628,8 @@ class Report:
 
 
 def build_report(output_dir: str | Path, created: datetime | None = None,
-                 client: Client | None = None) -> Report:
+                 client: Client | None = None,
+                 run_attrs: Mapping[str, dict[str, Any]] | None = None) -> Report:
     """Build the report of a processed campaign from its processed files alone.
 
     Writes every run's page into ``report-runs/`` (deleting the pages of runs
@@ -646,6 +647,10 @@ def build_report(output_dir: str | Path, created: datetime | None = None,
         Render the campaign page's figures and write the run pages as tasks on
         this dask cluster while this process builds the page's tables (default:
         all in this process).
+    run_attrs : mapping, optional
+        Run id -> the global attributes of its run file, when the caller has
+        just read them (the campaign, from the runs' tasks): those files'
+        attributes are not read again (default: read them all).
 
     Returns
     -------
@@ -664,7 +669,7 @@ def build_report(output_dir: str | Path, created: datetime | None = None,
             "no processed campaign here (summary.nc is missing)", file=summary_path,
             hint="process the campaign first: chainbench run raw/<campaign>")
     summary = read_dataset(summary_path)
-    runs = campaign_runs(output_dir, summary)
+    runs = campaign_runs(output_dir, summary, run_attrs)
     statuses = run_statuses(summary, runs)
     created = created or datetime.now(UTC)
     figures = campaign_figures(summary, runs, client)  # on a cluster: the largest tasks first

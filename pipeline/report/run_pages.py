@@ -22,7 +22,7 @@ portable file names (``<run id>.nc`` is one); links quote them all the same.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -112,16 +112,21 @@ class RunStatus:
     flags: tuple[dict[str, str], ...]  #: its plausibility flags (:func:`plausibility_flags`)
 
 
-def campaign_runs(output_dir: Path, summary: xr.Dataset) -> list[RunFile]:
+def campaign_runs(output_dir: Path, summary: xr.Dataset,
+                  attrs: Mapping[str, dict[str, Any]] | None = None) -> list[RunFile]:
     """The run files the summary was made from (its ``run`` labels), in natural order of ids.
 
     Files of runs since removed from the run sheet, or of earlier attempts of
     runs that failed this time, are not results of this summary and are not shown.
-    Only their global attributes are read.
+    Only their global attributes are read, unless `attrs` (run id -> the global
+    attributes of its file, as just read by the caller) holds them.
     """
-    labels = summary["run"].values if "run" in summary.coords else []
-    runs = [RunFile(path, read_attrs(path))
-            for path in (layout.run_output(output_dir, str(run_id)) for run_id in labels)]
+    labels = [str(run_id) for run_id in summary["run"].values] if "run" in summary.coords else []
+    known = attrs or {}
+    runs = []
+    for run_id in labels:
+        path = layout.run_output(output_dir, run_id)
+        runs.append(RunFile(path, known[run_id] if run_id in known else read_attrs(path)))
     return sorted(runs, key=lambda run: natural_key(run.run_id))
 
 

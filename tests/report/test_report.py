@@ -284,7 +284,7 @@ def test_cli_report_maps_raw_to_processed(lab, monkeypatch):
 
 
 def test_failed_report_keeps_the_results(lab, tmp_path, monkeypatch):
-    def broken(output_dir, created=None, client=None):
+    def broken(output_dir, created=None, client=None, run_attrs=None):
         raise RuntimeError("no figures today")
 
     monkeypatch.setattr("pipeline.campaign.build_report", broken)
@@ -301,7 +301,7 @@ def test_a_failed_rebuild_removes_the_old_report_and_its_pages(lab, tmp_path, mo
     output = shutil.copytree(lab / "processed" / "mini-engagement", tmp_path / "out")
     (output / ".outputs.json").unlink()  # the outputs are rebuilt
 
-    def broken(output_dir, created=None, client=None):
+    def broken(output_dir, created=None, client=None, run_attrs=None):
         raise RuntimeError("no figures today")
 
     monkeypatch.setattr("pipeline.campaign.build_report", broken)
