@@ -80,7 +80,8 @@ def test_a_log_longer_than_a_chunk_is_read_from_its_file_in_chunks_with_the_same
         return reader
 
     monkeypatch.setattr(runs, "open_log", counting)
-    monkeypatch.setattr(runs, "CHUNK_SAMPLES", 3_000)  # the 1 s logs hold 10 001 samples
+    monkeypatch.setattr(runs, "WHOLE_SAMPLES", 3_000)  # the 1 s logs hold 10 001 samples
+    monkeypatch.setattr(runs, "CHUNK_SAMPLES", 3_000)
     chunked = process_campaign(wheel, tmp_path / "chunked")
     assert reads and all(n > 3_000 for n in reads)
     assert chunked.failures == [] and whole.failures == []
