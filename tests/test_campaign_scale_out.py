@@ -9,6 +9,7 @@ scale-out).
 
 from __future__ import annotations
 
+import gc
 import hashlib
 import json
 import os
@@ -62,17 +63,20 @@ def client() -> Iterator:
             yield client
 
 
-def _worker_state(dask_worker) -> tuple[dict[str, str | None], bool, int]:
-    """A worker's environment, whether it has loaded the stages, and its tasks run."""
+def _worker_state(dask_worker) -> tuple[dict[str, str | None], bool, int, int]:
+    """A worker's environment, whether it has loaded the stages, the objects frozen out of
+    its garbage collector, and its tasks run."""
     environment = {name: os.environ.get(name) for name in WORKER_ENVIRONMENT}
-    return environment, "pipeline.runs" in sys.modules, dask_worker.state.executed_count
+    return (environment, "pipeline.runs" in sys.modules, gc.get_freeze_count(),
+            dask_worker.state.executed_count)
 
 
 def test_workers_start_with_one_thread_and_the_stages_loaded(client):
-    (environment, stages_loaded, tasks_run), = client.run(_worker_state).values()
+    (environment, stages_loaded, frozen, tasks_run), = client.run(_worker_state).values()
     assert tasks_run == 0
     assert environment == WORKER_ENVIRONMENT
     assert stages_loaded
+    assert frozen > 100_000  # the stages' objects, out of the collector's passes
 
 
 @pytest.fixture(scope="module")

@@ -24,6 +24,7 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
 from pipeline.cli._output import console, say
+from pipeline.cli._stages import load_stages
 from pipeline.errors import ChainbenchError
 from pipeline.store.freshness import Rerun, current_rerun, write_rerun
 from pipeline.store.layout import RUN_SHEET_NAME
@@ -436,8 +437,9 @@ WORKER_ENVIRONMENT = {"OMP_NUM_THREADS": 1, "OPENBLAS_NUM_THREADS": 1, "MKL_NUM_
 #: thread. xarray writing a run file then takes this process's netCDF lock, as in a serial
 #: run, and not a lock on the cluster (two round trips to the scheduler per variable).
 WORKER_SETTINGS = {"DASK_SCHEDULER": "synchronous"}
-#: What each worker of a local cluster imports once, as it starts: the stages of a run.
-WORKER_PRELOAD = ["pipeline.campaign"]
+#: What each worker of a local cluster imports once, as it starts: the stages of a run,
+#: moved out of the garbage collector's scans (:mod:`pipeline.cli._worker`).
+WORKER_PRELOAD = ["pipeline.cli._worker"]
 
 
 @contextmanager
@@ -530,7 +532,7 @@ def run_command(
 def _process(folder: Path, output_root: Path | None, force: bool, rehash: bool, debug: bool,
              client, as_json: bool) -> CampaignResult:
     """Process one campaign; then record what a re-run with nothing changed prints."""
-    from pipeline.campaign import process_campaign
+    process_campaign = load_stages().process_campaign  # before the run sheet's imports
     from pipeline.runsheet import load_run_sheet
 
     sheet = load_run_sheet(folder)

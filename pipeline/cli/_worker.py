@@ -1,0 +1,24 @@
+"""What each worker of the command line's local dask cluster runs as it starts and stops.
+
+A dask preload (``LocalCluster(preload=...)``): importing this module loads the
+stages once per worker, before its first task, with the garbage collector
+paused and what they created frozen out of its reach
+(:func:`pipeline.cli._stages.load_stages`). As the worker stops, everything
+left is frozen too: the process then exits without the collector's final pass
+over every object (about 0.3 s with the numerical libraries loaded), which the
+cluster's shutdown waits for.
+"""
+
+from __future__ import annotations
+
+import gc
+from typing import Any
+
+from pipeline.cli._stages import load_stages
+
+load_stages()
+
+
+def dask_teardown(worker: Any) -> None:
+    """Freeze everything left, so the worker process exits without a full collection."""
+    gc.freeze()
