@@ -40,9 +40,19 @@ def offset_stride(n_samples: int) -> int:
 
 
 def runs_of(flags: np.ndarray, origin: int = 0) -> Runs:
-    """Runs of set `flags`, as samples of the log (`origin` the sample of ``flags[0]``)."""
-    edges = np.diff(flags.astype(np.int8), prepend=0, append=0)
-    return np.flatnonzero(edges == 1) + origin, np.flatnonzero(edges == -1) + origin
+    """Runs of set `flags`, as samples of the log (`origin` the sample of ``flags[0]``).
+
+    One pass over the flags: a log flags few samples (missing, at an extreme), and the
+    runs are cut from their positions.
+
+    >>> runs_of(np.array([1, 1, 0, 0, 1, 0, 1, 1, 1], dtype=bool), origin=10)
+    (array([10, 14, 16]), array([12, 15, 19]))
+    """
+    flagged = np.flatnonzero(flags)
+    breaks = np.flatnonzero(np.diff(flagged) != 1)
+    starts = np.concatenate([flagged[:1], flagged[breaks + 1]])
+    stops = np.concatenate([flagged[breaks], flagged[-1:]]) + 1
+    return starts + origin, stops + origin
 
 
 def merge_runs(runs: list[Runs]) -> Runs:

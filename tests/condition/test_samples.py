@@ -3,8 +3,16 @@
 from __future__ import annotations
 
 import numpy as np
+from hypothesis import given
+from hypothesis import strategies as st
+from hypothesis.extra.numpy import arrays
 
-from pipeline.condition.samples import clipping_levels, merge_summaries, summarise_samples
+from pipeline.condition.samples import (
+    clipping_levels,
+    merge_summaries,
+    runs_of,
+    summarise_samples,
+)
 
 
 def test_a_chunk_summary_keeps_no_view_of_the_chunk():
@@ -39,3 +47,23 @@ def test_clipping_needs_a_flat_extreme():
     force = np.sin(np.linspace(0, 20, 2000))
     assert clipping_levels(force) == (None, None)
     assert clipping_levels(np.clip(force, -0.5, 0.9)) == (-0.5, 0.9)
+
+
+def _runs_by_walking(flags: np.ndarray) -> tuple[list[int], list[int]]:
+    """Runs of set flags, found sample by sample: the reference for runs_of."""
+    starts, stops = [], []
+    for index, flag in enumerate(flags):
+        if flag and (index == 0 or not flags[index - 1]):
+            starts.append(index)
+        if flag and (index == flags.size - 1 or not flags[index + 1]):
+            stops.append(index + 1)
+    return starts, stops
+
+
+@given(arrays(bool, st.integers(0, 60)), st.integers(0, 10**9))
+def test_runs_are_the_stretches_of_set_flags(flags, origin):
+    starts, stops = runs_of(flags, origin)
+    expected_starts, expected_stops = _runs_by_walking(flags)
+    assert starts.tolist() == [start + origin for start in expected_starts]
+    assert stops.tolist() == [stop + origin for stop in expected_stops]
+    assert starts.dtype == stops.dtype == np.int64
