@@ -4,11 +4,14 @@ Each mode runs ``process_campaign`` with ``force=True`` into a fresh output
 folder, in a fresh process, the modes interleaved round by round (so that load
 from other processes hits them alike), and is cut into phases:
 
-imports
-    the stages (:mod:`pipeline.campaign`), as ``chainbench run`` loads them;
 cluster
     starting the CLI's local cluster (:func:`pipeline.cli.run._dask_client`, the
-    same settings) up to a connected client;
+    same settings) up to a connected client, its workers starting in the
+    background;
+imports
+    the stages (:mod:`pipeline.campaign`), loaded as ``chainbench run`` loads
+    them (:func:`pipeline.cli._stages.load_stages`), after the cluster's start
+    as there, so that they compete with the workers' start-up as there;
 plan
     ``process_campaign`` up to the runs: run sheet, raw-file hashes, input keys;
 runs
@@ -20,7 +23,8 @@ tail
 close
     shutting the cluster down;
 
-and the CPU time (user, system) of the process and of its worker processes.
+and the CPU time (user, system) of the process and of its worker processes, with
+the share of the machine's cores they kept busy over the whole run.
 A mode is ``serial`` (no cluster) or a number of workers; ``ENV=VALUE,...``
 after a colon runs it with those environment variables (e.g. the workers'
 environment for a serial baseline with the same settings, or ``PYTHONPATH`` of
@@ -49,7 +53,7 @@ from typing import Any
 WORKER_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS",
                     "MALLOC_TRIM_THRESHOLD_")
 #: Phases printed, in order.
-PHASES = ("imports", "cluster", "plan", "runs", "summary", "report", "close", "total")
+PHASES = ("cluster", "imports", "plan", "runs", "summary", "report", "close", "total")
 
 
 def _timed(function: Callable[..., Any], record: dict[str, float]) -> Callable[..., Any]:
@@ -84,17 +88,18 @@ def _tasks(stream: list[dict[str, Any]], origin: float) -> dict[str, Any]:
 def profile(mode: str, campaign: str, output: str) -> dict[str, Any]:
     """Process `campaign` into `output` as `mode` (``serial`` or workers), phases timed."""
     start = time.perf_counter()
-    import pipeline.campaign as flow
+    from pipeline.cli._stages import load_stages
     from pipeline.cli.run import _dask_client
 
-    phases = {"imports": time.perf_counter() - start}
     execute: dict[str, float] = {}
     report: dict[str, float] = {}
-    flow._execute = _timed(flow._execute, execute)
-    flow.build_report = _timed(flow.build_report, report)
     figures: dict[str, Any] = {}
     with _dask_client(None if mode == "serial" else int(mode), None) as client:
-        phases["cluster"] = time.perf_counter() - start - phases["imports"]
+        phases = {"cluster": time.perf_counter() - start}
+        flow = load_stages()
+        phases["imports"] = time.perf_counter() - start - phases["cluster"]
+        flow._execute = _timed(flow._execute, execute)
+        flow.build_report = _timed(flow.build_report, report)
         if client is not None:
             from distributed import get_task_stream
 
@@ -141,9 +146,10 @@ def describe(figures: dict[str, Any]) -> str:
     """One line of a measurement: its phases, CPU time and tasks."""
     phases = " ".join(f"{name} {figures['phases'][name]:5.2f}" for name in PHASES)
     cpu = figures["cpu"]
+    busy = sum(cpu.values()) / ((os.cpu_count() or 1) * figures["phases"]["total"])
     line = (f"{figures['mode']:>12}: {phases} | cpu user {cpu['user']:.1f} sys "
             f"{cpu['sys']:.1f}, workers user {cpu['workers_user']:.1f} sys "
-            f"{cpu['workers_sys']:.1f}")
+            f"{cpu['workers_sys']:.1f}, cores busy {busy:.0%}")
     if "compute" in figures:
         line += (f" | first task at {figures['first_task']:.2f} s, compute per worker "
                  + " ".join(f"{seconds:.1f}" for seconds in figures["compute"])
