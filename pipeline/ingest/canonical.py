@@ -394,10 +394,11 @@ def _settle_units(
 
 def _report_missing(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> None:
     for name in table.columns:
-        missing = np.isnan(table[name].to_numpy())
-        count = int(np.count_nonzero(missing))
-        if not count:
+        values = table[name].to_numpy()
+        if not (values.size and np.isnan(values.min())):  # the minimum is NaN if any value is
             continue
+        missing = np.isnan(values)
+        count = int(np.count_nonzero(missing))
         edges = np.diff(np.concatenate(([0], missing.view(np.int8), [0])))
         starts, ends = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)
         longest = int(np.argmax(ends - starts))
@@ -421,25 +422,29 @@ def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tupl
     if "time" not in table or len(table) < 2:
         return None, 0
     steps = np.diff(table["time"].to_numpy())
-    backwards = steps < 0
-    count = int(np.count_nonzero(backwards))
-    if count:
-        first = int(np.argmax(backwards)) + 1
-        warnings.append(f"time: steps back {count} times, first at {raw.where(first)}")
-    repeated = steps == 0
-    if repeated.any():
-        first = int(np.argmax(repeated)) + 1
-        warnings.append(
-            f"time: {int(np.count_nonzero(repeated))} repeated time stamp(s), first at "
-            f"{raw.where(first)}"
-        )
+    count = 0
+    if not steps.min() > 0:  # a step back, a repeat or a missing time: find which
+        backwards = steps < 0
+        count = int(np.count_nonzero(backwards))
+        if count:
+            first = int(np.argmax(backwards)) + 1
+            warnings.append(f"time: steps back {count} times, first at {raw.where(first)}")
+        repeated = steps == 0
+        if repeated.any():
+            first = int(np.argmax(repeated)) + 1
+            warnings.append(
+                f"time: {int(np.count_nonzero(repeated))} repeated time stamp(s), first at "
+                f"{raw.where(first)}"
+            )
     sample = steps[:: max(1, steps.size // 100_000)]
     sample = sample[sample > 0]
     if not sample.size:
         return count == 0, 0
     median = float(np.median(sample))
-    gaps = steps > GAP_FACTOR * median
-    count_gaps = int(np.count_nonzero(gaps))
+    count_gaps = 0
+    if not steps.max() <= GAP_FACTOR * median:  # a gap or a missing time: count the gaps
+        gaps = steps > GAP_FACTOR * median
+        count_gaps = int(np.count_nonzero(gaps))
     if count_gaps:
         first = int(np.argmax(gaps)) + 1
         warnings.append(

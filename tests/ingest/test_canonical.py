@@ -1,10 +1,14 @@
 """Roles, SI units and the layout-independent checks of the canonical table."""
 
+import math
+
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from pipeline.errors import ColumnError, UnitError
-from pipeline.ingest import read_table
+from pipeline.ingest import parse_table, read_table
 
 HEADER = "time [s],force [kN],gauge1 [mm]\n"
 
@@ -123,3 +127,43 @@ def test_engagement_needs_time(write):
 def test_invalid_kind():
     with pytest.raises(ValueError, match="kind"):
         read_table(__file__, kind="fatigue")
+
+
+def _time_warnings_step_by_step(time: list[float]) -> tuple[bool, int, list[str]]:
+    """The time checks of the canonical table, step by step: the reference for the
+    vectorised checks (rows from line 2, under a one-line header)."""
+    steps = [later - earlier for earlier, later in zip(time, time[1:], strict=False)]
+    found = []  # the step into row r (0-based) is on line r + 2
+    back = [line for line, step in enumerate(steps, 3) if step < 0]
+    if back:
+        found.append(f"time: steps back {len(back)} times, first at line {back[0]}")
+    repeated = [line for line, step in enumerate(steps, 3) if step == 0]
+    if repeated:
+        found.append(f"time: {len(repeated)} repeated time stamp(s), first at line "
+                     f"{repeated[0]}")
+    positive = [step for step in steps if step > 0]
+    if not positive:
+        return not back, 0, found
+    median = float(np.median(positive))
+    gaps = [line for line, step in enumerate(steps, 3) if step > 10 * median]
+    if gaps:
+        found.append(f"time: {len(gaps)} gaps longer than 10 x the median step "
+                     f"({median:.3g} s), first before line {gaps[0]}")
+    return not back, len(gaps), found
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(st.sampled_from([1.0, 1.0, 1.0, 0.0, -0.5, 25.0, math.nan]), min_size=2,
+                max_size=30))
+def test_time_checks_agree_with_a_step_by_step_reading(steps):
+    time = [0.0]
+    for step in steps:
+        time.append(math.nan if math.isnan(step) else
+                    (time[-1] if math.isfinite(time[-1]) else len(time)) + step)
+    text = "time [s],force [kN],gauge1 [mm]\n" + "".join(
+        f"{'' if math.isnan(t) else t},1,0\n" for t in time)
+    _, meta = parse_table(text.encode())
+    monotonic, gaps, expected = _time_warnings_step_by_step(time)
+    assert (meta.time_monotonic, meta.time_gaps) == (monotonic, gaps)
+    assert [w for w in meta.warnings
+            if w.startswith("time: ") and "missing values" not in w] == expected
