@@ -29,6 +29,7 @@ row-range reader of :mod:`pipeline.ingest.stream`): the same values either way.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -408,6 +409,22 @@ def _report_missing(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> 
         )
 
 
+def _step_extremes(time: np.ndarray, block: int = 1 << 16) -> tuple[float, float]:
+    """Smallest and largest step of `time` (NaN when a step is NaN), a block at a time, so
+    that no array of every step is made for a log whose steps are all in order."""
+    smallest, largest = math.inf, -math.inf
+    buffer = np.empty(min(block, max(time.size - 1, 0)))
+    for start in range(0, time.size - 1, block):
+        stop = min(start + block, time.size - 1)
+        steps = np.subtract(time[start + 1: stop + 1], time[start:stop],
+                            out=buffer[: stop - start])
+        low, high = float(steps.min()), float(steps.max())
+        if math.isnan(low):
+            return math.nan, math.nan
+        smallest, largest = min(smallest, low), max(largest, high)
+    return smallest, largest
+
+
 def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tuple[bool | None, int]:
     """Report missing values and time problems of `table` in `warnings`.
 
@@ -421,9 +438,11 @@ def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tupl
     _report_missing(table, raw, warnings)
     if "time" not in table or len(table) < 2:
         return None, 0
-    steps = np.diff(table["time"].to_numpy())
+    time = table["time"].to_numpy()
+    smallest, largest = _step_extremes(time)
     count = 0
-    if not steps.min() > 0:  # a step back, a repeat or a missing time: find which
+    if not smallest > 0:  # a step back, a repeat or a missing time: find which
+        steps = np.diff(time)
         backwards = steps < 0
         count = int(np.count_nonzero(backwards))
         if count:
@@ -436,15 +455,16 @@ def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tupl
                 f"time: {int(np.count_nonzero(repeated))} repeated time stamp(s), first at "
                 f"{raw.where(first)}"
             )
-    sample = steps[:: max(1, steps.size // 100_000)]
+    every = max(1, (time.size - 1) // 100_000)
+    sample = time[1::every] - time[:-1:every]  # every n-th step
     sample = sample[sample > 0]
     if not sample.size:
         return count == 0, 0
     median = float(np.median(sample))
-    count_gaps = 0
-    if not steps.max() <= GAP_FACTOR * median:  # a gap or a missing time: count the gaps
-        gaps = steps > GAP_FACTOR * median
-        count_gaps = int(np.count_nonzero(gaps))
+    if largest <= GAP_FACTOR * median:
+        return count == 0, 0
+    gaps = np.diff(time) > GAP_FACTOR * median  # a gap, or a missing time: count the gaps
+    count_gaps = int(np.count_nonzero(gaps))
     if count_gaps:
         first = int(np.argmax(gaps)) + 1
         warnings.append(
