@@ -20,6 +20,7 @@ from collections.abc import Iterator
 from datetime import UTC, datetime
 from pathlib import Path
 
+import dask
 import pytest
 import xarray as xr
 from typer.testing import CliRunner
@@ -63,20 +64,23 @@ def client() -> Iterator:
             yield client
 
 
-def _worker_state(dask_worker) -> tuple[dict[str, str | None], bool, int, int]:
+def _worker_state(dask_worker) -> tuple[dict[str, str | None], bool, int, bool, int]:
     """A worker's environment, whether it has loaded the stages, the objects frozen out of
-    its garbage collector, and its tasks run."""
+    its garbage collector, whether it profiles its tasks, and its tasks run."""
     environment = {name: os.environ.get(name) for name in WORKER_ENVIRONMENT}
     return (environment, "pipeline.runs" in sys.modules, gc.get_freeze_count(),
+            dask.config.get("distributed.worker.profile.enabled"),
             dask_worker.state.executed_count)
 
 
 def test_workers_start_with_one_thread_and_the_stages_loaded(client):
-    (environment, stages_loaded, frozen, tasks_run), = client.run(_worker_state).values()
+    (environment, stages_loaded, frozen, profiling, tasks_run), = client.run(
+        _worker_state).values()
     assert tasks_run == 0
     assert environment == WORKER_ENVIRONMENT
     assert stages_loaded
     assert frozen > 100_000  # the stages' objects, out of the collector's passes
+    assert profiling is False
 
 
 @pytest.fixture(scope="module")

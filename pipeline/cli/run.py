@@ -433,6 +433,11 @@ def _result_json(result: CampaignResult) -> dict:
 #: mmap threshold, so that every array over 128 KiB is mapped and zeroed afresh, and a run
 #: takes twice its serial time (docs/quality.md, scale-out).
 WORKER_ENVIRONMENT = {"OMP_NUM_THREADS": 1, "OPENBLAS_NUM_THREADS": 1, "MKL_NUM_THREADS": 1}
+#: dask settings of a local cluster: its workers' environment (above), and no statistical
+#: profiler in the workers (it samples every running task's stack every 10 ms, 3 to 4 % of
+#: a run's CPU time, for a dashboard the command line does not serve).
+CLUSTER_CONFIG = {"distributed.nanny.pre-spawn-environ": WORKER_ENVIRONMENT,
+                  "distributed.worker.profile.enabled": False}
 #: What each worker sets as it starts: a dask computation inside a task runs in the task's
 #: thread. xarray writing a run file then takes this process's netCDF lock, as in a serial
 #: run, and not a lock on the cluster (two round trips to the scheduler per variable).
@@ -464,7 +469,7 @@ def _dask_client(workers: int | None, scheduler: str | None):
         with Client(scheduler, set_as_default=False) as client:
             yield client
         return
-    with (dask.config.set({"distributed.nanny.pre-spawn-environ": WORKER_ENVIRONMENT}),
+    with (dask.config.set(CLUSTER_CONFIG),
           LocalCluster(n_workers=0, threads_per_worker=1, processes=True,
                        dashboard_address=None, preload=WORKER_PRELOAD,
                        env=WORKER_SETTINGS) as cluster,
