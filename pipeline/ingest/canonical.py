@@ -440,7 +440,7 @@ def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tupl
         return None, 0
     time = table["time"].to_numpy()
     smallest, largest = _step_extremes(time)
-    count = 0
+    count, steps = 0, None  # every step, made only for a log whose extremes show a problem
     if not smallest > 0:  # a step back, a repeat or a missing time: find which
         steps = np.diff(time)
         backwards = steps < 0
@@ -463,7 +463,8 @@ def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tupl
     median = float(np.median(sample))
     if largest <= GAP_FACTOR * median:
         return count == 0, 0
-    gaps = np.diff(time) > GAP_FACTOR * median  # a gap, or a missing time: count the gaps
+    steps = np.diff(time) if steps is None else steps
+    gaps = steps > GAP_FACTOR * median  # a gap, or a missing time: count the gaps
     count_gaps = int(np.count_nonzero(gaps))
     if count_gaps:
         first = int(np.argmax(gaps)) + 1
