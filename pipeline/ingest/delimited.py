@@ -46,6 +46,8 @@ File defects handled in every layout
   number that stops short of the decimals its column always has (``0,`` or
   ``0,0`` where the column writes ``0,000``): dropped with a warning; a
   complete last line without a line end is kept;
+* a time column of clock readings (``14:03:27.125``, ``2024-03-05 14:03:27``):
+  seconds after the first row's (:mod:`pipeline.ingest.clock`);
 * the machine's cycle counter (``Total Cycle Count``) kept as ``cycle_count``;
   columns nobody maps (``Segment ID``) kept out of the table;
 * German, Polish, Spanish and English column names (:mod:`pipeline.ingest.names`).
@@ -59,10 +61,11 @@ from dataclasses import dataclass
 import pyarrow as pa
 
 from pipeline.errors import EmptyFileError, LayoutError
+from pipeline.ingest.clock import ClockColumn
 from pipeline.ingest.names import split_name_unit
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawColumns, RawTable
-from pipeline.ingest.roles import Candidates, find_candidates
+from pipeline.ingest.roles import Candidates, display_name, find_candidates
 from pipeline.ingest.sniff import Head, TableSpec
 from pipeline.ingest.table import TableMetadata
 from pipeline.ingest.textbody import (
@@ -125,14 +128,21 @@ def text_header(
         Run-sheet ``columns`` (see :func:`~pipeline.ingest.roles.find_candidates`).
     """
     names, units = header_columns(spec)
-    return RawColumns(
-        names=names,
-        units=units,
-        candidates=find_candidates(names, units, columns, file=head.name,
-                                   header_line=spec.header_index + 1),
-        metadata=metadata(head, spec, layout, preamble),
-        units_line=units_line(spec),
-    )
+    candidates = find_candidates(names, units, columns, file=head.name,
+                                 header_line=spec.header_index + 1)
+    meta = metadata(head, spec, layout, preamble)
+    clocks = time_clocks(spec, candidates)
+    for index, clock in clocks.items():
+        units[index] = "s"
+        meta.warnings.append(clock.note(display_name(names, index)))
+    return RawColumns(names=names, units=units, candidates=candidates, metadata=meta,
+                      units_line=units_line(spec), clocks=clocks)
+
+
+def time_clocks(spec: TableSpec, candidates: Candidates) -> dict[int, ClockColumn]:
+    """The time columns whose cells are clock readings (:attr:`TableSpec.clocks`)."""
+    return {index: spec.clocks[index] for index in candidates.roles.get("time", [])
+            if index in spec.clocks}
 
 
 def raw_table(
@@ -184,16 +194,17 @@ def body(head: Head, spec: TableSpec) -> Region:
 
 
 def parse_rows(
-    region: Region, spec: TableSpec, found: Candidates
+    region: Region, spec: TableSpec, header: RawColumns
 ) -> tuple[dict[int, pa.ChunkedArray], int, set[int]]:
-    """Parse the rows of `region` with pyarrow (values split by a decimal comma rejoined).
+    """Parse the rows of `region` with pyarrow (values split by a decimal comma rejoined,
+    clock readings turned into seconds).
 
     Returns
     -------
     tuple
         :func:`~pipeline.ingest.textbody.split_table` of the parsed rows.
     """
-    names = header_columns(spec)[0]
+    names, found = header.names, header.candidates
     try:
         table = parse_body(
             region.open(),
@@ -203,6 +214,7 @@ def parse_rows(
             delimiter=spec.delimiter,
             decimal=spec.decimal,
             float_columns=found.indexes(),
+            clocks=header.clocks,
             as_text=spec.pairs,
         )
     except LayoutError as error:
@@ -216,7 +228,7 @@ def parse_rows(
         ) from error
     if spec.pairs:
         table = join_comma_pairs(table, region, names)
-    return split_table(table, found.indexes(), len(names))
+    return split_table(table, found.indexes(), len(names), header.clocks)
 
 
 def read_contiguous(head: Head, spec: TableSpec, header: RawColumns) -> RawTable:
@@ -227,7 +239,7 @@ def read_contiguous(head: Head, spec: TableSpec, header: RawColumns) -> RawTable
     """
     whole = body(head, spec)
     region, truncated = trim_truncated_tail(whole, spec.width, spec.delimiter, spec.decimal)
-    parsed = parse_rows(region, spec, header.candidates)
+    parsed = parse_rows(region, spec, header)
     if spec.pairs:
         header.metadata.warnings.append(PAIRS_WARNING)
     if truncated:

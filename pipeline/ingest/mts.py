@@ -86,8 +86,9 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
         delimiter=spec.delimiter,
         decimal=spec.decimal,
         float_columns=header.candidates.indexes(),
+        clocks=header.clocks,
     )
-    parsed = split_table(table, header.candidates.indexes(), spec.width)
+    parsed = split_table(table, header.candidates.indexes(), spec.width, header.clocks)
     del table
     if truncated:
         header.metadata.warnings.append(truncated_warning(region.line_of(parsed[1])))

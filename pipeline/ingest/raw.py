@@ -8,6 +8,7 @@ from typing import Any
 
 import numpy as np
 
+from pipeline.ingest.clock import ClockColumn
 from pipeline.ingest.roles import Candidates
 from pipeline.ingest.table import TableMetadata
 
@@ -30,6 +31,9 @@ class RawColumns:
         by :func:`~pipeline.ingest.canonical.build`.
     units_line : int or None
         Line of the names or units row, for unit messages.
+    clocks : dict of int -> ClockColumn
+        Time columns written as clock readings, which the reader turns into
+        seconds (their unit is ``"s"``, whatever the run sheet says).
     """
 
     names: list[str]
@@ -37,6 +41,7 @@ class RawColumns:
     candidates: Candidates
     metadata: TableMetadata
     units_line: int | None = None
+    clocks: dict[int, ClockColumn] = field(default_factory=dict)
 
     def header(self) -> RawColumns:
         """These columns without data (the header of a :class:`RawTable`)."""

@@ -9,7 +9,8 @@ left to :mod:`pipeline.ingest.textbody` (pyarrow). The sniffers find:
 * the dialect: the delimiter (tab, ``;``, ``,``, ``|``) and decimal mark that
   make the most rows all-numeric with one field count;
 * the table: the first data row, the names row above it, an optional units
-  row between them and the free-text preamble above the names row.
+  row between them and the free-text preamble above the names row; a cell
+  holding a clock reading (:mod:`pipeline.ingest.clock`) counts as a number.
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from dataclasses import dataclass, field
 import pyarrow.csv as pacsv
 
 from pipeline.errors import EmptyFileError, EncodingError, LayoutError
+from pipeline.ingest.clock import ClockColumn, clock_kind
 from pipeline.ingest.source import Source
 from pipeline.ingest.unitparse import looks_like_unit
 
@@ -123,6 +125,8 @@ class TableSpec:
     pairs : bool
         True if a decimal comma is also the delimiter (``0,5,1,25``): each
         value is two fields.
+    clocks : dict of int -> ClockColumn
+        The columns whose first data cell is a clock reading (``14:03:27.125``).
     """
 
     delimiter: str
@@ -135,6 +139,7 @@ class TableSpec:
     units: list[str | None] = field(default_factory=list)
     preamble: list[str] = field(default_factory=list)
     pairs: bool = False
+    clocks: dict[int, ClockColumn] = field(default_factory=dict)
 
 
 def split_fields(line: str, delimiter: str) -> list[str]:
@@ -364,14 +369,14 @@ def _balance(row: list[str], decimal: str) -> int:
 
 
 def _numeric_row(row: list[str], decimal: str) -> bool:
-    """At least two fields, and more numbers than texts.
+    """At least two fields, and more numbers (or clock readings) than texts.
 
     A text cell is allowed so that a table with a text column (a date, a
     status) is still found; its text column takes no role.
     """
     numbers = texts = 0
     for cell in row:
-        if is_number(cell, decimal):
+        if is_number(cell, decimal) or clock_kind(cell):
             numbers += 1
         elif not is_missing(cell):
             texts += 1
@@ -450,6 +455,9 @@ def find_table(
         )
     names = names + [""] * (columns - len(names))
     units: list[str | None] = [None] * columns
+    clocks = {} if pairs else {index: ClockColumn(kind, cell)
+                               for index, cell in enumerate(rows[data][:columns])
+                               if (kind := clock_kind(cell))}
     if units_index is not None:
         for index, cell in enumerate(rows[units_index][:columns]):
             units[index] = cell.strip().strip("()[]").strip() or None
@@ -464,6 +472,7 @@ def find_table(
         units=units,
         preamble=[line for line in lines[:above] if line.strip()],
         pairs=pairs,
+        clocks=clocks,
     )
 
 

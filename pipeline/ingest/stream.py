@@ -96,7 +96,7 @@ class _TextRows:
         first, lines = self.index.locate(source, start)
         end = self.index.locate(source, stop)[0]
         region = Region(source, first, end, self.spec.data_index + 1 + lines, self.codec)
-        parsed = delimited.parse_rows(region, self.spec, self.header.candidates)
+        parsed = delimited.parse_rows(region, self.spec, self.header)
         return delimited.raw_table(parsed, region, self.header, first_row=start), []
 
 

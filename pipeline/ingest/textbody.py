@@ -9,7 +9,7 @@ wrong) and to turn a row number into a line number for a warning.
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, replace
 from functools import cached_property
 
@@ -19,6 +19,7 @@ import pyarrow.compute as pc
 import pyarrow.csv as pacsv
 
 from pipeline.errors import LayoutError, ValueParseError
+from pipeline.ingest.clock import ClockColumn
 from pipeline.ingest.sniff import NULL_VALUES, is_missing, is_number, split_fields
 from pipeline.ingest.source import Source, contains, text_lines
 
@@ -214,6 +215,7 @@ def parse_body(
     delimiter: str,
     decimal: str,
     float_columns: set[int],
+    clocks: Mapping[int, ClockColumn] | None = None,
     as_text: bool = False,
 ) -> pa.Table:
     """Parse the rows of `source` with pyarrow.
@@ -232,6 +234,9 @@ def parse_body(
         The dialect.
     float_columns : set of int
         Fields parsed as float64; the others are left to pyarrow's inference.
+    clocks : mapping of int -> ClockColumn, optional
+        Fields among `float_columns` written as clock readings, parsed as
+        their :attr:`~pipeline.ingest.clock.ClockColumn.arrow_type` instead.
     as_text : bool
         Read every field as a string (a decimal comma that is also the delimiter;
         see :mod:`pipeline.ingest.delimited`).
@@ -244,19 +249,22 @@ def parse_body(
     Raises
     ------
     ValueParseError
-        A cell of a float column is not a number (line and column named).
+        A cell of a float column is not a number, or a cell of a clock column not
+        a clock reading (line and column named).
     LayoutError
         A row has the wrong number of fields, or pyarrow cannot read the body.
     """
     labels = [column_label(index) for index in range(width)]
     kind = pa.string() if as_text else pa.float64()
+    clocks = {} if as_text or clocks is None else clocks
     read_options = pacsv.ReadOptions(
         column_names=labels,
         encoding=region.codec if region.codec.startswith("utf-16") else "utf8",
     )
     convert_options = pacsv.ConvertOptions(
         column_types={
-            labels[index]: kind for index in (range(width) if as_text else float_columns)
+            labels[index]: clocks[index].arrow_type if index in clocks else kind
+            for index in (range(width) if as_text else float_columns)
         },
         decimal_point=decimal,
         null_values=sorted(NULL_VALUES),
@@ -272,7 +280,7 @@ def parse_body(
             )
     except (pa.ArrowException, UnicodeDecodeError) as error:
         raise locate_defect(
-            region, names, width, delimiter, decimal, float_columns, error
+            region, names, width, delimiter, decimal, float_columns, error, clocks
         ) from error
 
 
@@ -284,8 +292,10 @@ def locate_defect(
     decimal: str,
     float_columns: set[int],
     error: Exception,
+    clocks: Mapping[int, ClockColumn] | None = None,
 ) -> LayoutError | ValueParseError:
     """Find the first line pyarrow could not read and describe it as a typed error."""
+    clocks = clocks or {}
     reported = _INVALID.search(str(error))
     for number, line in region.lines():
         fields = split_fields(line, delimiter)
@@ -297,7 +307,10 @@ def locate_defect(
             )
         for index in sorted(float_columns):
             cell = fields[index]
-            if not (is_number(cell, decimal) or is_missing(cell)):
+            if index in clocks:
+                if not (clocks[index].matches(cell) or is_missing(cell)):
+                    return _bad_clock(region, names, number, index, cell, clocks[index])
+            elif not (is_number(cell, decimal) or is_missing(cell)):
                 return _bad_cell(region, names, number, index, cell, decimal)
     if reported is not None:
         index = int(reported.group(1))
@@ -325,15 +338,28 @@ def _bad_cell(
     )
 
 
+def _bad_clock(
+    region: Region, names: list[str], line: int, index: int, cell: str, clock: ClockColumn
+) -> ValueParseError:
+    return ValueParseError(
+        clock.mismatch(cell), file=region.name, row=line, column=names[index] or f"#{index + 1}",
+        hint="fix or delete the cell (missing values may be left empty or written NaN)",
+    )
+
+
 def split_table(
-    table: pa.Table, floats: set[int], width: int
+    table: pa.Table, floats: set[int], width: int,
+    clocks: Mapping[int, ClockColumn] | None = None,
 ) -> tuple[dict[int, pa.ChunkedArray], int, set[int]]:
     """The float columns of a parsed body, its row count and its other empty fields.
 
-    The caller drops its reference to `table` next, so that
+    Clock columns (`clocks`, among `floats`) become seconds after their first
+    reading. The caller drops its reference to `table` next, so that
     :func:`float_arrays` can free each column as it converts it.
     """
     chunks = {index: table.column(column_label(index)) for index in floats}
+    for index, clock in (clocks or {}).items():
+        chunks[index] = clock.seconds(chunks[index])
     return chunks, table.num_rows, empty_columns(table, set(range(width)) - floats)
 
 

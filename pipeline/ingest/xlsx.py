@@ -10,6 +10,8 @@ File defects handled
 * the table not in ``A1``: empty rows and columns around it are skipped;
 * a preamble, a separate units row, units in brackets in the names row;
 * numbers stored as text, with a ``.`` or ``,`` decimal mark;
+* a time column of clock readings (time cells, or text such as
+  ``14:03:27.125``): seconds after the first row's (:mod:`pipeline.ingest.clock`);
 * a non-numeric cell (error naming the sheet row and the column);
 * empty rows inside the table (skipped), empty cells (NaN);
 * a file that is not a valid workbook (error).
@@ -25,7 +27,8 @@ import numpy as np
 import pandas as pd
 
 from pipeline.errors import EmptyFileError, LayoutError, ValueParseError
-from pipeline.ingest.delimited import header_columns, units_line
+from pipeline.ingest.clock import ClockColumn
+from pipeline.ingest.delimited import header_columns, time_clocks, units_line
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.roles import display_name, find_candidates
@@ -118,6 +121,18 @@ def _to_float(cells: pd.Series, file: str, column: str) -> np.ndarray:
     return values
 
 
+def _clock_seconds(cells: pd.Series, clock: ClockColumn, file: str, column: str) -> np.ndarray:
+    """A time column of clock readings as seconds after the first; raises on another cell."""
+    texts = [_text(value).strip() for value in cells]
+    for position, text in enumerate(texts):
+        if not (is_missing(text) or clock.matches(text)):
+            raise ValueParseError(
+                clock.mismatch(text), file=file, row=int(cells.index[position]) + 1,
+                column=column, hint="fix or delete the cell (missing values may be left empty)",
+            )
+    return clock.seconds_of_texts([None if is_missing(text) else text for text in texts])
+
+
 def parse(
     source: Source, sheet: str | int | None = None, columns: Mapping | None = None
 ) -> RawTable:
@@ -149,6 +164,7 @@ def parse(
                 if line.strip()]
     names, units = header_columns(spec)
     found = find_candidates(names, units, columns, file=file, header_line=spec.header_index + 1)
+    clocks = time_clocks(spec, found)
     body = frame.iloc[spec.data_index:, : len(names)].dropna(axis=0, how="all")
     if body.empty:
         raise EmptyFileError(
@@ -157,7 +173,8 @@ def parse(
         )
     sheet_rows = body.index.to_numpy() + 1
     arrays = {
-        index: _to_float(body.iloc[:, index], file, display_name(names, index))
+        index: _clock_seconds(body.iloc[:, index], clocks[index], file, display_name(names, index))
+        if index in clocks else _to_float(body.iloc[:, index], file, display_name(names, index))
         for index in sorted(found.indexes())
     }
     empty = {
@@ -173,6 +190,9 @@ def parse(
         header_line=spec.header_index + 1,
         first_data_line=int(sheet_rows[0]),
     )
+    for index, clock in clocks.items():
+        units[index] = "s"
+        meta.warnings.append(clock.note(display_name(names, index)))
     return RawTable(
         names=names,
         units=units,
@@ -183,4 +203,5 @@ def parse(
         line_of=lambda row: int(sheet_rows[row]) if 0 <= row < len(sheet_rows) else None,
         empty=empty,
         units_line=units_line(spec),
+        clocks=clocks,
     )

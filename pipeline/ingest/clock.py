@@ -1,0 +1,103 @@
+"""Time columns written as clock readings: times of day and ISO 8601 date-times.
+
+Some loggers stamp each row with the wall-clock time (``14:03:27.125``, or
+``2024-03-05 14:03:27.125``) instead of seconds since the start. Such a column
+is read by pyarrow as a time of day or a timestamp and becomes seconds after
+the first data row's stamp, so that every chunk of a long log counts from the
+same origin. Nothing is guessed:
+
+* only these two forms are read, with ``.`` before the fraction of a second;
+  a date in another order (``05.03.2024``, ``3/5/2024``) stays text, and the
+  column is refused as not a number;
+* a time of day that passes midnight steps back by a day: that is reported as
+  a time step back (:mod:`pipeline.ingest.canonical`), not repaired. A
+  date-time carries its date, so it simply goes on counting.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+import numpy as np
+import pyarrow as pa
+import pyarrow.compute as pc
+
+#: The clock forms read, by kind: a time of day, and an ISO 8601 date and time.
+_FORMS = {
+    "time of day": re.compile(r" *\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
+    "date and time": re.compile(r" *\d{4}-\d{2}-\d{2}[T ]\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
+}
+#: The arrow type each kind is parsed as.
+_ARROW_TYPES = {"time of day": pa.time64("ns"), "date and time": pa.timestamp("ns")}
+#: Nanoseconds per second.
+_NS = 1_000_000_000
+
+
+def clock_kind(text: str) -> str | None:
+    """``"time of day"`` or ``"date and time"`` if `text` is a clock reading, else None.
+
+    Examples
+    --------
+    >>> clock_kind("14:03:27.125"), clock_kind("2024-03-05T14:03:27"), clock_kind("1.5")
+    ('time of day', 'date and time', None)
+    """
+    for kind, form in _FORMS.items():
+        if form.fullmatch(text):
+            return kind
+    return None
+
+
+@dataclass(frozen=True)
+class ClockColumn:
+    """A column of clock readings: their kind and the first data row's reading.
+
+    Attributes
+    ----------
+    kind : str
+        ``"time of day"`` or ``"date and time"`` (see :func:`clock_kind`).
+    first : str
+        The first data row's cell: the origin of the seconds.
+    """
+
+    kind: str
+    first: str
+
+    @property
+    def arrow_type(self) -> pa.DataType:
+        """The type pyarrow parses the column's cells as."""
+        return _ARROW_TYPES[self.kind]
+
+    def seconds(self, readings: pa.ChunkedArray) -> pa.ChunkedArray:
+        """`readings` (parsed as :attr:`arrow_type`) as float64 seconds after :attr:`first`."""
+        return self._after_first(pc.cast(readings, pa.int64()))
+
+    def seconds_of_texts(self, texts: list[str | None]) -> np.ndarray:
+        """Cells written as text (a spreadsheet's), as float64 seconds after :attr:`first`;
+        NaN where a cell is None."""
+        return self._after_first(self._nanoseconds(texts)).to_numpy()
+
+    def _nanoseconds(self, texts: list[str | None]) -> pa.ChunkedArray:
+        """Texts as int64 nanoseconds: since midnight, or since 1970 for a date and time."""
+        column = pc.utf8_trim_whitespace(pa.chunked_array([pa.array(texts, pa.string())]))
+        if self.kind == "time of day":  # arrow casts text to a timestamp, not to a time
+            column = pc.binary_join_element_wise("1970-01-01 ", column, "")
+        return pc.cast(pc.cast(column, pa.timestamp("ns")), pa.int64())
+
+    def _after_first(self, nanoseconds: pa.ChunkedArray) -> pa.ChunkedArray:
+        origin = self._nanoseconds([self.first])[0].as_py()
+        return pc.divide(pc.cast(pc.subtract(nanoseconds, origin), pa.float64()), float(_NS))
+
+    def matches(self, text: str) -> bool:
+        """True if `text` is a clock reading of this column's kind."""
+        return clock_kind(text) == self.kind
+
+    def mismatch(self, text: str) -> str:
+        """The message for a cell `text` of this column that is not a clock reading like it."""
+        return (f"{text.strip()[:40]!r} is not a clock reading like the first row's "
+                f"{self.first.strip()!r}")
+
+    def note(self, name: str) -> str:
+        """What the reader tells the user about column `name`."""
+        return (f"column {name!r} holds clock readings ({self.kind}, first "
+                f"{self.first.strip()!r}): read as seconds after the first row's")

@@ -1,0 +1,123 @@
+"""Time columns of clock readings: read as seconds after the first row's, in every reader."""
+
+import datetime
+
+import numpy as np
+import openpyxl
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from pipeline.errors import ValueParseError
+from pipeline.ingest import read_table
+from pipeline.ingest.clock import ClockColumn, clock_kind
+
+#: 0.25 s steps from 23:59:58.5: the fifth reading is past midnight.
+SECONDS = np.arange(12) * 0.25
+FORCE_KN = 1.0 + np.sin(np.arange(12))
+
+
+def time_of_day(seconds: float, start: float = 86_398.5) -> str:
+    """The reading ``HH:MM:SS.fff`` `seconds` after `start` [s after midnight]."""
+    stamp = datetime.datetime(2024, 3, 5) + datetime.timedelta(seconds=start + seconds)
+    return stamp.strftime("%H:%M:%S.%f")[:-3]
+
+
+def date_and_time(seconds: float, separator: str = " ") -> str:
+    stamp = datetime.datetime(2024, 3, 5, 23, 59, 58, 500_000) + datetime.timedelta(
+        seconds=seconds)
+    return stamp.isoformat(sep=separator, timespec="milliseconds")
+
+
+def log(cells: list[str], header: str = "Time,Load (kN)") -> str:
+    rows = [f"{cell},{force:.6f}" for cell, force in zip(cells, FORCE_KN, strict=True)]
+    return "\n".join([header, *rows]) + "\n"
+
+
+@pytest.mark.parametrize("text, kind", [
+    ("14:03:27", "time of day"), (" 14:03:27.125 ", "time of day"),
+    ("2024-03-05 14:03:27.125", "date and time"), ("2024-03-05T14:03:27", "date and time"),
+    ("4:03:27", None), ("14:03", None), ("05.03.2024 14:03:27", None), ("14:03:27,125", None),
+    ("1.5", None), ("", None),
+])
+def test_clock_kind(text, kind):
+    assert clock_kind(text) == kind
+
+
+@given(st.lists(st.integers(0, 86_399_999), min_size=1, max_size=20))
+def test_a_time_of_day_is_seconds_after_the_first(milliseconds):
+    texts = [time_of_day(ms / 1e3, start=0.0) for ms in milliseconds]
+    seconds = ClockColumn("time of day", texts[0]).seconds_of_texts(texts)
+    expected = (np.array(milliseconds) - milliseconds[0]) / 1e3
+    np.testing.assert_allclose(seconds, expected, rtol=0, atol=1e-9)
+
+
+def test_a_date_and_time_log_counts_on_past_midnight(write):
+    for separator in (" ", "T"):
+        path = write("log.csv", log([date_and_time(s, separator) for s in SECONDS]))
+        table, meta = read_table(path, kind="engagement")
+        np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
+        np.testing.assert_allclose(table["force"], np.round(FORCE_KN, 6) * 1e3)
+        assert meta.time_monotonic
+        (column,) = [c for c in meta.columns if c.role == "time"]
+        assert (column.unit, column.si_unit) == ("s", "s")
+        assert any("holds clock readings (date and time" in w for w in meta.warnings)
+
+
+def test_a_time_of_day_past_midnight_is_reported_as_a_step_back(write):
+    path = write("log.csv", log([time_of_day(s) for s in SECONDS]))
+    table, meta = read_table(path, kind="engagement")
+    expected = np.where(SECONDS < 1.5, SECONDS, SECONDS - 86_400.0)
+    np.testing.assert_allclose(table["time"], expected, rtol=0, atol=1e-9)
+    assert meta.time_monotonic is False
+    assert "time: steps back 1 times, first at line 8" in meta.warnings
+
+
+def test_a_preamble_units_row_and_decimal_comma_around_clock_readings(write):
+    rows = [time_of_day(s, 3600.0) + ";" + f"{force:.3f}".replace(".", ",")
+            for s, force in zip(SECONDS, FORCE_KN, strict=True)]
+    text = "Versuch;12\n\nZeit;Kraft\n;kN\n" + "\n".join(rows) + "\n"
+    table, meta = read_table(write("log.csv", text), kind="engagement")
+    assert (meta.delimiter, meta.decimal) == (";", ",")
+    np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(table["force"], np.round(FORCE_KN, 3) * 1e3)
+
+
+def test_a_cell_that_is_no_clock_reading_is_named(write):
+    cells = [time_of_day(s, 3600.0) for s in SECONDS]
+    cells[6] = "1.5"
+    with pytest.raises(ValueParseError) as caught:
+        read_table(write("log.csv", log(cells)), kind="engagement")
+    assert (caught.value.row, caught.value.column) == (8, "Time")
+    assert caught.value.message == (
+        "'1.5' is not a clock reading like the first row's '01:00:00.000'")
+
+
+def test_a_run_sheet_unit_does_not_rescale_clock_readings(write):
+    path = write("log.csv", log([time_of_day(s, 3600.0) for s in SECONDS]))
+    table, meta = read_table(path, kind="engagement", units={"time": "ms"})
+    np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
+    assert any("unit 'ms' from the run sheet not used" in w for w in meta.warnings)
+
+
+def test_a_clock_column_that_is_not_the_time_is_left_alone(write):
+    cells = [f"{time_of_day(s, 3600.0)},{s:.2f}" for s in SECONDS]
+    text = "Clock,Time [s],Load [kN]\n" + "\n".join(
+        f"{cell},{force:.6f}" for cell, force in zip(cells, FORCE_KN, strict=True)) + "\n"
+    table, meta = read_table(write("log.csv", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
+    assert not any("clock readings" in w for w in meta.warnings)
+
+
+def test_spreadsheet_time_cells(tmp_path):
+    book = openpyxl.Workbook()
+    sheet = book.active
+    sheet.append(["Time", "Load [kN]"])
+    start = datetime.datetime(2024, 3, 5, 23, 59, 58, 500_000)
+    for s, force in zip(SECONDS, FORCE_KN, strict=True):
+        sheet.append([start + datetime.timedelta(seconds=float(s)), float(force)])
+    path = tmp_path / "log.xlsx"
+    book.save(path)
+    table, meta = read_table(path, kind="engagement")
+    np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-6)
+    assert any("holds clock readings (date and time" in w for w in meta.warnings)
