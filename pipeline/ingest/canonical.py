@@ -344,12 +344,12 @@ def _settle_units(
             name = display_name(raw.names, index)
             text, source = raw.units[index], "the file"
             given = sheet_units.get(role)
-            if given and index in raw.clocks:  # read from clock readings: seconds already
+            sheet_text = given[min(position, len(given) - 1)] if given else text
+            if index in raw.clocks and sheet_text != text:  # clock readings: seconds already
                 raw.metadata.warnings.append(
-                    f"column {name!r}: unit {given[0]!r} from the run sheet not used: the "
+                    f"column {name!r}: unit {sheet_text!r} from the run sheet not used: the "
                     "column holds clock readings, read as seconds")
-            elif given:
-                sheet_text = given[min(position, len(given) - 1)]
+            elif given and index not in raw.clocks:
                 if text and sheet_text != text:
                     raw.metadata.warnings.append(
                         f"column {name!r}: unit {sheet_text!r} from the run sheet replaces "

@@ -98,6 +98,8 @@ def test_a_run_sheet_unit_does_not_rescale_clock_readings(write):
     table, meta = read_table(path, kind="engagement", units={"time": "ms"})
     np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
     assert any("unit 'ms' from the run sheet not used" in w for w in meta.warnings)
+    _, meta = read_table(path, kind="engagement", units={"time": "s"})  # as init writes it
+    assert not any("from the run sheet" in w for w in meta.warnings)
 
 
 def test_a_clock_column_that_is_not_the_time_is_left_alone(write):
