@@ -42,6 +42,8 @@ File defects handled in every layout
   under ``time,force``), else an error with a hint;
 * a mixed decimal mark (a ``0.5`` in a decimal-comma file), a non-numeric
   cell, a row with too many or too few fields: an error naming line and column;
+* text lines after the last data row (``Results``, ``Test ended``): left
+  out with a warning;
 * a half-written last line (no line end after it): too few fields, or a last
   number that stops short of the decimals its column always has (``0,`` or
   ``0,0`` where the column writes ``0,000``): dropped with a warning; a
@@ -74,6 +76,7 @@ from pipeline.ingest.textbody import (
     join_comma_pairs,
     parse_body,
     split_table,
+    trim_trailer,
     trim_truncated_tail,
     truncated_warning,
 )
@@ -187,10 +190,19 @@ def require_rows(rows: int, region: Region) -> None:
         )
 
 
-def body(head: Head, spec: TableSpec) -> Region:
-    """The region from the first data row to the end of the file."""
-    return Region(head.source, head.offsets[spec.data_index], head.size, spec.data_index + 1,
-                  head.codec)
+def body(head: Head, spec: TableSpec, warnings: list[str]) -> Region:
+    """The region from the first data row to the end of the table.
+
+    Text lines after the last data row (a results block, an end-of-test line)
+    are left out, with a warning appended to `warnings`
+    (:func:`~pipeline.ingest.textbody.trim_trailer`).
+    """
+    whole = Region(head.source, head.offsets[spec.data_index], head.size, spec.data_index + 1,
+                   head.codec)
+    region, trailer = trim_trailer(whole, spec.width, spec.delimiter, spec.decimal)
+    if trailer is not None:
+        warnings.append(trailer)
+    return region
 
 
 def parse_rows(
@@ -237,7 +249,7 @@ def read_contiguous(head: Head, spec: TableSpec, header: RawColumns) -> RawTable
     A truncated last line is dropped with a warning (see
     :func:`~pipeline.ingest.textbody.trim_truncated_tail`).
     """
-    whole = body(head, spec)
+    whole = body(head, spec, header.metadata.warnings)
     region, truncated = trim_truncated_tail(whole, spec.width, spec.delimiter, spec.decimal)
     parsed = parse_rows(region, spec, header)
     if spec.pairs:

@@ -44,7 +44,7 @@ SINGLE_BYTE_ENCODINGS = ("latin-1", "cp1250")
 
 _LINE = re.compile(r"([^\r\n]*)(\r\n|\r|\n|$)")
 _NON_ASCII = re.compile(r"[^\x00-\x7f]")
-#: Row kinds that belong to the table body (see :func:`_kind`).
+#: Row kinds that belong to the table body (see :func:`row_kind`).
 _DATA_KINDS = ("numeric", "partial", "missing")
 _SPECIALS = r"|[+-]?inf(?:inity)?"  # NaN is a missing value (NULL_VALUES), not a number
 _NUMBER = {
@@ -383,7 +383,7 @@ def _numeric_row(row: list[str], decimal: str) -> bool:
     return len(row) >= 2 and numbers > texts
 
 
-def _kind(row: list[str], line: str, decimal: str) -> str:
+def row_kind(row: list[str], line: str, decimal: str) -> str:
     """``"blank"``, ``"numeric"``, ``"missing"`` (only missing values), ``"partial"``
     (numbers and text: a data row with a bad cell) or ``"text"``. A line of
     delimiters only (``"\t\t"``) is a row of missing values, not a blank line."""
@@ -417,7 +417,7 @@ def find_table(
     limit = FIND_LINES
     while True:
         rows = [split_fields(line, delimiter) for line in lines[:limit]]
-        kinds = [_kind(row, line, decimal) for row, line in zip(rows, lines, strict=False)]
+        kinds = [row_kind(row, line, decimal) for row, line in zip(rows, lines, strict=False)]
         data = _first_data_row(rows, kinds, width, complete=limit >= len(lines))
         if data is not None:
             break

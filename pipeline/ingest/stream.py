@@ -106,7 +106,7 @@ def _text_rows(
     """Index a delimited text log (see the module docstring)."""
     head, spec = sniffed.head, sniffed.spec
     header = layout.header(head, spec, columns)
-    whole = delimited.body(head, spec)
+    whole = delimited.body(head, spec, header.metadata.warnings)
     region, truncated = trim_truncated_tail(whole, spec.width, spec.delimiter, spec.decimal)
     index = index_rows(source, region.start, region.end, head.codec)
     delimited.require_rows(index.rows, region)

@@ -20,7 +20,7 @@ import pyarrow.csv as pacsv
 
 from pipeline.errors import LayoutError, ValueParseError
 from pipeline.ingest.clock import ClockColumn
-from pipeline.ingest.sniff import NULL_VALUES, is_missing, is_number, split_fields
+from pipeline.ingest.sniff import NULL_VALUES, is_missing, is_number, row_kind, split_fields
 from pipeline.ingest.source import Source, contains, text_lines
 
 #: Bytes of the file's end searched for a truncated last line.
@@ -108,6 +108,78 @@ class Region:
         return contains(self.source, patterns, self.start, end)
 
 
+def _tail_lines(region: Region) -> tuple[int, str, list[str], bool]:
+    """The region's last :data:`TAIL_BYTES` as text: where they start, the text, its lines
+    (line ends dropped) and whether the first line may start mid-line."""
+    single_byte = not region.codec.startswith("utf-16")
+    start = max(region.start, region.end - TAIL_BYTES)
+    if not single_byte:
+        start += (start - region.start) % 2
+    raw = region.read(start, region.end)
+    text = raw.decode("latin-1" if single_byte else region.codec, errors="replace")
+    return start, text, re.split(r"\r\n|\r|\n", text), start > region.start
+
+
+def _byte_length(text: str, codec: str) -> int:
+    return len(text) if not codec.startswith("utf-16") else len(text.encode(codec))
+
+
+def trim_trailer(
+    region: Region, width: int, delimiter: str, decimal: str
+) -> tuple[Region, str | None]:
+    """Cut text lines after the table off the region: a results block, an end-of-test line.
+
+    The lines after the last data row (a row of `width` fields, mostly numbers)
+    are a trailer if the first of them that is not blank holds no number at
+    all (``Results``, ``Test ended``): they are left out, and a warning names
+    them. Anything else after the last data row (a row with a bad cell or too
+    few fields) is left to the parser, which reports it. Only the last
+    :data:`TAIL_BYTES` of the region are searched.
+
+    Returns
+    -------
+    region : Region
+        The region without the trailer.
+    warning : str or None
+        What was left out, or None if there is no trailer.
+    """
+    start, text, lines, cut_first = _tail_lines(region)
+    after = []  # (offset in text, line) of the lines after the last data row, last first
+    offset = len(text)
+    for position in range(len(lines) - 1, -1, -1):
+        line = lines[position]
+        offset -= len(line)
+        fields = split_fields(line, delimiter)
+        if row_kind(fields, line, decimal) == "numeric" and len(fields) == width:
+            break
+        if position == 0 and cut_first:
+            return region, None
+        after.append((offset, line))
+        offset -= _line_end_length(text, offset)
+    else:
+        return region, None
+    shown = [line for _, line in reversed(after) if line.strip()]
+    if not shown or not _is_text(shown[0], delimiter, decimal):
+        return region, None
+    cut = replace(region, end=start + _byte_length(text[: after[-1][0]], region.codec))
+    return cut, (f"{len(shown)} line(s) after the last data row left out, from "
+                 f"{shown[0].strip()[:40]!r}: not data rows")
+
+
+def _is_text(line: str, delimiter: str, decimal: str) -> bool:
+    """True if no field of `line` is a number (with either decimal mark) and one is text."""
+    fields = split_fields(line, delimiter)
+    return row_kind(fields, line, decimal) == "text" and not any(
+        is_number(field, mark) for field in fields for mark in ".,")
+
+
+def _line_end_length(text: str, offset: int) -> int:
+    """Length of the line end just before `offset` in `text` (0 at its start)."""
+    if offset >= 2 and text[offset - 2: offset] == "\r\n":
+        return 2
+    return 1 if offset >= 1 and text[offset - 1] in "\r\n" else 0
+
+
 def trim_truncated_tail(
     region: Region, width: int, delimiter: str, decimal: str
 ) -> tuple[Region, bool]:
@@ -136,22 +208,16 @@ def trim_truncated_tail(
     truncated : bool
         True if a line was cut off.
     """
-    single_byte = not region.codec.startswith("utf-16")
-    start = max(region.start, region.end - TAIL_BYTES)
-    if not single_byte:
-        start += (start - region.start) % 2
-    raw = region.read(start, region.end)
-    text = raw.decode("latin-1" if single_byte else region.codec, errors="replace")
+    start, text, lines, cut_first = _tail_lines(region)
     body = text.rstrip("\r\n")
-    lines = re.split(r"\r\n|\r|\n", body)
     if len(body) < len(text) or not lines[-1]:
         return region, False
-    complete = lines[1 if start > region.start else 0 : -1]  # the first may start mid-line
+    complete = lines[1 if cut_first else 0 : -1]  # the first may start mid-line
     rows = [split_fields(line, delimiter) for line in complete if line]
     if not _is_half_written(split_fields(lines[-1], delimiter), rows, width, decimal):
         return region, False
     kept = body[: len(body) - len(lines[-1])]
-    end = start + (len(kept) if single_byte else len(kept.encode(region.codec)))
+    end = start + _byte_length(kept, region.codec)
     return replace(region, end=end), True
 
 
