@@ -161,7 +161,7 @@ def settle(
         keys = " or ".join(f"columns = {{{SHEET_KEY[role]} = \"...\"}}" for role in group)
         problems.report(next((rejected[role] for role in group if role in rejected), None)
                         or ColumnError(
-            f"no {' or '.join(group)} column found (a {kind} run needs {needs})",
+            f"no {' or '.join(group)} column found ({kind} runs need {needs})",
             file=meta.file, row=raw.units_line,
             hint=f"name it in the run sheet, {keys}; "
             "the file has: " + ", ".join(display_name(raw.names, i)
