@@ -28,6 +28,13 @@ _FORMS = {
     "time of day": re.compile(r" *\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
     "date and time": re.compile(r" *\d{4}-\d{2}-\d{2}[T ]\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
 }
+#: Anything with hours and minutes: a clock reading, read or not.
+_CLOCK_LIKE = re.compile(r"\d{1,2}:\d{2}")
+#: The hint for a clock reading in a form that is not read.
+UNREAD_FORM_HINT = (
+    "the column holds clock readings in a form the reader does not guess (it reads "
+    "HH:MM:SS.fff with two-digit hours and YYYY-MM-DD HH:MM:SS.fff): export the time in "
+    "seconds, or name another time column in the run sheet")
 #: The arrow type each kind is parsed as.
 _ARROW_TYPES = {"time of day": pa.time64("ns"), "date and time": pa.timestamp("ns")}
 #: Nanoseconds per second.
@@ -46,6 +53,15 @@ def clock_kind(text: str) -> str | None:
         if form.fullmatch(text):
             return kind
     return None
+
+
+def looks_like_clock(text: str) -> bool:
+    """True if `text` holds hours and minutes (``5:14 PM``, ``05.03.2024 14:03``).
+
+    >>> looks_like_clock("3/5/2024 2:03:27 PM"), looks_like_clock("1.5")
+    (True, False)
+    """
+    return _CLOCK_LIKE.search(text) is not None
 
 
 @dataclass(frozen=True)

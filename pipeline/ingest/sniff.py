@@ -10,7 +10,8 @@ left to :mod:`pipeline.ingest.textbody` (pyarrow). The sniffers find:
   make the most rows all-numeric with one field count;
 * the table: the first data row, the names row above it, an optional units
   row between them and the free-text preamble above the names row; a cell
-  holding a clock reading (:mod:`pipeline.ingest.clock`) counts as a number.
+  holding a clock reading (:mod:`pipeline.ingest.clock`) counts as a number, so
+  that a time column in a form that is not read is refused as such.
 """
 
 from __future__ import annotations
@@ -25,7 +26,7 @@ from dataclasses import dataclass, field
 import pyarrow.csv as pacsv
 
 from pipeline.errors import EmptyFileError, EncodingError, LayoutError
-from pipeline.ingest.clock import ClockColumn, clock_kind
+from pipeline.ingest.clock import ClockColumn, clock_kind, looks_like_clock
 from pipeline.ingest.source import Source
 from pipeline.ingest.unitparse import looks_like_unit
 
@@ -369,14 +370,14 @@ def _balance(row: list[str], decimal: str) -> int:
 
 
 def _numeric_row(row: list[str], decimal: str) -> bool:
-    """At least two fields, and more numbers (or clock readings) than texts.
+    """At least two fields, and more numbers (or clock readings, read or not) than texts.
 
     A text cell is allowed so that a table with a text column (a date, a
     status) is still found; its text column takes no role.
     """
     numbers = texts = 0
     for cell in row:
-        if is_number(cell, decimal) or clock_kind(cell):
+        if is_number(cell, decimal) or looks_like_clock(cell):
             numbers += 1
         elif not is_missing(cell):
             texts += 1

@@ -19,7 +19,7 @@ import pyarrow.compute as pc
 import pyarrow.csv as pacsv
 
 from pipeline.errors import LayoutError, ValueParseError
-from pipeline.ingest.clock import ClockColumn
+from pipeline.ingest.clock import UNREAD_FORM_HINT, ClockColumn, looks_like_clock
 from pipeline.ingest.sniff import NULL_VALUES, is_missing, is_number, row_kind, split_fields
 from pipeline.ingest.source import Source, contains, text_lines
 
@@ -396,6 +396,7 @@ def _bad_cell(
         f"the file's decimal mark is {decimal!r} but this cell uses {other!r}: "
         "re-export with one decimal mark"
         if is_number(cell, other)
+        else UNREAD_FORM_HINT if looks_like_clock(cell)
         else "fix or delete the cell (missing values may be left empty or written NaN)"
     )
     return ValueParseError(

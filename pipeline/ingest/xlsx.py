@@ -27,7 +27,7 @@ import numpy as np
 import pandas as pd
 
 from pipeline.errors import EmptyFileError, LayoutError, ValueParseError
-from pipeline.ingest.clock import ClockColumn
+from pipeline.ingest.clock import UNREAD_FORM_HINT, ClockColumn, looks_like_clock
 from pipeline.ingest.delimited import header_columns, time_clocks, units_line
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
@@ -116,7 +116,8 @@ def _to_float(cells: pd.Series, file: str, column: str) -> np.ndarray:
         raise ValueParseError(
             f"{text[:40]!r} is not a number",
             file=file, row=int(cells.index[position]) + 1, column=column,
-            hint="fix or delete the cell (missing values may be left empty)",
+            hint=UNREAD_FORM_HINT if looks_like_clock(text)
+            else "fix or delete the cell (missing values may be left empty)",
         )
     return values
 

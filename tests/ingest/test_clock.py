@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 from pipeline.errors import ValueParseError
 from pipeline.ingest import read_table
-from pipeline.ingest.clock import ClockColumn, clock_kind
+from pipeline.ingest.clock import UNREAD_FORM_HINT, ClockColumn, clock_kind
 
 #: 0.25 s steps from 23:59:58.5: the fifth reading is past midnight.
 SECONDS = np.arange(12) * 0.25
@@ -125,3 +125,12 @@ def test_spreadsheet_time_cells(tmp_path, cell, kind):
     table, meta = read_table(path, kind="engagement")
     np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-6)
     assert any(f"holds clock readings ({kind}" in w for w in meta.warnings)
+
+
+@pytest.mark.parametrize("cell", ["0:00:01.500", "05.03.2024 14:03:27", "2:03:27 PM"])
+def test_a_clock_form_not_read_is_refused_with_what_is_read(write, cell):
+    with pytest.raises(ValueParseError) as caught:  # two columns: found as a table all the same
+        read_table(write("log.csv", log([cell] * len(SECONDS))), kind="engagement")
+    assert (caught.value.row, caught.value.column) == (2, "Time")
+    assert caught.value.message == f"{cell!r} is not a number"
+    assert caught.value.hint == UNREAD_FORM_HINT
