@@ -134,18 +134,24 @@ def text_header(
     candidates = find_candidates(names, units, columns, file=head.name,
                                  header_line=spec.header_index + 1)
     meta = metadata(head, spec, layout, preamble)
-    clocks = time_clocks(spec, candidates)
-    for index, clock in clocks.items():
-        units[index] = "s"
-        meta.warnings.append(clock.note(display_name(names, index)))
+    clocks = time_clocks(spec, candidates, names, units, meta.warnings)
     return RawColumns(names=names, units=units, candidates=candidates, metadata=meta,
                       units_line=units_line(spec), clocks=clocks)
 
 
-def time_clocks(spec: TableSpec, candidates: Candidates) -> dict[int, ClockColumn]:
-    """The time columns whose cells are clock readings (:attr:`TableSpec.clocks`)."""
-    return {index: spec.clocks[index] for index in candidates.roles.get("time", [])
-            if index in spec.clocks}
+def time_clocks(spec: TableSpec, candidates: Candidates, names: list[str],
+                units: list[str | None], warnings: list[str]) -> dict[int, ClockColumn]:
+    """The time columns whose cells are clock readings (:attr:`TableSpec.clocks`).
+
+    Their unit in `units` becomes ``"s"`` (the reader turns them into
+    seconds), and a note for each goes into `warnings`.
+    """
+    clocks = {index: spec.clocks[index] for index in candidates.roles.get("time", [])
+              if index in spec.clocks}
+    for index, clock in clocks.items():
+        units[index] = "s"
+        warnings.append(clock.note(display_name(names, index)))
+    return clocks
 
 
 def raw_table(

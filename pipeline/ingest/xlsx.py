@@ -165,7 +165,6 @@ def parse(
                 if line.strip()]
     names, units = header_columns(spec)
     found = find_candidates(names, units, columns, file=file, header_line=spec.header_index + 1)
-    clocks = time_clocks(spec, found)
     body = frame.iloc[spec.data_index:, : len(names)].dropna(axis=0, how="all")
     if body.empty:
         raise EmptyFileError(
@@ -173,6 +172,8 @@ def parse(
             file=file, row=spec.data_index + 1, hint="the sheet holds no measurements",
         )
     sheet_rows = body.index.to_numpy() + 1
+    notes: list[str] = []
+    clocks = time_clocks(spec, found, names, units, notes)
     arrays = {
         index: _clock_seconds(body.iloc[:, index], clocks[index], file, display_name(names, index))
         if index in clocks else _to_float(body.iloc[:, index], file, display_name(names, index))
@@ -190,10 +191,8 @@ def parse(
         sheet=sheet_name,
         header_line=spec.header_index + 1,
         first_data_line=int(sheet_rows[0]),
+        warnings=notes,
     )
-    for index, clock in clocks.items():
-        units[index] = "s"
-        meta.warnings.append(clock.note(display_name(names, index)))
     return RawTable(
         names=names,
         units=units,
