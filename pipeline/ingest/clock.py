@@ -1,10 +1,10 @@
 """Time columns written as clock readings: times of day and ISO 8601 date-times.
 
 Some loggers stamp each row with the wall-clock time (``14:03:27.125``, or
-``2024-03-05 14:03:27.125``) instead of seconds since the start. Such a column
-is read by pyarrow as a time of day or a timestamp and becomes seconds after
-the first data row's stamp, so that every chunk of a long log counts from the
-same origin. Nothing is guessed:
+``2024-03-05 14:03:27.125``, or a TDMS timestamp channel) instead of seconds
+since the start. Such a column is read by pyarrow (or npTDMS) as a time of day
+or a timestamp and becomes seconds after the first data row's stamp, so that
+every chunk of a long log counts from the same origin. Nothing is guessed:
 
 * only these two forms are read, with ``.`` before the fraction of a second;
   a date in another order (``05.03.2024``, ``3/5/2024``) stays text, and the
@@ -85,8 +85,9 @@ class ClockColumn:
         return _ARROW_TYPES[self.kind]
 
     def seconds(self, readings: pa.ChunkedArray) -> pa.ChunkedArray:
-        """`readings` (parsed as :attr:`arrow_type`) as float64 seconds after :attr:`first`."""
-        return self._after_first(pc.cast(readings, pa.int64()))
+        """`readings` (times of day or timestamps, any resolution) as float64 seconds after
+        :attr:`first`."""
+        return self._after_first(pc.cast(pc.cast(readings, self.arrow_type), pa.int64()))
 
     def seconds_of_texts(self, texts: list[str | None]) -> np.ndarray:
         """Cells written as text (a spreadsheet's), as float64 seconds after :attr:`first`;

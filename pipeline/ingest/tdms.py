@@ -19,6 +19,8 @@ File defects handled
   fails with a message saying so);
 * channels of unequal length (cut to the shortest, with a warning);
 * empty channels (dropped, noted), sentinel values (NaN);
+* a time channel of timestamps (LabVIEW's ``Get Date/Time``): seconds after its
+  first sample, with a note (:mod:`pipeline.ingest.clock`);
 * a non-numeric channel given a role (error);
 * a file that is not valid TDMS, or holds no channel or no sample (error);
 * a truncated file (a copy or an acquisition stopped early), found by walking
@@ -36,9 +38,11 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 
 import numpy as np
+import pyarrow as pa
 from nptdms import TdmsFile
 
 from pipeline.errors import ColumnError, EmptyFileError, LayoutError
+from pipeline.ingest.clock import ClockColumn
 from pipeline.ingest.librarylogs import collected_logs
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import Candidates, find_candidates
@@ -151,8 +155,10 @@ def _open(source: Source, cut: str | None) -> TdmsFile:
         ) from error
 
 
-def _numeric(channel, file: str, name: str, cut: str | None, rows: slice) -> np.ndarray:
-    """Samples of a channel as float64.
+def _numeric(channel, file: str, name: str, cut: str | None, rows: slice,
+             clock: ClockColumn | None = None) -> np.ndarray:
+    """Samples of a channel as float64 (a timestamp channel's as seconds after `clock`'s
+    first).
 
     Parameters
     ----------
@@ -166,6 +172,8 @@ def _numeric(channel, file: str, name: str, cut: str | None, rows: slice) -> np.
         The file's :func:`truncation`.
     rows : slice
         The samples to read.
+    clock : ClockColumn, optional
+        For a time channel of timestamps: its first sample.
 
     Raises
     ------
@@ -184,6 +192,8 @@ def _numeric(channel, file: str, name: str, cut: str | None, rows: slice) -> np.
             detail, file=file, column=name,
             hint="the file may be truncated: copy it from the rig again",
         ) from error
+    if clock is not None and data.dtype.kind == "M":
+        return clock.seconds(pa.chunked_array([pa.array(data)])).to_numpy()
     if data.dtype.kind not in "iuf":
         raise ColumnError(
             f"channel holds {data.dtype} values, not numbers",
@@ -251,7 +261,8 @@ class Layout:
         channels = _channels(tdms)
         names, file = self.header.names, self.header.metadata.file
         arrays = {index: _numeric(channels[index], file, names[index], self.cut,
-                                  slice(start, stop)) for index in self.channels}
+                                  slice(start, stop), self.header.clocks.get(index))
+                  for index in self.channels}
         if self.waveform is not None:
             arrays[self.waveform.column] = self.waveform.times(start, stop)
         return self.header.table(arrays=arrays, rows=stop - start, line_of=lambda row: None,
@@ -318,11 +329,22 @@ def describe(tdms: TdmsFile, file: str, columns: Mapping | None, cut: str | None
             waveform = Waveform(len(names) - 1, float(properties.get("wf_start_offset", 0.0)),
                                 float(properties["wf_increment"]))
             roles["time"] = [waveform.column]
+    clocks = _timestamp_clocks(channels, roles.get("time", []), rows)
+    for index, clock in clocks.items():
+        units[index] = "s"
+        meta.warnings.append(clock.note(names[index]))
     header = RawColumns(names=names, units=units, candidates=Candidates(roles, found.explicit),
-                        metadata=meta)
+                        metadata=meta, clocks=clocks)
     empty = {index for index, channel in enumerate(channels)
              if index not in read and len(channel) == 0}
     return Layout(header, rows, read, waveform, empty, cut)
+
+
+def _timestamp_clocks(channels: list, times: list[int], rows: int) -> dict[int, ClockColumn]:
+    """The time channels that hold timestamps, each with its first sample."""
+    return {index: ClockColumn("date and time", str(channels[index][0:1][0]))
+            for index in times
+            if index < len(channels) and rows and channels[index].dtype.kind == "M"}
 
 
 def parse(source: Source, columns: Mapping | None = None) -> RawTable:

@@ -272,3 +272,13 @@ def test_clock_readings_count_from_the_file_first_row_in_every_range(write, inde
     reader, meta = assert_opens_as_read(path, kind="engagement")
     table, _ = reader.read(20, 30)
     np.testing.assert_allclose(table["time"], np.arange(20, 30) * 0.125, rtol=0, atol=1e-9)
+
+
+def test_a_tdms_timestamp_channel_counts_from_its_first_sample_in_every_range(tmp_path,
+                                                                              tdms_writer):
+    stamps = np.datetime64("2024-03-05T10:00:00", "us") + np.arange(30) * np.timedelta64(250, "us")
+    path = tdms_writer(tmp_path / "stamps.tdms", {
+        "Time": (stamps, {}), "Force": (np.arange(30.0), {"unit_string": "N"})}, segments=3)
+    reader, _ = assert_opens_as_read(path, kind="engagement")
+    np.testing.assert_allclose(reader.read(20, 30)[0]["time"], np.arange(20, 30) * 250e-6,
+                               rtol=0, atol=1e-12)

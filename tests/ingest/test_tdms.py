@@ -155,3 +155,19 @@ def test_segment_whose_length_was_never_written(segmented, tmp_path):
     pd.testing.assert_frame_equal(table, whole)
     assert any("truncated (segment 3 incomplete, its length never written)" in warning
                for warning in meta.warnings)
+
+
+def test_a_time_channel_of_timestamps_becomes_seconds_after_its_first(tdms):
+    start = np.datetime64("2024-03-05T23:59:59.990", "us")
+    steps = np.arange(40) * 2_500  # 400 Hz, across midnight
+    path = tdms({"Rig": {"Time": (start + steps.astype("timedelta64[us]"), {}),
+                         "Branch tension": (np.linspace(1.0, 2.0, 40), {"unit_string": "kN"})}})
+    table, meta = read_table(path, kind="engagement")
+    np.testing.assert_allclose(table["time"], steps * 1e-6, rtol=0, atol=1e-9)
+    assert meta.time_monotonic
+    assert ("column 'Rig/Time' holds clock readings (date and time, first "
+            "'2024-03-05T23:59:59.990000'): read as seconds after the first row's") in meta.warnings
+    text = tdms({"Rig": {"Time": (np.array(["a", "b"]), {}),
+                         "Branch tension": (np.ones(2), {"unit_string": "kN"})}}, "text.tdms")
+    with pytest.raises(ColumnError, match="not numbers"):
+        read_table(text, kind="engagement")
