@@ -3,8 +3,9 @@
 The format comes from the first bytes (zip magic: ``.xlsx``; ``TDSm``:
 TDMS), then from the name's suffix; anything else is delimited text, whose
 layout is recognised from its sniffed head (:data:`TEXT_LAYOUTS`, tried in
-order). :func:`~pipeline.ingest.read_table`, :func:`~pipeline.ingest.parse_table`
-and :func:`~pipeline.ingest.open_log` all choose their reader here.
+order; a LabVIEW measurement file by its first line).
+:func:`~pipeline.ingest.read_table`, :func:`~pipeline.ingest.parse_table` and
+:func:`~pipeline.ingest.open_log` all choose their reader here.
 """
 
 from __future__ import annotations
@@ -14,13 +15,15 @@ from dataclasses import dataclass
 from pathlib import PurePath
 
 from pipeline.errors import LayoutError
-from pipeline.ingest import canonical, delimited, mts, tdms, xlsx
+from pipeline.ingest import canonical, delimited, lvm, mts, tdms, xlsx
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.sniff import Head, TableSpec, detect_dialect, find_table, read_head
 from pipeline.ingest.source import Source
 
-#: Text layouts, in the order they are tried on a file.
-TEXT_LAYOUTS = {mts.LAYOUT: mts, **{layout.name: layout for layout in delimited.LAYOUTS}}
+#: Text layouts, in the order they are tried on a file (a LabVIEW measurement file is
+#: known by its first line, before its table is looked for).
+TEXT_LAYOUTS = {lvm.LAYOUT: lvm, mts.LAYOUT: mts,
+                **{layout.name: layout for layout in delimited.LAYOUTS}}
 
 #: Values of ``format``: auto-detection, a file format, or one text layout.
 FORMATS = ("auto", "csv", "xlsx", "tdms", *TEXT_LAYOUTS)
@@ -85,6 +88,8 @@ def sniff(source: Source, format: str = "auto") -> Sniffed:
     if layout in ("xlsx", "tdms"):
         return Sniffed(layout)
     head = read_head(source)
+    if layout == lvm.LAYOUT or (layout == "csv" and lvm.matches(head)):
+        return Sniffed(lvm.LAYOUT, head, lvm.table_spec(head))
     delimiter, decimal, width = detect_dialect(head.lines, source.name)
     spec = find_table(head.lines, source.name, delimiter, decimal, width)
     if layout == "csv":

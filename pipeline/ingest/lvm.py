@@ -1,0 +1,182 @@
+"""LabVIEW measurement files (``.lvm``), as the Write To Measurement File express VI writes them.
+
+Example (tab-separated; the header lines are ``tag<TAB>value``)::
+
+    LabVIEW Measurement
+    Writer_Version   2
+    Separator        Tab
+    Decimal_Separator    .
+    X_Columns        One
+    ***End_of_Header***
+
+    Channels         2
+    Y_Unit_Label     N           mm
+    X_Dimension      Time        Time
+    X0               0.0E+0      0.0E+0
+    Delta_X          0.010000    0.010000
+    ***End_of_Header***
+    X_Value          Force       Extension   Comment
+    0.000000         1.234       0.001
+
+The file header says the delimiter (``Separator``: ``Tab`` or ``Comma``), the
+decimal mark (``Decimal_Separator``, ``.`` when absent) and the X column
+(``X_Columns``); the segment header gives each channel's unit
+(``Y_Unit_Label``) and the X axis (``X_Dimension``, ``X0``, ``Delta_X``).
+
+File defects handled
+--------------------
+* ``X_Columns One``: the first column holds the X values; an X axis of
+  ``Time`` is the time in seconds;
+* ``X_Columns No``: the first field of every row is empty, and the time is
+  ``X0 + Delta_X * i`` of the first channel;
+* the ``Comment`` column of the names row, which data rows leave out;
+* a decimal comma (``Decimal_Separator ,``), either separator;
+* everything the delimited readers handle in the rows themselves
+  (:mod:`pipeline.ingest.delimited`): missing values, a truncated last line,
+  text after the last row.
+
+Refused, with a hint: ``X_Columns Multi`` (an X column per channel), and a file
+of several segments (a header again after the rows).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+
+from pipeline.errors import LayoutError
+from pipeline.ingest.delimited import read_contiguous, text_header
+from pipeline.ingest.preamble import parse_preamble
+from pipeline.ingest.raw import RawTable
+from pipeline.ingest.sniff import Head, TableSpec, split_fields
+from pipeline.ingest.source import contains
+
+LAYOUT = "lvm"
+
+#: The first line of every LabVIEW measurement file.
+MAGIC = "LabVIEW Measurement"
+#: The line that ends the file header and each segment header.
+END_OF_HEADER = "***End_of_Header***"
+#: Delimiters by the name the ``Separator`` tag gives them.
+SEPARATORS = {"tab": "\t", "comma": ","}
+#: The X column of a file whose rows carry none (``X_Columns No``): time from X0 and Delta_X.
+TIME_NAME = "Time"
+
+
+def matches(head: Head, spec: TableSpec | None = None) -> bool:
+    """True for a file whose first line is ``LabVIEW Measurement``."""
+    return bool(head.lines) and head.lines[0].lstrip("\ufeff").startswith(MAGIC)
+
+
+def _tags(lines: list[str], delimiter: str) -> dict[str, list[str]]:
+    """``tag -> values`` of header lines (the first occurrence of each tag)."""
+    tags: dict[str, list[str]] = {}
+    for line in lines:
+        fields = [field.strip() for field in split_fields(line, delimiter)]
+        if fields and fields[0]:
+            tags.setdefault(fields[0], [field for field in fields[1:] if field])
+    return tags
+
+
+def _headers(head: Head) -> list[int]:
+    """Indexes of the head's ``***End_of_Header***`` lines."""
+    return [index for index, line in enumerate(head.lines)
+            if line.strip().split("\t")[0].split(",")[0].strip() == END_OF_HEADER]
+
+
+def _delimiter(head: Head, first_end: int) -> str:
+    """The file header's ``Separator`` (tab when it says none)."""
+    for line in head.lines[:first_end]:
+        for delimiter in ("\t", ","):
+            fields = [field.strip() for field in line.split(delimiter)]
+            if len(fields) > 1 and fields[0] == "Separator":
+                separator = fields[1].lower()
+                if separator not in SEPARATORS:
+                    raise LayoutError(
+                        f"separator {fields[1]!r} is not read", file=head.name,
+                        hint="write the file with the Tab or Comma separator")
+                return SEPARATORS[separator]
+    return "\t"
+
+
+def table_spec(head: Head) -> TableSpec:
+    """Where the table of a LabVIEW measurement file sits, and its dialect and units.
+
+    Raises
+    ------
+    LayoutError
+        If the headers are incomplete, the file has an X column per channel,
+        or it holds several segments.
+    """
+    ends = _headers(head)
+    if len(ends) < 2 or ends[1] + 2 > len(head.lines):
+        raise LayoutError(
+            "the file header or the segment header does not end (no second "
+            f"{END_OF_HEADER} line followed by the names row)", file=head.name,
+            hint="the file may be cut short: copy it again from the rig")
+    delimiter = _delimiter(head, ends[0])
+    file_tags = _tags(head.lines[: ends[0]], delimiter)
+    segment = _tags(head.lines[ends[0] + 1: ends[1]], delimiter)
+    x_columns = (file_tags.get("X_Columns") or ["One"])[0]
+    if x_columns.lower() == "multi":
+        raise LayoutError(
+            "X_Columns Multi (an X column for every channel) is not read", file=head.name,
+            row=ends[0], hint="write the file with one X column (X_Columns One) or none")
+    names_index = ends[1] + 1
+    data_index = names_index + 1
+    data_lines = [line for line in head.lines[data_index:] if line.strip()]
+    if not data_lines:
+        raise LayoutError("no data rows after the segment header", file=head.name,
+                          row=data_index + 1, hint="the acquisition wrote no samples")
+    if len(ends) > 2 or contains(head.source, (END_OF_HEADER.encode(head.codec),),
+                                 head.offsets[data_index], head.size):
+        raise LayoutError(
+            "the file holds several segments, each with its own header", file=head.name,
+            row=(ends[2] + 1) if len(ends) > 2 else None,
+            hint="write one header only (Segment Headers: One header only), or split the file")
+    width = len(split_fields(data_lines[0], delimiter))
+    names = [field.strip() for field in split_fields(head.lines[names_index], delimiter)]
+    while len(names) > width and names[-1] in ("Comment", ""):
+        names.pop()
+    names += [""] * (width - len(names))
+    time_axis = (segment.get("X_Dimension") or [""])[0].lower() == "time"
+    if time_axis and names[0] == "X_Value":
+        names[0] = TIME_NAME
+    labels = segment.get("Y_Unit_Label", [])
+    units = [("s" if time_axis else None), *labels[: width - 1]]
+    units += [None] * (width - len(units))
+    return TableSpec(
+        delimiter=delimiter,
+        decimal=(file_tags.get("Decimal_Separator") or ["."])[0],
+        names=names,
+        header_index=names_index,
+        units_index=None,
+        data_index=data_index,
+        width=width,
+        units=[unit or None for unit in units],
+        preamble=[line for line in head.lines[:names_index]
+                  if line.strip() and line.strip() != END_OF_HEADER],
+    )
+
+
+def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTable:
+    """Read a LabVIEW measurement file sniffed as `head` / `spec` (see the module docstring)."""
+    preamble = parse_preamble(spec.preamble, spec.delimiter)
+    header = text_header(head, spec, LAYOUT, preamble, columns)
+    raw = read_contiguous(head, spec, header)
+    if preamble.get("X_Columns", "").lower() == "no" and 0 in raw.arrays:
+        start, step = _axis(preamble, spec.decimal, head.name)
+        raw.arrays[0] = start + step * np.arange(raw.rows)
+    return raw
+
+
+def _axis(preamble: dict[str, str], decimal: str, file: str) -> tuple[float, float]:
+    """``X0`` and ``Delta_X`` of the first channel."""
+    try:
+        return tuple(float(preamble[tag].split()[0].replace(decimal, "."))
+                     for tag in ("X0", "Delta_X"))
+    except (KeyError, ValueError, IndexError) as error:
+        raise LayoutError(
+            "X_Columns No, but the segment header gives no X0 and Delta_X to build the time from",
+            file=file, hint="write the file with its X column (X_Columns One)") from error

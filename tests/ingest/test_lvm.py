@@ -1,0 +1,103 @@
+"""LabVIEW measurement files: dialect, units and time from their headers."""
+
+import numpy as np
+import pytest
+
+from pipeline.errors import LayoutError
+from pipeline.ingest import open_log, read_table
+
+TIME = np.arange(40) * 0.01
+FORCE_N = 500.0 * np.abs(np.sin(2 * np.pi * TIME))
+EXTENSION_MM = FORCE_N / 2e4
+
+
+def lvm(*, x_columns="One", decimal=".", separator="Tab", units=("N", "mm"), x0="0.5",
+        rows=None, segment_again=False, multi=False) -> str:
+    """A LabVIEW measurement file of force and extension (`units` None: no Y_Unit_Label)."""
+    d = "\t" if separator == "Tab" else ","
+
+    def line(*fields):
+        return d.join(fields)
+
+    def num(value, digits=6):
+        return f"{value:.{digits}f}".replace(".", decimal)
+
+    segment = [line("Channels", "2", ""), line("Samples", "40", "40", ""),
+               line("Date", "2024/03/05", "2024/03/05", ""),
+               line("X_Dimension", "Time", "Time", ""),
+               line("X0", x0.replace(".", decimal), x0.replace(".", decimal), ""),
+               line("Delta_X", num(0.01), num(0.01), ""), "***End_of_Header***"]
+    if units is not None:
+        segment.insert(3, line("Y_Unit_Label", *units, ""))
+    head = ["LabVIEW Measurement", line("Writer_Version", "2"), line("Separator", separator),
+            line("Decimal_Separator", decimal), line("Multi_Headings", "No"),
+            line("X_Columns", "Multi" if multi else x_columns), line("Operator", "lab"),
+            "***End_of_Header***", "", *segment,
+            line("X_Value", "Force", "Extension", "Comment")]
+    first = (lambda t: [num(t)]) if x_columns == "One" else (lambda t: [""])
+    body = rows if rows is not None else [
+        line(*first(t), num(f), num(e)) for t, f, e in zip(TIME, FORCE_N, EXTENSION_MM,
+                                                           strict=True)]
+    tail = ["", *segment, line("X_Value", "Force", "Extension", "Comment"), *body] \
+        if segment_again else []
+    return "\r\n".join([*head, *body, *tail]) + "\r\n"
+
+
+def test_x_column_units_and_preamble_from_the_headers(write):
+    table, meta = read_table(write("log.lvm", lvm()), kind="engagement")
+    assert (meta.layout, meta.delimiter, meta.decimal) == ("lvm", "\t", ".")
+    np.testing.assert_allclose(table["time"], TIME, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(table["force"], np.round(FORCE_N, 6))
+    np.testing.assert_allclose(table["gauge_1"], np.round(EXTENSION_MM, 6) * 1e-3)
+    assert [(c.name, c.unit) for c in meta.columns] == [
+        ("Time", "s"), ("Force", "N"), ("Extension", "mm")]
+    assert (meta.preamble["Operator"], meta.preamble["X_Columns"]) == ("lab", "One")
+    assert meta.warnings == []
+
+
+@pytest.mark.parametrize("separator", ["Tab", "Comma"])
+def test_no_x_column_time_from_x0_and_delta_x_with_a_decimal_comma(write, separator):
+    decimal = "," if separator == "Tab" else "."
+    text = lvm(x_columns="No", decimal=decimal, separator=separator)
+    table, meta = read_table(write("log.lvm", text), kind="engagement")
+    assert meta.decimal == decimal
+    np.testing.assert_allclose(table["time"], 0.5 + TIME, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(table["force"], np.round(FORCE_N, 6))
+    reader = open_log(write("long.lvm", text), kind="engagement")
+    np.testing.assert_allclose(reader.read(30, 40)[0]["time"], 0.5 + TIME[30:], atol=1e-12)
+
+
+def test_without_unit_labels_the_run_sheet_gives_the_units(write):
+    path = write("log.lvm", lvm(units=None))
+    with pytest.raises(Exception, match="no unit for the force column"):
+        read_table(path)
+    table, _ = read_table(path, units={"force": "kN", "gauges": "mm"})
+    np.testing.assert_allclose(table["force"], np.round(FORCE_N, 6) * 1e3)
+
+
+@pytest.mark.parametrize("options, message", [
+    ({"multi": True}, "X_Columns Multi"),
+    ({"segment_again": True}, "several segments"),
+])
+def test_what_is_not_read_is_refused_with_a_hint(write, options, message):
+    with pytest.raises(LayoutError, match=message) as caught:
+        read_table(write("log.lvm", lvm(**options)))
+    assert caught.value.hint
+
+
+def test_a_header_that_does_not_end_is_refused(write):
+    text = lvm().split("***End_of_Header***")[0]
+    with pytest.raises(LayoutError, match="does not end"):
+        read_table(write("log.lvm", text))
+
+
+def test_a_csv_that_mentions_labview_later_is_not_an_lvm(write):
+    text = "time [s],force [kN],gauge [mm]\n0,1,0.1\n1,2,0.2\nLabVIEW Measurement,,\n"
+    _, meta = read_table(write("log.csv", text))
+    assert meta.layout == "plain_csv"
+
+
+def test_a_second_segment_past_the_sniffed_head_is_refused_too(write):
+    rows = [f"{i * 0.01:.6f}\t{i % 7:.6f}\t{i % 5:.6f}" for i in range(6000)]  # ~150 KB
+    with pytest.raises(LayoutError, match="several segments"):
+        read_table(write("log.lvm", lvm(rows=rows, segment_again=True)))
