@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import pyarrow as pa
@@ -101,9 +102,14 @@ class ClockColumn:
             column = pc.binary_join_element_wise("1970-01-01 ", column, "")
         return pc.cast(pc.cast(column, pa.timestamp("ns")), pa.int64())
 
+    @cached_property
+    def _origin(self) -> int:
+        """:attr:`first` in nanoseconds, parsed once (every row range subtracts it)."""
+        return self._nanoseconds([self.first])[0].as_py()
+
     def _after_first(self, nanoseconds: pa.ChunkedArray) -> pa.ChunkedArray:
-        origin = self._nanoseconds([self.first])[0].as_py()
-        return pc.divide(pc.cast(pc.subtract(nanoseconds, origin), pa.float64()), float(_NS))
+        return pc.divide(pc.cast(pc.subtract(nanoseconds, self._origin), pa.float64()),
+                         float(_NS))
 
     def matches(self, text: str) -> bool:
         """True if `text` is a clock reading of this column's kind."""
@@ -118,3 +124,12 @@ class ClockColumn:
         """What the reader tells the user about column `name`."""
         return (f"column {name!r} holds clock readings ({self.kind}, first "
                 f"{self.first.strip()!r}): read as seconds after the first row's")
+
+
+def declare_seconds(clocks: dict[int, ClockColumn], names: list[str], units: list[str | None],
+                    warnings: list[str]) -> None:
+    """Give each clock column of `clocks` the unit ``"s"`` in `units` (the reader turns it
+    into seconds) and a note in `warnings`."""
+    for index, clock in clocks.items():
+        units[index] = "s"
+        warnings.append(clock.note(names[index] or f"column {index + 1}"))

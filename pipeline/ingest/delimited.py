@@ -63,11 +63,11 @@ from dataclasses import dataclass
 import pyarrow as pa
 
 from pipeline.errors import EmptyFileError, LayoutError
-from pipeline.ingest.clock import ClockColumn
+from pipeline.ingest.clock import ClockColumn, declare_seconds
 from pipeline.ingest.names import split_name_unit
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawColumns, RawTable
-from pipeline.ingest.roles import Candidates, display_name, find_candidates
+from pipeline.ingest.roles import Candidates, find_candidates
 from pipeline.ingest.sniff import Head, TableSpec
 from pipeline.ingest.table import TableMetadata
 from pipeline.ingest.textbody import (
@@ -148,9 +148,7 @@ def time_clocks(spec: TableSpec, candidates: Candidates, names: list[str],
     """
     clocks = {index: spec.clocks[index] for index in candidates.roles.get("time", [])
               if index in spec.clocks}
-    for index, clock in clocks.items():
-        units[index] = "s"
-        warnings.append(clock.note(display_name(names, index)))
+    declare_seconds(clocks, names, units, warnings)
     return clocks
 
 

@@ -60,7 +60,7 @@ MAGIC = "LabVIEW Measurement"
 END_OF_HEADER = "***End_of_Header***"
 #: Delimiters by the name the ``Separator`` tag gives them.
 SEPARATORS = {"tab": "\t", "comma": ","}
-#: The X column of a file whose rows carry none (``X_Columns No``): time from X0 and Delta_X.
+#: The name given to the X column when the X axis is time (``X_Dimension Time``).
 TIME_NAME = "Time"
 
 
@@ -162,20 +162,20 @@ def table_spec(head: Head) -> TableSpec:
 
 def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTable:
     """Read a LabVIEW measurement file sniffed as `head` / `spec` (see the module docstring)."""
-    preamble = parse_preamble(spec.preamble, spec.delimiter)
-    header = text_header(head, spec, LAYOUT, preamble, columns)
+    header = text_header(head, spec, LAYOUT, parse_preamble(spec.preamble, spec.delimiter),
+                         columns)
     raw = read_contiguous(head, spec, header)
-    if preamble.get("X_Columns", "").lower() == "no" and 0 in raw.arrays:
-        start, step = _axis(preamble, spec.decimal, head.name)
+    tags = _tags(spec.preamble, spec.delimiter)
+    if (tags.get("X_Columns") or [""])[0].lower() == "no" and 0 in raw.arrays:
+        start, step = _axis(tags, spec.decimal, head.name)
         raw.arrays[0] = start + step * np.arange(raw.rows)
     return raw
 
 
-def _axis(preamble: dict[str, str], decimal: str, file: str) -> tuple[float, float]:
+def _axis(tags: dict[str, list[str]], decimal: str, file: str) -> tuple[float, float]:
     """``X0`` and ``Delta_X`` of the first channel."""
     try:
-        return tuple(float(preamble[tag].split()[0].replace(decimal, "."))
-                     for tag in ("X0", "Delta_X"))
+        return tuple(float(tags[tag][0].replace(decimal, ".")) for tag in ("X0", "Delta_X"))
     except (KeyError, ValueError, IndexError) as error:
         raise LayoutError(
             "X_Columns No, but the segment header gives no X0 and Delta_X to build the time from",

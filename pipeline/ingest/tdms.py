@@ -42,7 +42,7 @@ import pyarrow as pa
 from nptdms import TdmsFile
 
 from pipeline.errors import ColumnError, EmptyFileError, LayoutError
-from pipeline.ingest.clock import ClockColumn
+from pipeline.ingest.clock import ClockColumn, declare_seconds
 from pipeline.ingest.librarylogs import collected_logs
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import Candidates, find_candidates
@@ -330,9 +330,7 @@ def describe(tdms: TdmsFile, file: str, columns: Mapping | None, cut: str | None
                                 float(properties["wf_increment"]))
             roles["time"] = [waveform.column]
     clocks = _timestamp_clocks(channels, roles.get("time", []), rows)
-    for index, clock in clocks.items():
-        units[index] = "s"
-        meta.warnings.append(clock.note(names[index]))
+    declare_seconds(clocks, names, units, meta.warnings)
     header = RawColumns(names=names, units=units, candidates=Candidates(roles, found.explicit),
                         metadata=meta, clocks=clocks)
     empty = {index for index, channel in enumerate(channels)
