@@ -30,6 +30,11 @@ all in ``<project>/processed/<campaign id>/`` (``raw/`` is only read).
   its raw file (when no stored result needs the hash first), processes the run,
   writes its run file and reads back what the summary needs; the reused runs'
   read-back and the report's run pages are tasks too (:mod:`pipeline.tasks`).
+  A long engagement log (cut into chunks) comes back from its first task
+  opened, and this process submits its chunks' scans and fits, the merges and
+  the run's storing as tasks ahead of the runs still queued
+  (:func:`pipeline.engagement_log.submit_analysis`): the tasks never wait on
+  one another inside a worker.
 """
 
 from __future__ import annotations
@@ -38,6 +43,7 @@ import hashlib
 import json
 from collections.abc import Iterator
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -47,6 +53,7 @@ import xarray as xr
 from pipeline.acceptance import limits_si
 from pipeline.catalog import chain as catalog_chain
 from pipeline.compare import ChainInput, impact_summary, specimen_summary, stiffness_summary
+from pipeline.engagement_log import LogAnalysis, analyse_job, submit_analysis
 from pipeline.errors import ChainbenchError, FitError, OutputError
 from pipeline.fit.impact_model import ImpactModelFit, fit_impact_model
 from pipeline.fit.stiffness import SpecimenStiffness
@@ -66,12 +73,15 @@ from pipeline.results.notes import run_notes
 from pipeline.results.tensile import STRENGTH_VARIABLES
 from pipeline.roller_summary import roller_row, roller_summary
 from pipeline.runs import (
+    ENGAGEMENT_KINDS,
+    OpenedLog,
     Progress,
     chain_stiffness_for,
+    engagement_run_result,
     existing_run_file,
+    open_engagement_run,
     operating_point,
     process_engagement_run,
-    process_roller_engagement_run,
     process_segment_load_run,
     process_tensile_run,
     process_wear_run,
@@ -102,8 +112,6 @@ INPUT_KEY = "input_key"
 #: The ``[campaign]`` fields a run's dataset records (its provenance): the only ones in
 #: a run's input key, so that editing the title or the band redoes no run.
 RUN_CAMPAIGN_FIELDS = {"id", "machine", "synthetic"}
-#: Kinds of run that need the chain stiffness E0 (:func:`chain_stiffness_for`).
-STIFFNESS_KINDS = ("engagement", "roller-engagement")
 #: How a text cell that a spreadsheet would run as a formula begins.
 FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
 
@@ -199,7 +207,7 @@ def _plan(sheet: RunSheet, run: RunDef, output: Path, hashes: HashCache, hash_no
           ) -> _Plan:
     """The plan of `run`; its raw file hashed now when `hash_now` (else only when cached)."""
     raw = existing_run_file(sheet, run)
-    E0 = chain_stiffness_for(sheet, run, output) if run.kind in STIFFNESS_KINDS else None
+    E0 = chain_stiffness_for(sheet, run, output) if run.kind in ENGAGEMENT_KINDS else None
     inputs = {
         "entry": sheet.entries[run.id], "E0": E0,
         "chain": sheet.chains[run.chain].model_dump(mode="json"),
@@ -231,8 +239,6 @@ def _run_result(sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float | None,
         return process_tensile_run(sheet, run, raw_sha256, progress)
     if run.kind == "wear":
         return process_wear_run(sheet, run, raw_sha256, progress)
-    if run.kind == "roller-engagement":
-        return process_roller_engagement_run(sheet, run, raw_sha256, E0, progress)
     if run.kind == "segment-load":
         return process_segment_load_run(sheet, run, raw_sha256, progress)
     return process_engagement_run(sheet, run, raw_sha256, E0, progress)
@@ -250,21 +256,54 @@ class _Done:
     hashed: HashedFile | None  #: the raw file, when the run hashed it
 
 
-def _process(plan: _Plan, *, sheet: RunSheet, output: Path,
-             progress: Progress | None = None) -> _Done:
+@dataclass(frozen=True)
+class _LongLog:
+    """An engagement run whose log is cut into chunks, opened by its first task: the main
+    process submits the steps of its chunks as tasks (:func:`_execute`)."""
+
+    plan: _Plan
+    opened: OpenedLog
+    raw_sha256: str
+    hashed: HashedFile | None
+
+
+def _process(plan: _Plan, *, sheet: RunSheet, output: Path, progress: Progress | None = None,
+             split: bool = False) -> _Done | _LongLog:
     """Hash the raw file (unless known), process one run, store its result and read it back.
 
-    A dask task when a client is given: the worker reads the raw file and writes
-    the run file; only `_Done` comes back.
+    A dask task when a client is given (`split`): the worker reads the raw file and
+    writes the run file; only `_Done` comes back. An engagement log cut into chunks
+    comes back opened instead (:class:`_LongLog`), its chunks' steps to be tasks too.
     """
     hashed = None if plan.raw_sha256 is not None else hash_file(plan.raw)
     raw_sha256 = plan.raw_sha256 or hashed.sha256
-    dataset = _run_result(sheet, plan.run, raw_sha256, plan.E0, progress).to_dataset()
+    if split and plan.run.kind in ENGAGEMENT_KINDS:
+        opened = open_engagement_run(sheet, plan.run, raw_sha256, plan.E0)
+        if len(opened.job.chunks) > 1:
+            return _LongLog(plan, opened, raw_sha256, hashed)
+        result = engagement_run_result(opened, analyse_job(opened.job))
+    else:
+        result = _run_result(sheet, plan.run, raw_sha256, plan.E0, progress)
+    return _store(result, plan, raw_sha256, hashed, sheet=sheet, output=output)
+
+
+def _finish_long_log(analysis: LogAnalysis, long: _LongLog, *, sheet: RunSheet,
+                     output: Path) -> _Done:
+    """The last task of a long log: its result from the log's analysis, stored, read back."""
+    return _store(engagement_run_result(long.opened, analysis), long.plan, long.raw_sha256,
+                  long.hashed, sheet=sheet, output=output)
+
+
+def _store(result: RunResult, plan: _Plan, raw_sha256: str, hashed: HashedFile | None, *,
+           sheet: RunSheet, output: Path) -> _Done:
+    """Write a run's result under its key and read back what the summary needs."""
+    dataset = result.to_dataset()
     key = dataset.attrs[INPUT_KEY] = plan.key(raw_sha256)
     path = write_atomic(dataset, layout.run_output(output, plan.run.id))
-    del dataset
+    del dataset, result
     return _Done(path, read_attrs(path), _read_back((plan.run, path, plan.E0), sheet=sheet),
                  key, hashed)
+
 
 def _failure(sheet: RunSheet, run: RunDef, error: Exception, debug: bool) -> RunFailure:
     """`error` of `run` as a recorded failure; an output that cannot be written is no fault
@@ -291,7 +330,8 @@ def run_failure(sheet: RunSheet, run: RunDef | None, error: Exception) -> RunFai
 def _execute(sheet: RunSheet, plans: list[_Plan], output: Path, progress: Progress | None,
              debug: bool, client: Client | None) -> tuple[dict[str, _Done], list[RunFailure]]:
     """Process `plans` serially, or as dask tasks on `client`, the largest raw files first
-    (the short runs fill in at the end, so that the workers finish together)."""
+    (the short runs fill in at the end, so that the workers finish together). On a
+    cluster, a long engagement log's chunks are tasks that go before the runs queued."""
     done, failures = {}, []
     if client is None:
         for plan in plans:
@@ -303,12 +343,21 @@ def _execute(sheet: RunSheet, plans: list[_Plan], output: Path, progress: Progre
     from distributed import as_completed
 
     shared = client.scatter(sheet, broadcast=True, hash=False) if plans else None
-    futures = {client.submit(_process, plan, sheet=shared, output=output, pure=False): plan
+    task = partial(client.submit, sheet=shared, output=output, pure=False)
+    futures = {task(_process, plan, split=True): plan
                for plan in sorted(plans, key=lambda plan: plan.raw_bytes, reverse=True)}
-    for future in as_completed(futures, loop=client.loop):  # the client need not be the default
-        plan = futures[future]
+    queue = as_completed(futures, loop=client.loop)  # the client need not be the default
+    for future in queue:
+        plan = futures.pop(future)
         try:
-            done[plan.run.id] = future.result()
+            outcome = future.result()
+            if isinstance(outcome, _LongLog):  # its chunks go before the runs still queued
+                analysis = submit_analysis(outcome.opened.job, client, priority=1)
+                finish = task(_finish_long_log, analysis, outcome, priority=1)
+                futures[finish] = plan
+                queue.add(finish)
+                continue
+            done[plan.run.id] = outcome
         except Exception as error:
             failures.append(_failure(sheet, plan.run, error, debug))
         if progress:
@@ -790,7 +839,7 @@ def _checked_results(sheet: RunSheet, output: Path, progress: Progress | None,
     run is checked)."""
     for run in sheet.runs:
         try:
-            E0 = chain_stiffness_for(sheet, run, output) if run.kind in STIFFNESS_KINDS else None
+            E0 = chain_stiffness_for(sheet, run, output) if run.kind in ENGAGEMENT_KINDS else None
             result = _run_result(sheet, run, "", E0, progress)
         except Exception as error:
             failures.append(run_failure(sheet, run, error))

@@ -14,8 +14,16 @@ for, so the memory is bounded by the chunk size. A whole log is one chunk
 (the default); cut into chunks of ``chunk_samples`` the result is the same, to
 rounding, because every per-chunk step is a pure function of the chunk's rows
 (with enough overlap, :func:`~pipeline.condition.scan.required_overlap`) and
-every run-level choice is made once. With a dask ``client`` the per-chunk
-steps are tasks that read their own rows.
+every run-level choice is made once.
+
+The steps are functions of a :class:`LogJob` (:func:`start_log`: the set-up
+and the chunks) and of the steps before them: :func:`scan_step` per chunk,
+:func:`detect_step`, :func:`ringing_step`, :func:`fit_step` per chunk and
+:func:`finish_step`. :func:`analyse_job` runs them here;
+:func:`submit_analysis` submits them all at once as tasks to a dask cluster
+(a task per chunk for the scans and the fits, each reading its own rows)
+without waiting, so that a campaign can drive a long log's chunks beside its
+other runs.
 
 :func:`detect_events` and :func:`extract_impacts` are the two halves on a
 table in memory, for notebooks and tests.
@@ -24,15 +32,21 @@ table in memory, for notebooks and tests.
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 from functools import partial
 from pathlib import Path
-from typing import TYPE_CHECKING, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 import numpy as np
 import pandas as pd
 
-from pipeline.condition.engagement import PERIOD_TOLERANCE, EngagementEvents, sampling
+from pipeline.condition.engagement import (
+    PERIOD_TOLERANCE,
+    EngagementEvents,
+    SpeedMismatchWarning,
+    sampling,
+)
 from pipeline.condition.samples import LogSamples, merge_summaries, summarise_samples
 from pipeline.condition.scan import (
     Chunk,
@@ -46,6 +60,7 @@ from pipeline.condition.scan import (
 )
 from pipeline.fit.impact import (
     EventFits,
+    ExtractionPlan,
     ImpactResult,
     Ringing,
     fit_chunk,
@@ -53,10 +68,9 @@ from pipeline.fit.impact import (
     impact_result,
     plan_extraction,
 )
-from pipeline.tasks import map_tasks
 
 if TYPE_CHECKING:
-    from distributed import Client
+    from distributed import Client, Future
 
 
 class LogSource(Protocol):
@@ -143,44 +157,63 @@ def _setup(source: LogSource, *, z: int, omega: float, natural_frequency: float 
                             file=None if file is None else str(file))
 
 
-def _scan(source: LogSource, setup: EngagementSetup, chunk: Chunk
-          ) -> tuple[ChunkScan, list[str]]:
-    """Read one chunk and scan it (a task)."""
-    data, warnings = source.read(chunk.data_start, chunk.data_stop)
-    return scan_chunk(data, chunk, setup), warnings
+@dataclass(frozen=True)
+class LogJob:
+    """A log set up for analysis and cut into chunks: what every step needs.
+
+    Made by :func:`start_log`; picklable when its source is (a
+    :class:`TableSource`, a :class:`~pipeline.ingest.LogReader`), so that each
+    step can be a task that reads its own rows.
+
+    Attributes
+    ----------
+    source : LogSource
+        The log.
+    setup : EngagementSetup
+        Everything decided once from the log's head and length.
+    chunks : tuple of Chunk
+        The chunks, in order (one for a log analysed whole).
+    period_tolerance : float
+        As in :func:`analyse_log`.
+    ringing : Ringing or None
+        The ringing when known; None: fitted on the log.
+    warn_speed : bool
+        Give the :class:`~pipeline.condition.engagement.SpeedMismatchWarning`
+        (False: its message is kept in the events' messages only).
+    file : str or None
+        The log's file, named in errors and warnings.
+    """
+
+    source: LogSource
+    setup: EngagementSetup
+    chunks: tuple[Chunk, ...]
+    period_tolerance: float = PERIOD_TOLERANCE
+    ringing: Ringing | None = None
+    warn_speed: bool = True
+    file: str | None = None
 
 
-def _fit(source: LogSource, plan, ringing: Ringing, chunk: Chunk) -> EventFits:
-    """Read one chunk's force and fit its events (a task)."""
-    data = source.read(chunk.data_start, chunk.data_stop)[0]
-    return fit_chunk(data["force"].to_numpy(dtype=float), chunk.data_start, chunk.start,
-                     chunk.stop, plan, ringing)
+@dataclass(frozen=True)
+class Detection:
+    """The merged scans of a log: its seatings, the summary of its samples, and what
+    reading its chunks said (each once, in order)."""
+
+    events: EngagementEvents
+    samples: LogSamples
+    warnings: tuple[str, ...]
 
 
-def _detect(source: LogSource, setup: EngagementSetup, chunks: list[Chunk],
-            period_tolerance: float, client: Client | None
-            ) -> tuple[EngagementEvents, LogSamples, list[str]]:
-    """Scan every chunk and merge: the seatings, the samples' summary, the read warnings."""
-    scanned = map_tasks(partial(_scan, source, setup), chunks, client)
-    scans = [scan for scan, _ in scanned]
-    warnings = list(dict.fromkeys(text for _, said in scanned for text in said))
-    events = merge_scans(scans, setup, period_tolerance)
-    return events, merge_summaries([scan.samples for scan in scans], setup.clip_level), warnings
+@dataclass(frozen=True)
+class Extraction:
+    """Where each event's window lies (the plan), and the run's ringing with its
+    relative standard errors."""
+
+    plan: ExtractionPlan
+    ringing: Ringing
+    relative_errors: dict[str, float]
 
 
-def _extract(source: LogSource, chunks: list[Chunk], events: EngagementEvents,
-             samples: LogSamples, ringing: Ringing | None, file: str | Path | None,
-             client: Client | None) -> ImpactResult:
-    """Plan, fit the ringing on its events' windows, fit every chunk, merge."""
-    plan = plan_extraction(events, samples, file)
-    windows = [source.read(start, start + plan.span)[0]["force"].to_numpy(dtype=float)
-               for start in plan.reach_start[plan.ringing_events]]
-    ringing, relative_errors = fit_ringing(windows, plan, ringing)
-    fits = map_tasks(partial(_fit, source, plan, ringing), chunks, client)
-    return impact_result(plan, fits, ringing, relative_errors)
-
-
-def analyse_log(
+def start_log(
     source: LogSource,
     *,
     z: int,
@@ -194,10 +227,10 @@ def analyse_log(
     ringing: Ringing | None = None,
     clip_level: float | None = None,
     preview_samples: int | None = None,
+    warn_speed: bool = True,
     file: str | Path | None = None,
-    client: Client | None = None,
-) -> LogAnalysis:
-    """Detect the seatings of an engagement log and extract N_u1, N_u2 of every one.
+) -> LogJob:
+    """Set a log up from its head and cut it into chunks: the first step of :func:`analyse_log`.
 
     Parameters
     ----------
@@ -224,10 +257,126 @@ def analyse_log(
     preview_samples : int, optional
         Keep about this many evenly spaced samples of the log as its preview
         (by default only the first).
+    warn_speed : bool, optional
+        Give the speed-mismatch warning (default); False keeps its message in
+        ``events.messages`` only.
     file : str or Path, optional
         The log's file, named in errors and warnings.
+
+    Returns
+    -------
+    LogJob
+
+    Raises
+    ------
+    ValueError
+        When `chunk_samples` is smaller than the overlap, or `overlap_samples`
+        below the minimum.
+    SignalError
+        When the log is not uniformly sampled or holds no force data.
+    """
+    setup = _setup(source, z=z, omega=omega, natural_frequency=natural_frequency,
+                   impact_angle=impact_angle, use_angle=use_angle,
+                   preview_samples=preview_samples, clip_level=clip_level, file=file)
+    return LogJob(source, setup, tuple(plan_chunks(setup, chunk_samples, overlap_samples)),
+                  period_tolerance, ringing, warn_speed, None if file is None else str(file))
+
+
+def scan_step(job: LogJob, chunk: Chunk) -> tuple[ChunkScan, list[str]]:
+    """Read one chunk and scan it; with the warnings reading it gave (a task per chunk)."""
+    data, warnings = job.source.read(chunk.data_start, chunk.data_stop)
+    return scan_chunk(data, chunk, job.setup), warnings
+
+
+def detect_step(job: LogJob, scanned: list[tuple[ChunkScan, list[str]]]) -> Detection:
+    """Merge the scans of every chunk, in order (:func:`scan_step`), into the seatings."""
+    scans = [scan for scan, _ in scanned]
+    said = tuple(dict.fromkeys(text for _, texts in scanned for text in texts))
+    with warnings.catch_warnings():
+        if not job.warn_speed:
+            warnings.simplefilter("ignore", SpeedMismatchWarning)  # kept in events.messages
+        events = merge_scans(scans, job.setup, job.period_tolerance)
+    return Detection(events, merge_summaries([scan.samples for scan in scans],
+                                             job.setup.clip_level), said)
+
+
+def ringing_step(job: LogJob, detection: Detection) -> Extraction:
+    """Plan the extraction and fit the ringing on its events' windows (read here)."""
+    return _extraction(job.source, detection.events, detection.samples, job.ringing, job.file)
+
+
+def fit_step(job: LogJob, extraction: Extraction, chunk: Chunk) -> EventFits:
+    """Read one chunk's force and fit its events (a task per chunk)."""
+    return _fit(job.source, extraction, chunk)
+
+
+def _extraction(source: LogSource, events: EngagementEvents, samples: LogSamples,
+                ringing: Ringing | None, file: str | Path | None) -> Extraction:
+    plan = plan_extraction(events, samples, file)
+    windows = [source.read(start, start + plan.span)[0]["force"].to_numpy(dtype=float)
+               for start in plan.reach_start[plan.ringing_events]]
+    return Extraction(plan, *fit_ringing(windows, plan, ringing))
+
+
+def _fit(source: LogSource, extraction: Extraction, chunk: Chunk) -> EventFits:
+    data = source.read(chunk.data_start, chunk.data_stop)[0]
+    return fit_chunk(data["force"].to_numpy(dtype=float), chunk.data_start, chunk.start,
+                     chunk.stop, extraction.plan, extraction.ringing)
+
+
+def finish_step(job: LogJob, detection: Detection, extraction: Extraction,
+                fits: list[EventFits]) -> LogAnalysis:
+    """Merge every chunk's fits, in order, into the log's analysis."""
+    impacts = impact_result(extraction.plan, fits, extraction.ringing,
+                            extraction.relative_errors)
+    time, force = detection.samples.preview
+    return LogAnalysis(detection.events, impacts, time, force, job.setup.preview_stride,
+                       detection.warnings)
+
+
+def analyse_job(job: LogJob, client: Client | None = None) -> LogAnalysis:
+    """Every step of :func:`analyse_log` after the set-up, here or on `client` (waiting)."""
+    if client is not None:
+        return submit_analysis(job, client).result()
+    detection = detect_step(job, [scan_step(job, chunk) for chunk in job.chunks])
+    extraction = ringing_step(job, detection)
+    return finish_step(job, detection, extraction,
+                       [fit_step(job, extraction, chunk) for chunk in job.chunks])
+
+
+def submit_analysis(job: LogJob, client: Client, priority: int = 0) -> Future:
+    """Submit every step of :func:`analyse_job` to `client` as tasks, without waiting.
+
+    The scans and the fits are a task per chunk, the merges and the ringing fit a
+    task each, all of them at `priority` (dask runs higher priorities first).
+
+    Returns
+    -------
+    distributed.Future
+        Of the :class:`LogAnalysis`.
+    """
+    submit = partial(client.submit, priority=priority, pure=False)
+    shared = client.scatter(job, hash=False)
+    detection = submit(detect_step, shared, [submit(scan_step, shared, chunk)
+                                             for chunk in job.chunks])
+    extraction = submit(ringing_step, shared, detection)
+    fits = [submit(fit_step, shared, extraction, chunk) for chunk in job.chunks]
+    return submit(finish_step, shared, detection, extraction, fits)
+
+
+def analyse_log(source: LogSource, *, client: Client | None = None, **options: Any
+                ) -> LogAnalysis:
+    """Detect the seatings of an engagement log and extract N_u1, N_u2 of every one.
+
+    Parameters
+    ----------
+    source : LogSource
+        The log (:class:`TableSource`, or :func:`pipeline.ingest.open_log` of a file).
     client : distributed.Client, optional
-        Run the per-chunk steps as tasks on this dask cluster.
+        Run the steps after the set-up as tasks on this dask cluster
+        (:func:`submit_analysis`), a task per chunk for the scans and the fits.
+    **options
+        ``z`` and ``omega`` (required) and the options of :func:`start_log`.
 
     Returns
     -------
@@ -236,8 +385,7 @@ def analyse_log(
     Raises
     ------
     ValueError
-        When `chunk_samples` is smaller than the overlap, or `overlap_samples`
-        below the minimum.
+        For chunks or overlaps :func:`start_log` refuses.
     SignalError
         When the log is not uniformly sampled, holds no force data, fewer than
         five seating periods, or no seating.
@@ -248,7 +396,7 @@ def analyse_log(
     -----
     SpeedMismatchWarning
         When the measured seating period differs from ``2 pi / (z omega)`` by
-        more than `period_tolerance`.
+        more than `period_tolerance` (unless `warn_speed` is False).
 
     References
     ----------
@@ -256,14 +404,7 @@ def analyse_log(
     of eq. (9), tau = pi / (z omega); v_u2 > v_u1 from eqs. (1)-(2); N_u of
     eq. (16), whose measured counterpart is the strike amplitude.
     """
-    setup = _setup(source, z=z, omega=omega, natural_frequency=natural_frequency,
-                   impact_angle=impact_angle, use_angle=use_angle,
-                   preview_samples=preview_samples, clip_level=clip_level, file=file)
-    chunks = plan_chunks(setup, chunk_samples, overlap_samples)
-    events, samples, warnings = _detect(source, setup, chunks, period_tolerance, client)
-    impacts = _extract(source, chunks, events, samples, ringing, file, client)
-    time, force = samples.preview
-    return LogAnalysis(events, impacts, time, force, setup.preview_stride, tuple(warnings))
+    return analyse_job(start_log(source, **options), client)
 
 
 def detect_events(
@@ -303,11 +444,10 @@ def detect_events(
     SpeedMismatchWarning
         As :func:`analyse_log`.
     """
-    source = TableSource(table)
-    setup = _setup(source, z=z, omega=omega, natural_frequency=natural_frequency,
-                   impact_angle=impact_angle, use_angle=use_angle, preview_samples=None,
-                   clip_level=None, file=file)
-    return _detect(source, setup, plan_chunks(setup), period_tolerance, None)[0]
+    job = start_log(TableSource(table), z=z, omega=omega, natural_frequency=natural_frequency,
+                    impact_angle=impact_angle, use_angle=use_angle,
+                    period_tolerance=period_tolerance, file=file)
+    return detect_step(job, [scan_step(job, chunk) for chunk in job.chunks]).events
 
 
 def extract_impacts(
@@ -345,5 +485,8 @@ def extract_impacts(
     summary = summarise_samples(table["time"].to_numpy(dtype=float),
                                 table["force"].to_numpy(dtype=float), 0, n_samples=n,
                                 preview_stride=max(1, n), clip_level=clip_level)
-    return _extract(TableSource(table), [Chunk(0, n, 0, n)], events,
-                    merge_summaries([summary], clip_level), ringing, file, None)
+    source = TableSource(table)
+    extraction = _extraction(source, events, merge_summaries([summary], clip_level), ringing,
+                             file)
+    fits = _fit(source, extraction, Chunk(0, n, 0, n))
+    return impact_result(extraction.plan, [fits], extraction.ringing, extraction.relative_errors)

@@ -13,15 +13,22 @@ import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pandas as pd
 
-from pipeline.condition.engagement import SpeedMismatchWarning
 from pipeline.condition.segment_load import condition_segment_load
 from pipeline.condition.tensile import TensileRun, condition_tensile
 from pipeline.condition.wear import condition_wear
-from pipeline.engagement_log import LogAnalysis, LogSource, TableSource, analyse_log
+from pipeline.engagement_log import (
+    LogAnalysis,
+    LogJob,
+    LogSource,
+    TableSource,
+    analyse_job,
+    start_log,
+)
 from pipeline.errors import FitError, IngestError, RunSheetError, SignalError, UnitError
 from pipeline.fit.roller_engagement import RollerBranch, Sprocket, engagement_teeth
 from pipeline.fit.segment_load import contact_ratios
@@ -263,49 +270,110 @@ def operating_point(sheet: RunSheet, run: RunDef, E0: float) -> dict[str, float]
             "branch_length": run.branch_length_m}
 
 
-def _analysed_log(sheet: RunSheet, run: RunDef, teeth: int, natural: float,
-                  progress: Progress) -> tuple[LogAnalysis, list[str], str]:
-    """An engagement log's seatings and impact tensions, the reader's and the stages'
-    warnings, and the file's layout: the one engagement pipeline, read with `teeth` [-]
-    and the branch's natural frequency `natural` [rad/s]."""
+@dataclass(frozen=True)
+class OpenedLog:
+    """An engagement run's log, opened and set up, and what its result needs besides
+    the log's analysis (:func:`engagement_run_result`).
+
+    Attributes
+    ----------
+    job : LogJob
+        The log set up and cut into chunks (:func:`pipeline.engagement_log.start_log`);
+        more than one chunk for a log longer than :data:`WHOLE_SAMPLES`.
+    result_type : type
+        :class:`~pipeline.results.EngagementResult` or
+        :class:`~pipeline.results.roller_engagement.RollerEngagementResult`.
+    attrs : dict
+        The result's global attributes.
+    read_warnings : tuple of str
+        What opening the file said.
+    """
+
+    job: LogJob
+    result_type: type[EngagementResult] | type[RollerEngagementResult]
+    attrs: dict[str, Any]
+    read_warnings: tuple[str, ...]
+
+
+def open_engagement_run(sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float,
+                        progress: Progress = _quiet) -> OpenedLog:
+    """Open an engagement or roller-engagement run's log and set it up for the one
+    engagement pipeline (:mod:`pipeline.engagement_log`).
+
+    The log is read with the wheel's teeth (a roller chain: half the sprocket's,
+    :func:`pipeline.fit.roller_engagement.engagement_teeth`) and the branch's
+    natural frequency sqrt(E0 / (m L^2)) [rad/s]; a log of over
+    :data:`WHOLE_SAMPLES` samples is cut into chunks of :data:`CHUNK_SAMPLES`.
+
+    Parameters
+    ----------
+    raw_sha256 : str
+        SHA-256 of the raw file, for the result's provenance.
+    E0 : float
+        Chain stiffness [N] (:func:`chain_stiffness_for`).
+
+    Raises
+    ------
+    RunSheetError
+        When a roller-engagement run's sprocket cannot engage its chain.
+    """
+    teeth, natural, attrs, result_type = _OPENINGS[run.kind](sheet, run, raw_sha256, E0)
     progress(run.id, "ingest")
-    source, read_warnings, file_layout = open_run_log(sheet, run)
+    source, read_warnings, attrs["layout"] = open_run_log(sheet, run)
     clip = to_si(run.clip_level_kN, "kN") if run.clip_level_kN is not None else None
-    progress(run.id, "detect and extract impacts")
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", SpeedMismatchWarning)  # kept in events.messages
-        analysis = analyse_log(
-            source, z=teeth, omega=run.omega,
-            chunk_samples=CHUNK_SAMPLES if source.n_rows > WHOLE_SAMPLES else None,
-            natural_frequency=natural, clip_level=clip, preview_samples=MAX_STORED_SAMPLES,
-            file=sheet.run_file(run))
-    return analysis, list(dict.fromkeys([*read_warnings, *analysis.warnings])), file_layout
+    job = start_log(source, z=teeth, omega=run.omega,
+                    chunk_samples=CHUNK_SAMPLES if source.n_rows > WHOLE_SAMPLES else None,
+                    natural_frequency=natural, clip_level=clip,
+                    preview_samples=MAX_STORED_SAMPLES, warn_speed=False,
+                    file=sheet.run_file(run))
+    return OpenedLog(job, result_type, attrs, tuple(read_warnings))
 
 
-def _preview(analysis: LogAnalysis) -> tuple[np.ndarray, np.ndarray, int]:
-    """The stored signal of an analysed log: time [s], force [N] and stride [-]."""
-    return analysis.preview_time, analysis.preview_force, analysis.preview_stride
+def engagement_run_result(opened: OpenedLog, analysis: LogAnalysis
+                          ) -> EngagementResult | RollerEngagementResult:
+    """The result of an engagement run from its opened log and the log's analysis."""
+    warned = list(dict.fromkeys([*opened.read_warnings, *analysis.warnings]))
+    preview = (analysis.preview_time, analysis.preview_force, analysis.preview_stride)
+    return opened.result_type.of(analysis.events, analysis.impacts, preview, opened.attrs,
+                                 warned)
 
 
 def process_engagement_run(
     sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float, progress: Progress = _quiet
-) -> EngagementResult:
+) -> EngagementResult | RollerEngagementResult:
     """Ingest one engagement log, detect its events and extract the impact tensions.
+
+    A roller-engagement run's log is read as a wheel of half the sprocket's
+    teeth (:func:`pipeline.fit.roller_engagement.engagement_teeth`): two
+    successive roller strikes make one seating. xi is fitted across the runs
+    of a sprocket in the summary (:mod:`pipeline.roller_summary`).
 
     Parameters
     ----------
     E0 : float
         Chain stiffness [N] (:func:`chain_stiffness_for`): it sets the expected
         natural frequency of the branch, sqrt(E0 / (m L^2)).
+
+    Raises
+    ------
+    RunSheetError
+        When a roller-engagement run's sprocket cannot engage its chain (Paper
+        002, eq. (3)).
     """
+    opened = open_engagement_run(sheet, run, raw_sha256, E0, progress)
+    progress(run.id, "detect and extract impacts")
+    return engagement_run_result(opened, analyse_job(opened.job))
+
+
+def _chain_opening(sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float
+                   ) -> tuple[int, float, dict[str, Any], type[EngagementResult]]:
+    """A round-link chain on a wheel: teeth [-], natural frequency [rad/s], attributes."""
     point = operating_point(sheet, run, E0)
     natural = math.sqrt(E0 / (point["mass_per_length"] * run.branch_length_m ** 2))
-    analysis, warned, file_layout = _analysed_log(sheet, run, point["teeth"], natural, progress)
     attrs = _attrs(sheet, run, f"Engagement log {run.id} of campaign {sheet.campaign.id}",
                    raw_sha256)
-    attrs.update(wheel=run.wheel, layout=file_layout)
-    return EngagementResult.of(analysis.events, analysis.impacts, _preview(analysis), attrs,
-                               warned)
+    attrs.update(wheel=run.wheel)
+    return point["teeth"], natural, attrs, EngagementResult
 
 
 def roller_engagement_inputs(sheet: RunSheet, run: RunDef, E0: float
@@ -330,28 +398,11 @@ def roller_engagement_inputs(sheet: RunSheet, run: RunDef, E0: float
     return sprocket, branch, to_si(definition.g_lim_J_per_mm2, "J/mm^2")
 
 
-def process_roller_engagement_run(
-    sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float, progress: Progress = _quiet
-) -> RollerEngagementResult:
-    """Ingest a roller chain's engagement log on a sprocket: its strikes and their amplitude.
-
-    The log goes through the one engagement pipeline
-    (:func:`pipeline.engagement_log.analyse_log`) read as a wheel of half the
-    sprocket's teeth (:func:`pipeline.fit.roller_engagement.engagement_teeth`):
-    two successive roller strikes make one seating. xi is fitted across the
-    runs of a sprocket in the summary (:mod:`pipeline.roller_summary`).
-
-    Parameters
-    ----------
-    E0 : float
-        Chain stiffness [N] (:func:`chain_stiffness_for`): it sets the expected
-        natural frequency of the branch, sqrt(E0 / (q L^2)).
-
-    Raises
-    ------
-    RunSheetError
-        When the sprocket's involute cannot engage the chain (Paper 002, eq. (3)).
-    """
+def _roller_opening(sheet: RunSheet, run: RunDef, raw_sha256: str, E0: float
+                    ) -> tuple[int, float, dict[str, Any], type[RollerEngagementResult]]:
+    """A roller chain on a sprocket: the teeth it is read with [-], the natural frequency
+    sqrt(E0 / (q L^2)) [rad/s] and the attributes; refused when the sprocket's involute
+    cannot engage the chain (Paper 002, eq. (3))."""
     sprocket, branch, _ = roller_engagement_inputs(sheet, run, E0)
     xi_model, reason = sprocket.involute_xi(branch.pitch)
     if math.isnan(xi_model) and (sprocket.module is not None or sprocket.base_radius is not None):
@@ -360,14 +411,18 @@ def process_roller_engagement_run(
                             hint="check module_mm and profile_angle_deg (or base_radius_mm) "
                                  "against the chain's pitch t_mm")
     natural = math.sqrt(E0 / (branch.mass_per_length * branch.branch_length ** 2))
-    analysis, warned, file_layout = _analysed_log(
-        sheet, run, engagement_teeth(sprocket.teeth), natural, progress)
     attrs = _attrs(sheet, run, f"Roller-chain engagement log {run.id} of campaign "
                                f"{sheet.campaign.id}", raw_sha256)
     attrs.update(sprocket=run.sprocket, sprocket_teeth=sprocket.teeth,
-                 engagement_teeth=engagement_teeth(sprocket.teeth), layout=file_layout)
-    return RollerEngagementResult.of(analysis.events, analysis.impacts, _preview(analysis),
-                                     attrs, warned)
+                 engagement_teeth=engagement_teeth(sprocket.teeth))
+    return engagement_teeth(sprocket.teeth), natural, attrs, RollerEngagementResult
+
+
+#: How each engagement kind's log is read and its result labelled.
+_OPENINGS = {"engagement": _chain_opening, "roller-engagement": _roller_opening}
+#: The kinds whose log goes through the one engagement pipeline (and that need the chain
+#: stiffness E0 for the branch's natural frequency, :func:`chain_stiffness_for`).
+ENGAGEMENT_KINDS = frozenset(_OPENINGS)
 
 
 def process_wear_run(sheet: RunSheet, run: RunDef, raw_sha256: str,

@@ -164,3 +164,55 @@ def test_raw_files_are_hashed_in_the_runs_tasks(client, reordered, tmp_path, mon
     for path in result.run_files.values():
         attrs = read_dataset(path).attrs
         assert attrs["raw_sha256"] == expected[str((reordered / attrs["raw_file"]).resolve())]
+
+
+@pytest.fixture
+def long_log(simulated, monkeypatch) -> Path:
+    """An engagement campaign of one 8 s log at 10 kHz (80 001 samples), a long log cut
+    into chunks of 20 000 samples (in this process: seen by an in-process cluster)."""
+    from pipeline import runs
+
+    monkeypatch.setattr(runs, "WHOLE_SAMPLES", 20_000)
+    monkeypatch.setattr(runs, "CHUNK_SAMPLES", 20_000)
+    return simulated("engagement", "--teeth", "8", "--omega", "20", "--duration", "8",
+                     "--sample-rate", "10000", "--format", "csv", "--seed", "3")
+
+
+def _in_process_cluster():
+    distributed = pytest.importorskip("distributed")
+    return distributed.Client(processes=False, n_workers=2, threads_per_worker=1,
+                              dashboard_address=":0")  # the module's cluster holds 8787
+
+
+def test_a_long_log_on_a_cluster_is_a_task_per_chunk_with_the_serial_result(long_log, tmp_path):
+    from dask.utils import key_split
+    from distributed import get_task_stream
+
+    serial = process_campaign(long_log, tmp_path / "serial")
+    with _in_process_cluster() as client, get_task_stream(client) as stream:
+        clustered = process_campaign(long_log, tmp_path / "cluster", client=client)
+    assert not serial.failures and not clustered.failures
+    tasks = [key_split(task["key"]) for task in stream.data]
+    chunks = -(-80_001 // 20_000)  # 5
+    assert tasks.count("scan_step") == tasks.count("fit_step") == chunks
+    assert tasks.count("detect_step") == tasks.count("ringing_step") == 1
+    (run_id, path), = serial.run_files.items()
+    xr.testing.assert_identical(read_dataset(clustered.run_files[run_id]).drop_attrs(),
+                                read_dataset(path).drop_attrs())
+    xr.testing.assert_identical(clustered.summary.drop_attrs(), serial.summary.drop_attrs())
+
+
+def test_a_bad_row_in_a_long_logs_chunk_fails_its_run_as_in_a_serial_run(long_log, tmp_path):
+    campaign = shutil.copytree(long_log, tmp_path / "campaign")
+    log, = campaign.glob("*.csv")
+    lines = log.read_text(encoding="utf-8").splitlines(keepends=True)
+    bad = 75_000  # beyond the rows read at open (pipeline.ingest.rowindex.EVERY)
+    lines[bad] = re.sub(r"^([^,]*),[^,]*", r"\1,oops", lines[bad])
+    log.write_text("".join(lines), encoding="utf-8")
+    serial = process_campaign(campaign, tmp_path / "serial")
+    with _in_process_cluster() as client:
+        clustered = process_campaign(campaign, tmp_path / "cluster", client=client)
+    (expected,), (found,) = serial.failures, clustered.failures
+    assert "oops" in expected.message and f"line {bad + 1}" in expected.message
+    assert found.message == expected.message
+    assert clustered.run_files == {} and serial.run_files == {}
