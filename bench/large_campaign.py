@@ -23,6 +23,12 @@ Sizes (:data:`SIZES`): ``quick`` (a minute or so to write and to process) and
 kinds (the growth benchmark, ``bench/bench_growth.py``)::
 
     .venv/bin/python bench/large_campaign.py --out /tmp/many --many 100
+
+:func:`write_one_long` writes instead ``bench-one-long``, a campaign dominated
+by one long log (one CSV log of ``large_samples``, four of ``samples``), where
+only the log's chunks as tasks let two workers share the work::
+
+    .venv/bin/python bench/large_campaign.py --out /tmp/large --one-long
 """
 
 from __future__ import annotations
@@ -107,8 +113,11 @@ def write_tensile(folder: Path, rate: float, rng: np.random.Generator) -> Path:
     return write_tensile_campaign(folder, runs, campaign)
 
 
-def write_engagement(folder: Path, size: CampaignSize, rng: np.random.Generator) -> Path:
-    """Write the engagement campaign of `size` into `folder`; return the run sheet."""
+def write_engagement(folder: Path, size: CampaignSize, rng: np.random.Generator,
+                     campaign_id: str = "bench-engagement",
+                     formats: tuple[str, str] = ("tdms", "csv")) -> Path:
+    """Write the engagement campaign of `size` into `folder`, its files in `formats` in
+    turn; return the run sheet."""
     lengths = [size.large_samples] * size.large_runs + [size.samples] * size.runs
     runs = []
     for index, samples in enumerate(lengths):
@@ -119,16 +128,24 @@ def write_engagement(folder: Path, size: CampaignSize, rng: np.random.Generator)
             sample_rate=ENGAGEMENT_RATE, duration=(samples - 1) / ENGAGEMENT_RATE, snr=20.0,
             amplitude_scatter=0.02, with_angle=index % 4 != 3)
         run_id = f"E{index + 1:03d}"
-        file_format = ("tdms", "csv")[index % 2]
+        file_format = formats[index % 2]
         runs.append(EngagementRunSpec(
             id=run_id, chain="18x64", settings=settings, seed=int(rng.integers(2**31)),
             file=f"{run_id}.{file_format}", format=file_format))
     campaign = CampaignSpec(
-        id="bench-engagement",
+        id=campaign_id,
         title=f"Benchmark: {len(runs)} engagement runs, {size.large_runs} of "
               f"{size.large_samples:.0e} samples",
         note="Synthetic benchmark campaign (bench/large_campaign.py).")
     return write_engagement_campaign(folder, runs, campaign)
+
+
+def write_one_long(folder: Path, size: CampaignSize) -> Path:
+    """Write a campaign dominated by one long log into `folder`: one CSV log of
+    ``size.large_samples`` samples and four of ``size.samples`` (the scale-out of a long
+    log's chunks, ``bench/SCALE_OUT.md``); return the run sheet."""
+    return write_engagement(folder, size._replace(runs=4, large_runs=1),
+                            np.random.default_rng(SEED), "bench-one-long", ("csv", "tdms"))
 
 
 def write_campaign(out: Path, size: CampaignSize) -> Campaigns:
@@ -228,15 +245,22 @@ def main() -> None:
     parser.add_argument("--quick", action="store_true", help="the quick size")
     parser.add_argument("--many", type=int, metavar="N",
                         help="write instead one campaign of N small runs of both kinds")
+    parser.add_argument("--one-long", action="store_true",
+                        help="write instead one campaign dominated by one long log")
     args = parser.parse_args()
     start = time.perf_counter()
+    size = SIZES["quick" if args.quick else "full"]
+    if args.one_long:
+        sheet = write_one_long(args.out / "bench-one-long", size)
+        print(f"{sheet}: one CSV log of {size.large_samples:.0e} samples and four of "
+              f"{size.samples:.0e}, written in {time.perf_counter() - start:.0f} s")
+        return
     if args.many:
         sheet = write_many_small(args.out / f"bench-many-{args.many}", args.many,
                                  f"bench-many-{args.many}")
         print(f"{sheet}: {args.many} small runs, written in "
               f"{time.perf_counter() - start:.0f} s")
         return
-    size = SIZES["quick" if args.quick else "full"]
     campaigns = write_campaign(args.out, size)
     print(f"{campaigns.tensile}: 16 tensile runs at {size.tensile_rate:g} Hz")
     print(f"{campaigns.engagement}: {size.runs} engagement logs of {size.samples:.0e} samples "
