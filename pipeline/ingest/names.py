@@ -22,7 +22,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "gauge": (
             "extension", "displacement", "gauge", "elongation", "extensometer", "ext",
             "deflection", "position", "stroke", "crosshead", "lvdt", "dial", "strain",
-            "actuator", "piston", "clip gauge",
+            "actuator", "piston", "clip gauge", "ave", "video extensometer",
         ),
         "angle": ("angle", "encoder", "rotation"),
         "cycle_count": ("cycle", "cycles", "cycle count", "count"),
@@ -72,18 +72,19 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
 }
 
 #: Names that say what a displacement channel measures: the travel of the machine's
-#: crosshead or actuator (it includes the machine's own compliance), or the specimen
-#: itself (an extensometer, a strain). Other gauge names ("Extension", "Weg 1",
+#: crosshead or actuator (it includes the machine's own compliance; "Machine
+#: Displacement"), or the specimen itself (an extensometer, a strain; "AVE" is
+#: Instron's video extensometer). Other gauge names ("Extension", "Weg 1",
 #: "Wydłużenie") say neither and are of kind ``"gauge"``.
 GAUGE_KINDS: dict[str, tuple[str, ...]] = {
     "crosshead": (
-        "crosshead", "cross head", "stroke", "position", "actuator", "piston",
+        "crosshead", "cross head", "stroke", "position", "actuator", "piston", "machine",
         "traverse", "traversenweg", "standardweg", "standardwegaufnehmer", "kolbenweg",
         "maschinenweg", "trawersa", "trawersy", "tłok", "travesaño", "actuador", "pistón",
         "carrera",
     ),
     "extensometer": (
-        "extensometer", "ext", "clip gauge", "strain", "dehnung", "feindehnung",
+        "extensometer", "ext", "clip gauge", "strain", "ave", "dehnung", "feindehnung",
         "ansetzdehnungsaufnehmer", "maytec", "ekstensometr", "odkształcenie", "extensómetro",
         "deformación", "dial", "czujnik",
     ),

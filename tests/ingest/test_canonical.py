@@ -167,3 +167,16 @@ def test_time_checks_agree_with_a_step_by_step_reading(steps):
     assert (meta.time_monotonic, meta.time_gaps) == (monotonic, gaps)
     assert [w for w in meta.warnings
             if w.startswith("time: ") and "missing values" not in w] == expected
+
+
+def test_instron_video_extensometer_is_the_strain_and_machine_displacement_the_crosshead(write):
+    # Instron Bluehill and WaveMatrix: "AVE" (Advanced Video Extensometer) in %, beside the
+    # actuator's travel; before, AVE was no role and E0 came from the crosshead unwarned
+    text = ("Time (s),Displacement (mm),Force (kN),AVE 2 (%),Machine Displacement (mm)\n"
+            + rows((0, 1, 2, 3, 4)))
+    table, meta = read_table(write("ave.csv", text))
+    assert sorted(table.columns) == ["force", "gauge_1", "gauge_2", "strain_1", "time"]
+    assert table["strain_1"].iloc[0] == pytest.approx(0.03)
+    kinds = {column.name: column.kind for column in meta.columns}
+    assert kinds["AVE 2"] == "extensometer" and kinds["Machine Displacement"] == "crosshead"
+    assert kinds["Displacement"] == "gauge"
