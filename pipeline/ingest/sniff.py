@@ -434,7 +434,7 @@ def find_table(
         and kinds[above] == "text"
         and kinds[above - 1] == "text"
         and len(rows[above]) <= width
-        and all(looks_like_unit(cell) for cell in rows[above])
+        and _units_row(rows[above], rows[data])
     ):
         units_index, above = above, above - 1
     if above < 0 or kinds[above] != "text":
@@ -475,6 +475,16 @@ def find_table(
         pairs=pairs,
         clocks=clocks,
     )
+
+
+def _units_row(row: list[str], first_data: list[str]) -> bool:
+    """Whether `row` is a units row: a unit (or nothing) over every column of the data.
+
+    Cells over columns the first data row leaves empty are notes beside the
+    table (Bluehill: ``"20 N preload"`` under ``"10 mm/min"``), not units.
+    """
+    return all(looks_like_unit(cell) for index, cell in enumerate(row)
+               if index >= len(first_data) or not is_missing(first_data[index]))
 
 
 def _first_data_row(rows: list[list[str]], kinds: list[str], width: int,

@@ -38,6 +38,18 @@ def test_units_row_in_brackets_and_kn(write):
     np.testing.assert_allclose(table["force"], [1000.0, 2000.0])
 
 
+def test_notes_beside_the_header_do_not_hide_the_units_row(write):
+    # a real Bluehill export: the operator's notes right of the names and units rows,
+    # over columns the data leave empty; they were taken for the names row before
+    text = ("Time,Extension,Load,,10 mm/min\n(s),(mm),(N),,20 N preload\n"
+            "0,0.55782,20.00323,,\n0.1,0.58688,20.18529,,\n")
+    table, meta = read_table(write("taco.csv", text))
+    assert (meta.header_line, meta.first_data_line) == (1, 3)
+    assert list(table.columns) == ["time", "force", "gauge_1"]
+    np.testing.assert_allclose(table["gauge_1"], [0.55782e-3, 0.58688e-3])
+    assert "2 empty column(s) dropped" in meta.warnings[0]
+
+
 def test_run_sheet_columns_pick_among_candidates(write):
     text = BLUEHILL.replace("Segment ID", "Load 2")
     with pytest.raises(ColumnError, match="could be the force"):
