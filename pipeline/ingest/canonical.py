@@ -36,8 +36,8 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from pipeline.errors import ChainbenchError, ColumnError, UnitError
-from pipeline.ingest.names import gauge_kind
+from pipeline.errors import ChainbenchError, ColumnError, LayoutError, UnitError
+from pipeline.ingest.names import gauge_kind, repeats
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import SHEET_KEY, display_name, role_of_key
 from pipeline.ingest.table import GAP_FACTOR, ROLES, ColumnInfo, TableMetadata
@@ -144,10 +144,22 @@ def settle(
 
     Raises
     ------
+    LayoutError
+        When the columns repeat one group of names side by side (several
+        specimens in one file: :func:`~pipeline.ingest.names.repeats`).
     ColumnError, UnitError
         In strict mode, as listed in the module docstring.
     """
     meta = raw.metadata
+    if (count := repeats(raw.names)) > 1:
+        group = raw.names[:len(raw.names) // count]
+        raise LayoutError(
+            f"the columns {', '.join(name for name in group if name)} repeat {count} times "
+            f"side by side: the file holds {count} specimens or tests",
+            file=meta.file, row=meta.header_line,
+            hint="export each specimen to a file of its own, or delete the other "
+                 "specimens' columns; one file is one run",
+        )
     problems = _Problems(strict, meta.warnings)
     sheet_units = _run_sheet_units(units, meta.file)
     assigned = _settle_roles(raw, empty, problems)
@@ -206,6 +218,9 @@ def build(
 
     Raises
     ------
+    LayoutError
+        When the columns repeat one group of names side by side (several
+        specimens in one file: :func:`~pipeline.ingest.names.repeats`).
     ColumnError, UnitError
         In strict mode, as listed in the module docstring.
     """

@@ -185,3 +185,27 @@ def match_role(name: str) -> str | None:
     ('cycle_count', 'force', 'force')
     """
     return _best_match(name, _KEYWORDS)
+
+
+def repeats(names: list[str]) -> int:
+    """How many times the columns repeat one group of names side by side (1: they do not).
+
+    Trailing unnamed columns are left out; a group needs two names or more, one
+    of which is not empty. Several specimens of one test exported into one
+    file (Shimadzu Trapezium) repeat their columns so.
+
+    Examples
+    --------
+    >>> repeats(["Temps", "Force", "Stroke", "Temps", "Force", "Stroke", ""])
+    2
+    >>> repeats(["time", "force", "gauge", "gauge"])
+    1
+    """
+    folded = [fold(name.strip()) for name in names]
+    while folded and not folded[-1]:
+        folded.pop()
+    for size in range(2, len(folded) // 2 + 1):
+        if len(folded) % size == 0 and any(folded[:size]) and all(
+                name == folded[index % size] for index, name in enumerate(folded)):
+            return len(folded) // size
+    return 1

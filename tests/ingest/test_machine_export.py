@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from pipeline.errors import ColumnError
-from pipeline.ingest import read_table
+from pipeline.errors import ColumnError, LayoutError
+from pipeline.ingest import open_log, read_table
 from pipeline.ingest.preamble import parse_preamble
 
 BLUEHILL = (
@@ -48,6 +48,24 @@ def test_notes_beside_the_header_do_not_hide_the_units_row(write):
     assert list(table.columns) == ["time", "force", "gauge_1"]
     np.testing.assert_allclose(table["gauge_1"], [0.55782e-3, 0.58688e-3])
     assert "2 empty column(s) dropped" in meta.warnings[0]
+
+
+SHIMADZU_SPECIMENS = (
+    '"CuivreC1",,,"CuivreC1+N",,,"AcierC70",,\n'
+    '"Temps","Force","Stroke","Temps","Force","Stroke","Temps","Force","Stroke"\n'
+    '"sec","N","mm","sec","N","mm","sec","N","mm"\n'
+    '"0","143.954","7.5E-05","0","237.023","6.25E-05","0","81.86976","5E-05"\n'
+    '"0.01","143.9857","0.0001625","0.01","237.0262","0.0001375","0.01","81.8952","0.00015"\n'
+)
+
+
+@pytest.mark.parametrize("reader", [read_table, open_log])
+def test_specimens_side_by_side_are_refused_not_mixed(write, reader):
+    # a real Shimadzu Trapezium export: one group of columns per specimen; before, the
+    # first specimen's force was read with every specimen's strokes as its gauges
+    with pytest.raises(LayoutError, match="Temps, Force, Stroke repeat 3 times") as error:
+        reader(write("shimadzu.csv", SHIMADZU_SPECIMENS), kind="tensile")
+    assert error.value.row == 2 and "a file of its own" in error.value.hint
 
 
 def test_run_sheet_columns_pick_among_candidates(write):
