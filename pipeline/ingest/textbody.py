@@ -365,6 +365,16 @@ def locate_defect(
     reported = _INVALID.search(str(error))
     for number, line in region.lines():
         fields = split_fields(line, delimiter)
+        names_row = _names_row(fields, decimal)
+        if names_row and (len(fields) != width or any(
+                not is_number(fields[index], decimal) for index in float_columns)):
+            return LayoutError(
+                f"a second table starts here, its names {names_row}: the rows above it were "
+                "read as the data",
+                file=region.name, row=number,
+                hint="keep one table per file: export the raw data alone, or delete the "
+                     "lines above its names row (a results table?)",
+            )
         if len(fields) != width:
             return LayoutError(
                 f"the row has {len(fields)} fields where the data rows have {width}",
@@ -386,6 +396,17 @@ def locate_defect(
         file=region.name, row=region.first_line,
         hint="check the export; give columns and units in the run sheet if detection failed",
     )
+
+
+def _names_row(fields: list[str], decimal: str) -> str:
+    """The first names of a row that holds two texts or more and fewer numbers (a names
+    row, not a data row with a bad cell), quoted; empty otherwise."""
+    texts = [cell.strip() for cell in fields
+             if not (is_number(cell, decimal) or is_missing(cell) or looks_like_clock(cell))]
+    numbers = sum(is_number(cell, decimal) for cell in fields)
+    if len(texts) < 2 or numbers >= len(texts):
+        return ""
+    return ", ".join(repr(text[:30]) for text in texts[:4]) + (", ..." if len(texts) > 4 else "")
 
 
 def _bad_cell(

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from pipeline.errors import ColumnError, LayoutError
+from pipeline.errors import ColumnError, LayoutError, ValueParseError
 from pipeline.ingest import open_log, read_table
 from pipeline.ingest.preamble import parse_preamble
 
@@ -66,6 +66,25 @@ def test_specimens_side_by_side_are_refused_not_mixed(write, reader):
     with pytest.raises(LayoutError, match="Temps, Force, Stroke repeat 3 times") as error:
         reader(write("shimadzu.csv", SHIMADZU_SPECIMENS), kind="tensile")
     assert error.value.row == 2 and "a file of its own" in error.value.hint
+
+
+def test_a_results_table_above_the_raw_data_is_named_as_a_second_table(write):
+    # a real Bluehill export of several specimens: a results table, then the raw data;
+    # the results were read as the data and the raw names row was "not a number"
+    text = (",Gauge length,Maximum Force\n,(mm),(N)\n1,9.59,3196.2\n2,9.75,3051.7\n"
+            ",,\nResults Table 2,,\n1,Time,Displacement,Force\n,(s),(mm),(N)\n"
+            ",0,0.0029,-0.7041\n")
+    with pytest.raises(LayoutError, match="second table starts here") as error:
+        read_table(write("results.csv", text))
+    assert error.value.row == 7 and "'Time', 'Displacement', 'Force'" in str(error.value)
+    assert "one table per file" in error.value.hint
+
+
+def test_a_data_row_with_one_bad_cell_is_still_named_as_such(write):
+    text = "time [s],force [kN],gauge [mm]\n0,1,2\n1,x,3\n"
+    with pytest.raises(ValueParseError, match="'x' is not a number") as error:
+        read_table(write("bad.csv", text))
+    assert error.value.row == 3
 
 
 def test_run_sheet_columns_pick_among_candidates(write):
