@@ -37,7 +37,7 @@ import numpy as np
 import pandas as pd
 
 from pipeline.errors import ChainbenchError, ColumnError, LayoutError, UnitError
-from pipeline.ingest.names import gauge_kind, repeats
+from pipeline.ingest.names import gauge_kind, repeats, tokens
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import SHEET_KEY, display_name, role_of_key
 from pipeline.ingest.table import GAP_FACTOR, ROLES, ColumnInfo, TableMetadata
@@ -68,6 +68,15 @@ REQUIRED = {"tensile": (("force",), ("gauge",)), "engagement": (("time",), ("for
 
 _SINGLE = ("time", "force", "angle", "cycle_count", "length", "speed", "segment_force_1",
            "segment_force_2", "side_force")
+
+
+#: The hint for a strain column that has no unit: a ratio and a percentage cannot be told
+#: apart from the values, and one unit for all gauges would turn the others into strains.
+STRAIN_WITHOUT_UNIT_HINT = (
+    'a strain may be a ratio or in %: give each gauge its unit in the run sheet, '
+    'units = {gauges = ["mm", "1", ...]} ("1" for mm/mm), or keep only the gauges to use, '
+    'columns = {gauges = ["..."]}'
+)
 
 
 class _Problems:
@@ -379,8 +388,9 @@ def _settle_units(
                 problems.report(UnitError(
                     f"no unit for the {role} column",
                     file=file, row=raw.units_line, column=name,
-                    hint=f'the file gives none: set it in the run sheet, units = '
-                    f'{{{SHEET_KEY[role]} = "..."}}',
+                    hint=STRAIN_WITHOUT_UNIT_HINT if role == "gauge" and "strain" in tokens(name)
+                    else f'the file gives none: set it in the run sheet, units = '
+                         f'{{{SHEET_KEY[role]} = "..."}}',
                 ))
                 continue
             if role == "gauge" and is_strain_unit(text):

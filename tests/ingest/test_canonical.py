@@ -180,3 +180,18 @@ def test_instron_video_extensometer_is_the_strain_and_machine_displacement_the_c
     kinds = {column.name: column.kind for column in meta.columns}
     assert kinds["AVE 2"] == "extensometer" and kinds["Machine Displacement"] == "crosshead"
     assert kinds["Displacement"] == "gauge"
+
+
+def test_a_strain_without_unit_is_refused_with_a_hint_that_works(write):
+    # a real Instron 8852 export: the extensometer in mm beside its strain with no unit
+    text = ("Time,Displacement,Force,Engineering Strain\ns,mm,kN,\n"
+            + rows((0, 0.1, 1, 0.004), (1, 0.2, 2, 0.008)))
+    path = write("strain.csv", text)
+    with pytest.raises(UnitError, match="no unit for the gauge column") as error:
+        read_table(path, kind="tensile")
+    hint = error.value.hint
+    assert "ratio or in %" in hint and 'units = {gauges = ["mm", "1"' in hint
+    table, _ = read_table(path, kind="tensile", units={"gauges": ["mm", "1"]})
+    assert table["strain_1"].tolist() == [0.004, 0.008]
+    table, _ = read_table(path, kind="tensile", columns={"gauges": ["Displacement"]})
+    assert table["gauge_1"].tolist() == pytest.approx([1e-4, 2e-4])
