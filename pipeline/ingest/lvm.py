@@ -29,7 +29,9 @@ File defects handled
   ``Time`` is the time in seconds;
 * ``X_Columns No``: the first field of every row is empty, and the time is
   ``X0 + Delta_X * i`` of the first channel;
-* the ``Comment`` column of the names row, which data rows leave out;
+* the ``Comment`` column of the names row: rows that carry a comment have a
+  field more than the others; the comments are left out, with a warning
+  quoting the first;
 * a decimal comma (``Decimal_Separator ,``), either separator;
 * everything the delimited readers handle in the rows themselves
   (:mod:`pipeline.ingest.delimited`): missing values, a truncated last line,
@@ -41,6 +43,7 @@ of several segments (a header again after the rows).
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 
 import numpy as np
@@ -49,8 +52,8 @@ from pipeline.errors import LayoutError
 from pipeline.ingest.delimited import read_contiguous, text_header
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
-from pipeline.ingest.sniff import Head, TableSpec, split_fields
-from pipeline.ingest.source import contains
+from pipeline.ingest.sniff import Head, TableSpec, read_head, split_fields
+from pipeline.ingest.source import BufferSource, contains
 
 LAYOUT = "lvm"
 
@@ -58,6 +61,8 @@ LAYOUT = "lvm"
 MAGIC = "LabVIEW Measurement"
 #: The line that ends the file header and each segment header.
 END_OF_HEADER = "***End_of_Header***"
+#: The last name of the names row: a column for the rows' comments, not a channel.
+COMMENT = "Comment"
 #: Delimiters by the name the ``Separator`` tag gives them.
 SEPARATORS = {"tab": "\t", "comma": ","}
 #: The name given to the X column when the X axis is time (``X_Dimension Time``).
@@ -135,9 +140,12 @@ def table_spec(head: Head) -> TableSpec:
             "the file holds several segments, each with its own header", file=head.name,
             row=(ends[2] + 1) if len(ends) > 2 else None,
             hint="write one header only (Segment Headers: One header only), or split the file")
-    width = len(split_fields(data_lines[0], delimiter))
     names = [field.strip() for field in split_fields(head.lines[names_index], delimiter)]
-    while len(names) > width and names[-1] in ("Comment", ""):
+    width = len(split_fields(data_lines[0], delimiter))
+    if names[-1] == COMMENT:  # the data's width: rows with a comment have one field more
+        names.pop()
+        width = min(width, len(names))
+    while len(names) > width and names[-1] == "":
         names.pop()
     names += [""] * (width - len(names))
     time_axis = (segment.get("X_Dimension") or [""])[0].lower() == "time"
@@ -164,12 +172,38 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
     """Read a LabVIEW measurement file sniffed as `head` / `spec` (see the module docstring)."""
     header = text_header(head, spec, LAYOUT, parse_preamble(spec.preamble, spec.delimiter),
                          columns)
+    head, said = _without_comments(head, spec)
+    header.metadata.warnings.extend(said)
     raw = read_contiguous(head, spec, header)
     tags = _tags(spec.preamble, spec.delimiter)
     if (tags.get("X_Columns") or [""])[0].lower() == "no" and 0 in raw.arrays:
         start, step = _axis(tags, spec.decimal, head.name)
         raw.arrays[0] = start + step * np.arange(raw.rows)
     return raw
+
+
+def _without_comments(head: Head, spec: TableSpec) -> tuple[Head, list[str]]:
+    """The file with the comments of its rows cut off, and a warning quoting them.
+
+    LabVIEW writes a comment as one more field at the end of the rows it was
+    given for (often the first); the others end with the last channel. The
+    file is read whole into memory only when a row has a comment.
+    """
+    body = head.source.read(head.offsets[spec.data_index], head.size)
+    delimiter = re.escape(spec.delimiter.encode(head.codec))
+    fields = rb"[^\r\n%s]*" % delimiter
+    row = re.compile(rb"^(%s(?:%s%s){%d})%s([^\r\n]*)(?=\r?$)" % (
+        fields, delimiter, fields, spec.width - 1, delimiter), re.MULTILINE)
+    comments = [(match.start(), match[2]) for match in row.finditer(body) if match[2].strip()]
+    if not any(text for _, text in comments) and row.search(body) is None:
+        return head, []
+    cleaned = head.source.read(0, head.offsets[spec.data_index]) + row.sub(rb"\1", body)
+    start, text = comments[0] if comments else (0, b"")
+    line = spec.data_index + 1 + body.count(b"\n", 0, start)
+    said = ([f"{len(comments)} row comment(s) left out of the data, the first "
+             f"{text.decode(head.codec, errors='replace').strip()[:40]!r} on line {line}"]
+            if comments else [])
+    return read_head(BufferSource(cleaned, head.name)), said
 
 
 def _axis(tags: dict[str, list[str]], decimal: str, file: str) -> tuple[float, float]:

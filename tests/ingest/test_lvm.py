@@ -101,3 +101,23 @@ def test_a_second_segment_past_the_sniffed_head_is_refused_too(write):
     rows = [f"{i * 0.01:.6f}\t{i % 7:.6f}\t{i % 5:.6f}" for i in range(6000)]  # ~150 KB
     with pytest.raises(LayoutError, match="several segments"):
         read_table(write("log.lvm", lvm(rows=rows, segment_again=True)))
+
+
+@pytest.mark.parametrize("commented", [0, 1, 17])
+def test_rows_with_a_comment_keep_every_sample_and_the_comments_are_named(write, commented):
+    # a real LabVIEW file: a comment ("Standby") as one more field on the rows it was
+    # given for; before, the other rows were refused as one field short
+    rows = [f"{t:.6f}\t{f:.6f}\t{e:.6f}" for t, f, e in zip(TIME, FORCE_N, EXTENSION_MM,
+                                                            strict=True)]
+    for index in (0, commented):
+        rows[index] += "\tStandby" if commented else ""
+    table, meta = read_table(write("log.lvm", lvm(rows=rows)), kind="engagement")
+    np.testing.assert_allclose(table["time"], TIME, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(table["force"], np.round(FORCE_N, 6))
+    assert [column.name for column in meta.columns] == ["Time", "Force", "Extension"]
+    expected = (2 if commented > 0 else 0)
+    if expected:
+        assert meta.warnings == [f"{expected} row comment(s) left out of the data, the first "
+                                 "'Standby' on line 19"]
+    else:
+        assert meta.warnings == []
