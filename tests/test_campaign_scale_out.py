@@ -216,3 +216,23 @@ def test_a_bad_row_in_a_long_logs_chunk_fails_its_run_as_in_a_serial_run(long_lo
     assert "oops" in expected.message and f"line {bad + 1}" in expected.message
     assert found.message == expected.message
     assert clustered.run_files == {} and serial.run_files == {}
+
+
+def test_a_dashboard_already_on_port_8787_gives_no_warning(recwarn):
+    import socket
+
+    busy = socket.socket()
+    try:
+        busy.bind(("127.0.0.1", 8787))  # as a dask dashboard of a notebook would
+        busy.listen()
+    except OSError:
+        pass  # the port is taken already, which is the case under test
+    try:
+        with pytest.MonkeyPatch.context() as patch:
+            patch.delenv("MALLOC_TRIM_THRESHOLD_", raising=False)
+            with _dask_client(1, None) as client:
+                assert client.submit(sum, [1, 2]).result() == 3
+    finally:
+        busy.close()
+    assert [str(warning.message) for warning in recwarn
+            if "8787" in str(warning.message)] == []

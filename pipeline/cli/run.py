@@ -471,8 +471,10 @@ def _dask_client(workers: int | None, scheduler: str | None):
         return
     with (dask.config.set(CLUSTER_CONFIG),
           LocalCluster(n_workers=0, threads_per_worker=1, processes=True,
-                       dashboard_address=None, preload=WORKER_PRELOAD,
-                       env=WORKER_SETTINGS) as cluster,
+                       # no dashboard; the scheduler's own HTTP server on a free port, so
+                       # that a dask dashboard already on 8787 gives no warning
+                       dashboard_address=":0", scheduler_kwargs={"dashboard": False},
+                       preload=WORKER_PRELOAD, env=WORKER_SETTINGS) as cluster,
           Client(cluster, set_as_default=False) as client):
         cluster.scale(workers)  # returns at once: the workers start in the background
         yield client
