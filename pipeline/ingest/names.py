@@ -90,7 +90,19 @@ GAUGE_KINDS: dict[str, tuple[str, ...]] = {
     ),
 }
 
-_BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^()]*)\))\s*$")
+#: Names of channels that measure across the specimen (a width or thickness change, a
+#: transverse strain): never its extension, whatever their unit says.
+TRANSVERSE_NAMES = (
+    "width", "width change", "transverse", "transverse strain", "lateral", "lateral strain",
+    "thickness", "thickness change", "breite", "breitenänderung", "breitenaenderung",
+    "dicke", "dickenänderung", "dickenaenderung", "querdehnung", "szerokość", "grubość",
+    "anchura", "espesor",
+)
+#: The label of :data:`TRANSVERSE_NAMES` among the role keywords: it wins as a role would.
+_TRANSVERSE = "transverse"
+
+_BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^()]*)\)"
+                        r"|<(?P<ang>[^<>]*)>)\s*$")
 _TOKEN = re.compile(r"[^\W\d_]+|\d+")
 
 
@@ -110,7 +122,7 @@ _KEYWORDS: tuple[tuple[tuple[str, ...], str], ...] = tuple(
     for language in COLUMN_NAMES.values()
     for role, words in language.items()
     for word in words
-)
+) + tuple((tokens(word), _TRANSVERSE) for word in TRANSVERSE_NAMES)
 
 
 def split_name_unit(header: str) -> tuple[str, str | None]:
@@ -119,21 +131,21 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
     Parameters
     ----------
     header : str
-        A names-row cell, e.g. ``"force [kN]"``, ``"Load (N)"``, ``"Kraft / kN"``
-        (ISO 80000 quantity / unit) or ``"Time"``.
+        A names-row cell, e.g. ``"force [kN]"``, ``"Load (N)"``, ``"KRAFT <N>"``,
+        ``"Kraft / kN"`` (ISO 80000 quantity / unit) or ``"Time"``.
 
     Returns
     -------
     name : str
         The name without the unit, stripped.
     unit : str or None
-        The text inside a trailing ``[...]`` or ``(...)``, or after `` / `` (or
+        The text inside a trailing ``[...]``, ``(...)`` or ``<...>``, or after `` / `` (or
         a single ``/``) when pint reads it as a unit; None when there is none.
     """
     text = header.strip().lstrip("\ufeff").strip()
     match = _BRACKETED.match(text)
     if match is not None and match["name"]:
-        unit = match["sq"] if match["sq"] is not None else match["par"]
+        unit = next(match[group] for group in ("sq", "par", "ang") if match[group] is not None)
         return match["name"].strip(), unit.strip()
     separator = " / " if " / " in text else "/" if text.count("/") == 1 else None
     if separator:
@@ -184,7 +196,18 @@ def match_role(name: str) -> str | None:
     >>> match_role("Total Cycle Count"), match_role("Machine_Load"), match_role("Siła")
     ('cycle_count', 'force', 'force')
     """
-    return _best_match(name, _KEYWORDS)
+    role = _best_match(name, _KEYWORDS)
+    return None if role == _TRANSVERSE else role
+
+
+def is_transverse(name: str) -> bool:
+    """Whether a column name says it measures across the specimen (:data:`TRANSVERSE_NAMES`):
+    such a column takes no role, not even from its unit.
+
+    >>> [is_transverse(name) for name in ("Breitenänderung", "Transverse strain", "Strain")]
+    [True, True, False]
+    """
+    return _best_match(name, _KEYWORDS) == _TRANSVERSE
 
 
 def repeats(names: list[str]) -> int:

@@ -1,7 +1,7 @@
 """The free-text preamble machines write above their table (Instron Bluehill, MTS, Zwick).
 
-Lines of ``key : value``, ``key: value``, ``"key","value"`` or
-``key<TAB>value`` before the names row become ``key -> value`` in
+Lines of ``key : value``, ``key: value``, ``key = value``, ``"key","value"``
+or ``key<TAB>value`` before the names row become ``key -> value`` in
 :attr:`~pipeline.ingest.table.TableMetadata.preamble`.
 """
 
@@ -27,8 +27,10 @@ def parse_preamble(lines: list[str], delimiter: str) -> dict[str, str]:
         else:
             fields = [field.strip() for field in split_fields(line, delimiter) if field.strip()]
             first = fields[0] if fields else line.strip()
-            if ":" in first:
-                key, tail = first.split(":", 1)
+            separators = [index for index in (first.find(":"), first.find(" =")) if index >= 0]
+            if separators:
+                at = min(separators)
+                key, tail = first[:at], first[at:].lstrip(" ")[1:]
                 values = [tail, *fields[1:]]
             else:
                 key, values = first, fields[1:]

@@ -461,7 +461,7 @@ def find_table(
                                if (kind := clock_kind(cell))}
     if units_index is not None:
         for index, cell in enumerate(rows[units_index][:columns]):
-            units[index] = cell.strip().strip("()[]").strip() or None
+            units[index] = cell.strip().strip("()[]<>").strip() or None
     return TableSpec(
         delimiter=delimiter,
         decimal="," if pairs else decimal,

@@ -87,6 +87,26 @@ def test_a_data_row_with_one_bad_cell_is_still_named_as_such(write):
     assert error.value.row == 3
 
 
+def test_key_equals_value_preamble_units_in_angle_brackets_and_a_width_change(write):
+    # a real Salzgitter flow-curve export; before, every unit was "not given" and, with
+    # the crosshead alone, the width change (a gauge by its unit) would have won over it
+    text = ("MATERIALNAME                           = HC340LA\n"
+            "WERKSTOFFNUMMER_NORM                   =\n"
+            "MESSLAENGE_IST <mm>                    = 80.0\n"
+            "DATEN                                  =\n"
+            "ZEIT <s>; KRAFT <kN>; Traverse <mm>; BREITENAENDERUNG <mm>\n"
+            "1.2372;0.192181;-0.0235;0.0012\n1.2772;0.198325;-0.0231;0.0013\n")
+    table, meta = read_table(write("ut_flat.txt", text), kind="tensile")
+    assert list(table.columns) == ["time", "force", "gauge_1"]
+    np.testing.assert_allclose(table["force"], [192.181, 198.325])
+    np.testing.assert_allclose(table["gauge_1"], [-0.0235e-3, -0.0231e-3])
+    assert meta.preamble["MATERIALNAME"] == "HC340LA"
+    assert meta.preamble["WERKSTOFFNUMMER_NORM"] == ""
+    assert meta.preamble["MESSLAENGE_IST <mm>"] == "80.0"
+    roles = {column.name: column.role for column in meta.columns}
+    assert roles["BREITENAENDERUNG"] is None
+
+
 def test_run_sheet_columns_pick_among_candidates(write):
     text = BLUEHILL.replace("Segment ID", "Load 2")
     with pytest.raises(ColumnError, match="could be the force"):

@@ -2,7 +2,13 @@
 
 import pytest
 
-from pipeline.ingest.names import COLUMN_NAMES, fold, match_role, split_name_unit
+from pipeline.ingest.names import (
+    COLUMN_NAMES,
+    fold,
+    is_transverse,
+    match_role,
+    split_name_unit,
+)
 
 
 @pytest.mark.parametrize(
@@ -48,6 +54,8 @@ def test_every_listed_name_matches_its_own_role():
         ("F/kN", ("F", "kN")),
         ("Speed/mm/s", ("Speed/mm/s", None)),
         ("Rig/Branch tension", ("Rig/Branch tension", None)),
+        ("KRAFT <N>", ("KRAFT", "N")),
+        ("DEHNRATE_SOLL <1/s>", ("DEHNRATE_SOLL", "1/s")),
     ],
 )
 def test_split_name_unit(cell, expected):
@@ -56,3 +64,14 @@ def test_split_name_unit(cell, expected):
 
 def test_fold_drops_case_and_diacritics():
     assert fold("SIŁA Ąę Straße") == "sila ae strasse"
+
+
+@pytest.mark.parametrize("name", ["Breitenänderung", "BREITENAENDERUNG", "Width change",
+                                  "Transverse strain", "Transverse", "Querdehnung"])
+def test_a_channel_across_the_specimen_takes_no_role(name):
+    assert match_role(name) is None and is_transverse(name)
+
+
+@pytest.mark.parametrize("name", ["Dehnung", "Strain 1", "Extension", "Weg"])
+def test_a_channel_along_the_specimen_is_not_transverse(name):
+    assert match_role(name) == "gauge" and not is_transverse(name)
