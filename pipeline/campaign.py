@@ -31,10 +31,11 @@ all in ``<project>/processed/<campaign id>/`` (``raw/`` is only read).
   writes its run file and reads back what the summary needs; the reused runs'
   read-back and the report's run pages are tasks too (:mod:`pipeline.tasks`).
   A long engagement log (cut into chunks) comes back from its first task
-  opened, and this process submits its chunks' scans and fits, the merges and
-  the run's storing as tasks ahead of the runs still queued
-  (:func:`pipeline.engagement_log.submit_analysis`): the tasks never wait on
-  one another inside a worker.
+  opened; when the other runs left would not keep the other workers busy as
+  long as it takes, this process submits its chunks' scans and fits, the
+  merges and the run's storing as tasks ahead of the runs still queued
+  (:func:`pipeline.engagement_log.submit_analysis`), else one task finishes it:
+  the tasks never wait on one another inside a worker.
 """
 
 from __future__ import annotations
@@ -287,11 +288,21 @@ def _process(plan: _Plan, *, sheet: RunSheet, output: Path, progress: Progress |
     return _store(result, plan, raw_sha256, hashed, sheet=sheet, output=output)
 
 
-def _finish_long_log(analysis: LogAnalysis, long: _LongLog, *, sheet: RunSheet,
+def _finish_long_log(analysis: LogAnalysis | None, long: _LongLog, *, sheet: RunSheet,
                      output: Path) -> _Done:
-    """The last task of a long log: its result from the log's analysis, stored, read back."""
+    """The last task of a long log: its result from the log's analysis (None: analysed
+    here, in one task), stored and read back."""
+    analysis = analysis if analysis is not None else analyse_job(long.opened.job)
     return _store(engagement_run_result(long.opened, analysis), long.plan, long.raw_sha256,
                   long.hashed, sheet=sheet, output=output)
+
+
+def _worth_splitting(long: _LongLog, others: list[_Plan], slots: int) -> bool:
+    """Whether a long log's chunks should be tasks of their own: when the other runs
+    left (their raw bytes) would keep the other `slots` - 1 busy for less time than this
+    log takes in one task, so that it would finish last, alone. Otherwise each task is
+    a run, with no data passed between workers."""
+    return long.plan.raw_bytes * max(1, slots - 1) > sum(plan.raw_bytes for plan in others)
 
 
 def _store(result: RunResult, plan: _Plan, raw_sha256: str, hashed: HashedFile | None, *,
@@ -331,7 +342,8 @@ def _execute(sheet: RunSheet, plans: list[_Plan], output: Path, progress: Progre
              debug: bool, client: Client | None) -> tuple[dict[str, _Done], list[RunFailure]]:
     """Process `plans` serially, or as dask tasks on `client`, the largest raw files first
     (the short runs fill in at the end, so that the workers finish together). On a
-    cluster, a long engagement log's chunks are tasks that go before the runs queued."""
+    cluster, a long engagement log's chunks are tasks, ahead of the runs queued, when
+    it would otherwise finish last, alone (:func:`_worth_splitting`)."""
     done, failures = {}, []
     if client is None:
         for plan in plans:
@@ -351,8 +363,11 @@ def _execute(sheet: RunSheet, plans: list[_Plan], output: Path, progress: Progre
         plan = futures.pop(future)
         try:
             outcome = future.result()
-            if isinstance(outcome, _LongLog):  # its chunks go before the runs still queued
-                analysis = submit_analysis(outcome.opened.job, client, priority=1)
+            if isinstance(outcome, _LongLog):  # its steps go before the runs still queued
+                split = _worth_splitting(outcome, list(futures.values()),
+                                         sum(client.nthreads().values()))
+                analysis = (submit_analysis(outcome.opened.job, client, priority=1)
+                            if split else None)
                 finish = task(_finish_long_log, analysis, outcome, priority=1)
                 futures[finish] = plan
                 queue.add(finish)

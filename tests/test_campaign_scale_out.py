@@ -184,18 +184,24 @@ def _in_process_cluster():
                               dashboard_address=":0")  # the module's cluster holds 8787
 
 
-def test_a_long_log_on_a_cluster_is_a_task_per_chunk_with_the_serial_result(long_log, tmp_path):
+@pytest.mark.parametrize("split", [True, False])
+def test_a_long_log_on_a_cluster_gives_the_serial_result(long_log, tmp_path, monkeypatch,
+                                                         split):
     from dask.utils import key_split
     from distributed import get_task_stream
 
+    from pipeline import campaign
+
+    monkeypatch.setattr(campaign, "_worth_splitting", lambda *args: split)
     serial = process_campaign(long_log, tmp_path / "serial")
     with _in_process_cluster() as client, get_task_stream(client) as stream:
         clustered = process_campaign(long_log, tmp_path / "cluster", client=client)
     assert not serial.failures and not clustered.failures
     tasks = [key_split(task["key"]) for task in stream.data]
-    chunks = -(-80_001 // 20_000)  # 5
+    chunks = -(-80_001 // 20_000) if split else 0  # 5: a task per chunk; or none
     assert tasks.count("scan_step") == tasks.count("fit_step") == chunks
-    assert tasks.count("detect_step") == tasks.count("ringing_step") == 1
+    assert tasks.count("detect_step") == tasks.count("ringing_step") == int(split)
+    assert tasks.count("finish_long_log") == 1  # dask's key_split drops the underscore
     (run_id, path), = serial.run_files.items()
     xr.testing.assert_identical(read_dataset(clustered.run_files[run_id]).drop_attrs(),
                                 read_dataset(path).drop_attrs())
@@ -236,3 +242,20 @@ def test_a_dashboard_already_on_port_8787_gives_no_warning(recwarn):
         busy.close()
     assert [str(warning.message) for warning in recwarn
             if "8787" in str(warning.message)] == []
+
+
+@pytest.mark.parametrize(("long_mb", "others_mb", "slots", "split"), [
+    (400, [50, 50, 50], 2, True),  # the others keep a second worker busy 150 of 400
+    (400, [300, 200], 2, False),  # 500 of 400: both workers stay busy without it
+    (400, [300, 200], 3, True),  # 500 over two other workers: 250 each, less than 400
+    (400, [], 1, True),  # alone: its chunks are all there is to do
+    (400, [500], 1, False),  # one worker, with other runs to do: nothing to gain
+])
+def test_a_long_log_is_split_when_it_would_finish_last_alone(long_mb, others_mb, slots, split):
+    from pipeline.campaign import _LongLog, _Plan, _worth_splitting
+
+    def plan(megabytes):
+        return _Plan(None, Path("x"), None, {}, megabytes * 2**20, None)
+
+    long = _LongLog(plan(long_mb), None, "", None)
+    assert _worth_splitting(long, [plan(size) for size in others_mb], slots) is split
