@@ -34,6 +34,7 @@ Channel removal (:func:`find_removal`)
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -87,6 +88,22 @@ class Removal:
 
     position: int  #: first unusable sample (position in the record)
     reason: str  #: ``"runs backwards"``, ``"jumps"`` or ``"freezes"``
+    cause: str = "taken off or slipped"  #: what it suggests, for the warning
+
+
+#: The cause named for a jump by a power of ten: the channel's numbers, not the gauge.
+DECADE_CAUSE = ("by a power of ten: its numbers may have lost their decimal mark, as a "
+                "spreadsheet re-save does; check the export")
+
+
+def _decade(channel: np.ndarray, position: int) -> bool:
+    """Whether the step into sample `position` multiplies the reading by a power of ten
+    (10, 100, ...; to 1 % of a decade)."""
+    before, after = abs(channel[position - 1]), abs(channel[position])
+    if not (before > 0 and after > 0):
+        return False
+    decades = abs(math.log10(after / before))
+    return round(decades) >= 1 and abs(decades - round(decades)) < 0.01
 
 
 def _falls(force: np.ndarray, window: int) -> np.ndarray:
@@ -273,7 +290,7 @@ def find_removal(oriented_force: np.ndarray, oriented_channel: np.ndarray,
     >>> force = np.linspace(0, 100, 100)
     >>> channel = np.where(np.arange(100) < 60, force / 1e3, -0.05)
     >>> find_removal(force, channel)
-    Removal(position=60, reason='runs backwards')
+    Removal(position=60, reason='runs backwards', cause='taken off or slipped')
     """
     whole = np.asarray(oriented_force, dtype=float)
     peak = int(np.argmax(whole))
@@ -304,4 +321,6 @@ def find_removal(oriented_force: np.ndarray, oriented_channel: np.ndarray,
     position, reason = min(found, key=lambda item: item[0])
     if reason == "freezes":
         position = _frozen_since(np.asarray(oriented_channel, dtype=float), position, tolerance)
+    if reason == "jumps" and _decade(channel, position):
+        return Removal(position=int(position), reason=reason, cause=DECADE_CAUSE)
     return Removal(position=int(position), reason=reason)

@@ -231,7 +231,7 @@ def _cut_removed(force: np.ndarray, strains: dict[str, np.ndarray],
         strain[position:] = np.nan
         warnings.append(
             f"channel {columns[name]!r} {removal.reason} at {abs(force[position]) / 1e3:.4g} kN "
-            "while the specimen lengthens (taken off or slipped): its data from there on "
+            f"while the specimen lengthens ({removal.cause}): its data from there on "
             "are not used")
     return removals
 

@@ -3,7 +3,12 @@
 import numpy as np
 import pytest
 
-from pipeline.condition.breaks import find_fracture, find_removal, reading_step
+from pipeline.condition.breaks import (
+    DECADE_CAUSE,
+    find_fracture,
+    find_removal,
+    reading_step,
+)
 
 #: A 13x50 chain on a 0.9 m gauge: stiffness E0 [N], gauge length [m], force noise [N],
 #: gauge noise [m] and gauge resolution [m] as a lab's clip-on extensometer logs them.
@@ -33,6 +38,25 @@ def test_a_quantised_gauge_that_falls_back_is_taken_off():
     removal = find_removal(force, fallen)
     assert removal is not None and removal.reason == "runs backwards"
     assert removal.position == 4000
+
+
+def test_a_jump_by_ten_is_named_as_a_lost_decimal_mark():
+    # a real Bluehill export re-saved by a spreadsheet: 0.9966 mm, then 10.114 for 1.0114
+    force, channel = _loading(3)
+    shifted = channel.copy()
+    shifted[4000:] *= 10.0
+    removal = find_removal(force, shifted)
+    assert removal is not None and removal.reason == "jumps" and removal.position == 4000
+    assert removal.cause == DECADE_CAUSE
+
+
+def test_a_slip_is_named_as_such():
+    force, channel = _loading(4)
+    slipped = channel.copy()
+    slipped[4000:] += 0.3 * np.ptp(channel)  # the knife edge slips: a step, not a decade
+    removal = find_removal(force, slipped)
+    assert removal is not None and removal.reason == "jumps" and removal.position == 4000
+    assert removal.cause == "taken off or slipped"
 
 
 def test_reading_step_is_the_resolution_of_a_quantised_reading():
