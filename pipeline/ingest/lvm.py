@@ -186,17 +186,18 @@ def _without_comments(head: Head, spec: TableSpec) -> tuple[Head, list[str]]:
     """The file with the comments of its rows cut off, and a warning quoting them.
 
     LabVIEW writes a comment as one more field at the end of the rows it was
-    given for (often the first); the others end with the last channel. The
-    file is read whole into memory only when a row has a comment.
+    given for (often the first); the others end with the last channel. The rows
+    are searched in memory; a copy without the comments is made only when a row
+    has that field more.
     """
     body = head.source.read(head.offsets[spec.data_index], head.size)
     delimiter = re.escape(spec.delimiter.encode(head.codec))
     fields = rb"[^\r\n%s]*" % delimiter
     row = re.compile(rb"^(%s(?:%s%s){%d})%s([^\r\n]*)(?=\r?$)" % (
         fields, delimiter, fields, spec.width - 1, delimiter), re.MULTILINE)
-    comments = [(match.start(), match[2]) for match in row.finditer(body) if match[2].strip()]
-    if not any(text for _, text in comments) and row.search(body) is None:
+    if row.search(body) is None:
         return head, []
+    comments = [(match.start(), match[2]) for match in row.finditer(body) if match[2].strip()]
     cleaned = head.source.read(0, head.offsets[spec.data_index]) + row.sub(rb"\1", body)
     start, text = comments[0] if comments else (0, b"")
     line = spec.data_index + 1 + body.count(b"\n", 0, start)
