@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import sys
 from pathlib import Path
 
@@ -10,6 +11,12 @@ import pytest
 ROOT = Path(__file__).parents[1]
 DEMOS = ("stiffness-demo", "engagement-demo", "pull-demo", "wear-demo", "roller-demo",
          "segment-load-demo")
+
+if "PYTEST_XDIST_WORKER" in os.environ:
+    # pytest-xdist's workers start with COLUMNS=80 and LINES=24, which would fix the CLI
+    # console's width when it is first imported; each test sets the width it needs.
+    os.environ.pop("COLUMNS", None)
+    os.environ.pop("LINES", None)
 
 #: Third-party exports (never copied into the repository); tests skip without them.
 REALDATA = ROOT / ".." / "shared" / "realdata"
