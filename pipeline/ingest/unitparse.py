@@ -30,6 +30,14 @@ _DIMENSION = {**_ROLE_DIMENSION, "length": ureg.meter.dimensionality,
               **dict.fromkeys(("segment_force_1", "segment_force_2", "side_force"),
                               ureg.newton.dimensionality)}
 
+#: The range of SI factors a unit of each role may have. Pint reads ``"a"`` as a year,
+#: ``"pcs"`` as parsecs and ``"Min"`` as mega-inches, which no testing machine logs in:
+#: without this, ``"A"`` (amperes, in lower case) would make a current a time.
+_SI_FACTOR_RANGE = {
+    "time": (1e-9, 1e6), "gauge": (1e-9, 1e3), "length": (1e-9, 1e3), "speed": (1e-9, 1e3),
+    **dict.fromkeys(("force", "segment_force_1", "segment_force_2", "side_force"), (1e-6, 1e9)),
+}
+
 #: Units a machine's own counter may carry; the counter is kept as counted.
 COUNTER_UNITS = frozenset(
     {"", "1", "-", "#", "n", "cycle", "cycles", "segment", "segments", "count", "counts",
@@ -44,36 +52,61 @@ ACCEPTED_UNITS = ("N, kN, daN, kgf (kG), tf, lbf; mm, µm (um), m, in; s, ms, mi
 def spellings(text: str) -> list[str]:
     """The spellings of `text` that pint understands, best first.
 
-    Tries the text as written, in lower case, then with its first letter in
-    lower case (``"KN"`` -> ``"kn"`` (knot), ``"kN"``): the caller keeps the
-    first of the right dimension. Pint's parser evaluates nothing.
+    Tries the text as written, then, where its case says nothing (all capitals,
+    ``"KN"``; a capitalised word, ``"Sec"``; or text pint does not read as
+    written), in lower case and with its first letter in lower case (``"KN"`` ->
+    ``"kn"`` (knot), ``"kN"``): the caller keeps the first of the right
+    dimension. A unit written in mixed case means its case: ``"Pa"`` is a
+    pascal and ``"Nm"`` a newton metre, never a peta-year or a nanometre.
+    Pint's parser evaluates nothing.
+
+    Examples
+    --------
+    >>> spellings("KN"), spellings("Pa")
+    (['kn', 'kN'], ['Pa'])
     """
     text = text.strip().strip("()[]{}").strip()
-    found = []
-    for spelling in dict.fromkeys((text, text.lower(), text[:1].lower() + text[1:])):
-        if not spelling:
-            continue
-        try:
-            ureg.parse_units(spelling)
-        except Exception:  # pint raises many kinds of error on odd text
-            continue
-        found.append(spelling)
-    return found
+    candidates = [text]
+    if not _parses(text) or _case_says_nothing(text):
+        candidates += [text.lower(), text[:1].lower() + text[1:]]
+    return [spelling for spelling in dict.fromkeys(candidates) if spelling and _parses(spelling)]
+
+
+def _parses(spelling: str) -> bool:
+    try:
+        ureg.parse_units(spelling)
+    except Exception:  # pint raises many kinds of error on odd text
+        return False
+    return True
+
+
+def _case_says_nothing(text: str) -> bool:
+    """All capitals (``"KN"``, ``"A"``) or a capitalised word (``"Sec"``, ``"Min"``)."""
+    letters = "".join(char for char in text if char.isalpha())
+    return letters.isupper() or (len(letters) >= 3 and letters[0].isupper()
+                                 and letters[1:].islower())
+
+
+def _plausible(spelling: str, role: str) -> bool:
+    """Whether a testing machine could log `role` in `spelling`: see :data:`_SI_FACTOR_RANGE`."""
+    low, high = _SI_FACTOR_RANGE.get(role, (0.0, float("inf")))
+    return low <= abs(float(to_si(1.0, spelling))) <= high
 
 
 def _role_of(spelling: str) -> str | None:
     dimensionality = ureg.parse_units(spelling).dimensionality
     for role, dimension in _ROLE_DIMENSION.items():
         if dimensionality == dimension:
-            return role
-    return "angle" if "radian" in str(ureg.get_root_units(spelling)[1]) else None
+            return role if _plausible(spelling, role) else None
+    return "angle" if ureg.get_root_units(spelling)[1] == ureg.radian else None
 
 
 def _fits(spelling: str, role: str) -> bool:
-    """Whether the unit `spelling` (one pint parses) is of `role`'s dimension."""
+    """Whether the unit `spelling` (one pint parses) is of `role`'s dimension and scale."""
     if role == "angle":
         return _role_of(spelling) == "angle"
-    return ureg.parse_units(spelling).dimensionality == _DIMENSION.get(role)
+    return (ureg.parse_units(spelling).dimensionality == _DIMENSION.get(role)
+            and _plausible(spelling, role))
 
 
 def unit_fits(text: str | None, role: str) -> bool:

@@ -23,6 +23,7 @@ def factor(text, role):
         ("s", "time", 1.0), ("sec", "time", 1.0), ("Sec", "time", 1.0),
         ("(sec)", "time", 1.0), ("ms", "time", 1e-3), ("min", "time", 60.0),
         ("deg", "angle", 0.017453292519943295), ("rad", "angle", 1.0),
+        ("Min", "time", 60.0), ("MM", "gauge", 1e-3), ("SEC", "time", 1.0),
     ],
 )
 def test_si_factor(unit, role, expected):
@@ -47,6 +48,29 @@ def test_wrong_dimension():
 )
 def test_unit_role(unit, role):
     assert unit_role(unit) == role
+
+
+@pytest.mark.parametrize(
+    "unit",
+    [
+        "A", "mA", "Ah",  # pint reads "a" as a year: a current is not a time
+        "Pa", "kPa",  # nor is a stress ("pa" would be a pico-year)
+        "Nm",  # a torque is not a gauge ("nm" would be)
+        "pcs", "PC", "AU",  # parsecs and astronomical units: no machine measures in them
+        "rpm", "lx",  # a rotation speed or an illuminance is not an angle
+    ],
+)
+def test_units_a_lab_means_otherwise_give_no_role(unit):
+    assert unit_role(unit) is None
+
+
+def test_a_current_in_amperes_is_not_a_time_candidate():
+    from pipeline.ingest.roles import find_candidates
+
+    # a thrust stand's export: "Time (s)", ..., "Thrust (kgf)", "Current (A)"
+    found = find_candidates(["Time", "Thrust", "Current"], ["s", "kgf", "A"], None,
+                            file="f.csv", header_line=1)
+    assert found.roles == {"time": [0], "force": [1]}
 
 
 @pytest.mark.parametrize("cell", ["(sec)", "[mm]", "Sec", "kgf", "cycles", "segments", ""])
