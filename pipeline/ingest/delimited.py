@@ -80,19 +80,51 @@ from pipeline.ingest.textbody import (
     trim_truncated_tail,
     truncated_warning,
 )
+from pipeline.ingest.unitparse import spellings
 
 #: The warning of a file whose decimal comma is also its delimiter.
 PAIRS_WARNING = "the decimal comma is also the delimiter: values were rejoined in pairs"
 
 
 def header_columns(spec: TableSpec) -> tuple[list[str], list[str | None]]:
-    """Column names and units from the names row (``name [unit]``) and the units row."""
+    """Column names and units from the names row (``name [unit]``, or ``name unit`` in
+    every cell) and the units row.
+
+    A unit in the names row other than the units row's stays in the name: Bluehill's
+    ``"Tensile strain (Extension)"`` over ``"(mm/mm)"`` names the channel the strain
+    was computed from (see :func:`~pipeline.ingest.names.gauge_kind`).
+    """
+    split = [split_name_unit(cell) for cell in spec.names]
+    if spec.units_index is None and not any(unit for _, unit in split):
+        trailing = _trailing_unit_words(spec.names)
+        if trailing is not None:
+            return [name for name, _ in trailing], [unit for _, unit in trailing]
     names, units = [], []
-    for cell, row_unit in zip(spec.names, spec.units, strict=True):
-        name, unit = split_name_unit(cell)
+    for cell, (name, unit), row_unit in zip(spec.names, split, spec.units, strict=True):
+        if row_unit and unit is not None and _bare(unit) != _bare(row_unit):
+            name = cell.strip().lstrip("\ufeff").strip()
         names.append(name)
         units.append(row_unit or unit)
     return names, units
+
+
+def _trailing_unit_words(cells: list[str]) -> list[tuple[str, str | None]] | None:
+    """Names and units of a names row whose every named cell ends in a unit word.
+
+    Bluehill's ``.raw.csv`` writes ``Time sec;Extension mm;Strain 1 %;Load N``. Only
+    a whole row counts: ``"Weg 1"`` or ``"Channel A"`` alone end in a word pint
+    reads (``1``, amperes) without being units, and a number never is one.
+    """
+    split = [cell.strip().rpartition(" ") for cell in cells]
+    named = [(name.strip(), unit) for name, _, unit in split if unit]
+    if len(named) < 2 or not all(
+            name and not unit.isdigit() and spellings(unit) for name, unit in named):
+        return None
+    return [(name.strip(), unit or None) for name, _, unit in split]
+
+
+def _bare(unit: str) -> str:
+    return unit.strip().strip("()[]<>").strip()
 
 
 def metadata(head: Head, spec: TableSpec, layout: str, preamble: dict[str, str]) -> TableMetadata:

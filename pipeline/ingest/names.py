@@ -103,6 +103,8 @@ _TRANSVERSE = "transverse"
 
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^()]*)\)"
                         r"|<(?P<ang>[^<>]*)>)\s*$")
+#: The channel a computed one was derived from, in trailing brackets.
+_SOURCE = re.compile(r"\((?P<source>[^()]+)\)\s*$")
 _TOKEN = re.compile(r"[^\W\d_]+|\d+")
 
 
@@ -177,11 +179,20 @@ _KIND_KEYWORDS = tuple(
 def gauge_kind(name: str) -> str:
     """What a displacement channel measures, from its name: see :data:`GAUGE_KINDS`.
 
+    A channel computed from another names it in trailing brackets and measures
+    what that one does: Bluehill's ``"Tensile strain (Extension)"`` is the
+    crosshead's extension over the gauge length, not an extensometer's strain.
+
     Examples
     --------
     >>> gauge_kind("Traversenweg"), gauge_kind("Dehnung 1"), gauge_kind("Extension")
     ('crosshead', 'extensometer', 'gauge')
+    >>> gauge_kind("Tensile strain (Extension)"), gauge_kind("Tensile strain (AVE 2)")
+    ('gauge', 'extensometer')
     """
+    source = _SOURCE.search(name)
+    if source is not None:
+        return gauge_kind(source["source"])
     return _best_match(name, _KIND_KEYWORDS) or "gauge"
 
 

@@ -50,6 +50,38 @@ def test_notes_beside_the_header_do_not_hide_the_units_row(write):
     assert "2 empty column(s) dropped" in meta.warnings[0]
 
 
+def test_a_strain_computed_from_the_crosshead_is_not_an_extensometer(write):
+    # real Bluehill exports name the channel a strain was computed from in brackets:
+    # "(Extension)" is the crosshead's travel, "(Strain 1)" the extensometer's
+    text = ('Time,Extension,Load,Flexure stress,Flexure strain (Extension),'
+            'Tensile strain (Strain 1)\n(s),(mm),(N),(MPa),(mm/mm),(%)\n'
+            '"0.00000","0.20005","10.03282","8.33135","0.00032","0.01"\n'
+            '"0.10000","0.20612","10.4","8.6","0.00033","0.02"\n')
+    _, meta = read_table(write("flexure.csv", text))
+    kinds = {c.name: (c.role, c.unit, c.kind) for c in meta.columns}
+    assert kinds["Flexure strain (Extension)"] == ("strain_1", "mm/mm", "gauge")
+    assert kinds["Tensile strain (Strain 1)"] == ("strain_2", "%", "extensometer")
+
+
+def test_units_as_the_last_word_of_every_name_are_read(write):
+    # a real Bluehill .is_tens.raw.csv names row; no units row, no brackets
+    text = ("Time sec;Extension mm;Strain 1 %;Load N\n0;-0.00012;-4.196304e-005;-16.88363\n"
+            "0.1;-0.00012;0.0002235641;-16.85156\n")
+    table, meta = read_table(write("raw.csv", text))
+    units = {c.name: (c.role, c.unit) for c in meta.columns}
+    assert units == {"Time": ("time", "sec"), "Extension": ("gauge_1", "mm"),
+                     "Strain 1": ("strain_1", "%"), "Load": ("force", "N")}
+    np.testing.assert_allclose(table["gauge_1"], [-0.12e-6, -0.12e-6])
+
+
+@pytest.mark.parametrize("header", ["Time s;Weg 1;Load N", "Time;Extension mm;Load N"])
+def test_a_last_word_is_a_unit_only_when_every_name_ends_in_one(write, header):
+    table, meta = read_table(write("raw.csv", f"{header}\n0;1;2\n1;2;3\n"),
+                             units={"time": "s", "gauges": "mm", "force": "N"})
+    names = [c.name for c in meta.columns]
+    assert names == header.split(";")
+
+
 SHIMADZU_SPECIMENS = (
     '"CuivreC1",,,"CuivreC1+N",,,"AcierC70",,\n'
     '"Temps","Force","Stroke","Temps","Force","Stroke","Temps","Force","Stroke"\n'
