@@ -37,7 +37,7 @@ import numpy as np
 import pandas as pd
 
 from pipeline.errors import ChainbenchError, ColumnError, LayoutError, UnitError
-from pipeline.ingest.names import gauge_kind, repeats, tokens
+from pipeline.ingest.names import gauge_kind, peak_partner, repeats, tokens
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import SHEET_KEY, display_name, role_of_key
 from pipeline.ingest.table import GAP_FACTOR, ROLES, ColumnInfo, TableMetadata
@@ -155,7 +155,8 @@ def settle(
     ------
     LayoutError
         When the columns repeat one group of names side by side (several
-        specimens in one file: :func:`~pipeline.ingest.names.repeats`).
+        specimens in one file: :func:`~pipeline.ingest.names.repeats`), or when
+        every force column is a cycle's maximum or minimum (a table of peaks).
     ColumnError, UnitError
         In strict mode, as listed in the module docstring.
     """
@@ -169,6 +170,7 @@ def settle(
             hint="export each specimen to a file of its own, or delete the other "
                  "specimens' columns; one file is one run",
         )
+    _refuse_a_table_of_peaks(raw)
     problems = _Problems(strict, meta.warnings)
     sheet_units = _run_sheet_units(units, meta.file)
     assigned = _settle_roles(raw, empty, problems)
@@ -206,6 +208,21 @@ def settle(
     return Conversion(columns, infos)
 
 
+
+def _refuse_a_table_of_peaks(raw: RawColumns) -> None:
+    """Refuse a table of one row per cycle, whose force columns are its peaks and valleys."""
+    forces = raw.candidates.roles.get("force", [])
+    partners = [peak_partner(raw.names, index) for index in forces]
+    if forces and all(partners) and "force" not in raw.candidates.explicit:
+        raise LayoutError(
+            f"the force columns {raw.names[forces[0]]!r} and {partners[0]!r} are a cycle's "
+            "extremes: the file is a table of one row per cycle, not the samples of a log",
+            file=raw.metadata.file, row=raw.metadata.header_line,
+            hint="export the test's raw data (every sample) rather than its trends or "
+                 "peaks table, or name the force column in the run sheet, "
+                 "columns = {force = \"...\"}",
+        )
+
 def build(
     raw: RawTable, *, kind: str, units: Mapping | None = None, strict: bool = True
 ) -> tuple[pd.DataFrame, TableMetadata]:
@@ -229,7 +246,8 @@ def build(
     ------
     LayoutError
         When the columns repeat one group of names side by side (several
-        specimens in one file: :func:`~pipeline.ingest.names.repeats`).
+        specimens in one file: :func:`~pipeline.ingest.names.repeats`), or when
+        every force column is a cycle's maximum or minimum (a table of peaks).
     ColumnError, UnitError
         In strict mode, as listed in the module docstring.
     """

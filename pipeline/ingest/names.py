@@ -243,3 +243,41 @@ def repeats(names: list[str]) -> int:
                 name == folded[index % size] for index, name in enumerate(folded)):
             return len(folded) // size
     return 1
+
+
+#: Words that make a column one statistic of each cycle, in a table of one row per
+#: cycle (Instron WaveMatrix's trends: ``"Kraft:Maximum"``, ``"Kraft:Minimum"``).
+_PEAK_WORDS = {"maximum": "max", "max": "max", "peak": "max", "höchstwert": "max",
+               "minimum": "min", "min": "min", "valley": "min", "tiefstwert": "min"}
+_PEAK_TOKENS = {tokens(word)[0]: side for word, side in _PEAK_WORDS.items()}
+
+
+def peak_partner(names: list[str], index: int) -> str | None:
+    """The column that is the other extreme of column `index`'s channel, or None.
+
+    A column is one of a cycle's extremes when the names hold its name with a
+    maximum word and with a minimum word, and nothing else differs.
+
+    Examples
+    --------
+    >>> names = ["Zyklen", "Kraft:Maximum (N)", "Kraft:Minimum (N)", "Weg"]
+    >>> peak_partner(names, 1), peak_partner(names, 3)
+    ('Kraft:Minimum (N)', None)
+    """
+    def extreme(name: str) -> tuple[tuple[str, ...], str] | None:
+        words = tokens(name)
+        found = [(position, _PEAK_TOKENS[word]) for position, word in enumerate(words)
+                 if word in _PEAK_TOKENS]
+        if len(found) != 1:
+            return None
+        position, side = found[0]
+        return words[:position] + words[position + 1:], side
+
+    mine = extreme(names[index])
+    if mine is None:
+        return None
+    for other in names:
+        theirs = extreme(other)
+        if theirs is not None and theirs[0] == mine[0] and theirs[1] != mine[1]:
+            return other
+    return None

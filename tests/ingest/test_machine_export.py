@@ -161,3 +161,27 @@ def test_run_sheet_columns_pick_among_candidates(write):
 def test_parse_preamble(lines, expected):
     delimiter = "\t" if "\t" in lines[0] else ","
     assert parse_preamble(lines, delimiter) == expected
+
+
+# a real Instron WaveMatrix trends export: one row per cycle, its peaks and valleys
+TRENDS = (
+    '"Gesamtzyklen";"PC:Zyklusstartzeit (s)";"Position des Aktuators:Maximum (mm)";'
+    '"Position des Aktuators:Minimum (mm)";"Kraft:Maximum (N)";"Kraft:Minimum (N)";\r\n'
+    "1;0,001;17,3591376954666;17,240651615169;-6,79378541467538;-16,7622730238039;\r\n"
+    "2;5,599;17,2344483349125;17,1766469408867;-5,11263522669864;-19,9729208551079;\r\n"
+)
+
+
+def test_a_table_of_each_cycles_peaks_is_not_read_as_a_log(write):
+    with pytest.raises(LayoutError, match="'Kraft:Maximum' and 'Kraft:Minimum' are a cycle's "
+                                          "extremes") as caught:
+        read_table(write("trends.csv", TRENDS))
+    assert "raw data" in caught.value.hint
+
+
+def test_a_named_force_is_read_and_a_raw_force_beside_its_extremes_is_a_choice(write):
+    table, _ = read_table(write("trends.csv", TRENDS), columns={"force": "Kraft:Maximum"})
+    np.testing.assert_allclose(table["force"], [-6.79378541467538, -5.11263522669864])
+    text = "Time (s),Load (N),Load max (N),Load min (N),Extension (mm)\n0,1,2,0,0.1\n1,2,2,0,0.2\n"
+    with pytest.raises(ColumnError, match="3 columns could be the force"):
+        read_table(write("log.csv", text))
