@@ -7,8 +7,9 @@ shows ``unit: null``); a file that cannot be read at all gives its typed error
 on one line and a non-zero exit status (``--debug`` shows the traceback).
 
 Cycles are counted by :func:`pipeline.condition.segmentation.count_cycles` on
-the force column; the machine's own counter, when the file has one, is shown
-beside it as ``machine_cycles``.
+the force column; the cycles of the machine's own counter that the file holds,
+when it has one, are shown beside them as ``machine_cycles``, with a warning
+when the counter skips cycles (a fatigue machine logging some cycles only).
 """
 
 from __future__ import annotations
@@ -49,15 +50,16 @@ class Kind(StrEnum):
     roller_engagement = "roller-engagement"
 
 
-def machine_cycles(table: pd.DataFrame, metadata: TableMetadata) -> int | None:
-    """Load cycles the machine's counter covers (segments counted two per cycle), or None."""
+def counted_cycles(table: pd.DataFrame, metadata: TableMetadata) -> np.ndarray | None:
+    """The load cycles of the machine's counter the file holds (segments counted two per
+    cycle), sorted, or None without a counter."""
     if "cycle_count" not in table:
         return None
     counts = table["cycle_count"].to_numpy()
     counts = counts[np.isfinite(counts)]
     unit = next((column.unit for column in metadata.columns if column.role == "cycle_count"), None)
     per_cycle = 2 if (unit or "").strip().lower() in SEGMENT_UNITS else 1
-    return int(np.unique(np.floor(counts / per_cycle)).size) if counts.size else None
+    return np.unique(np.floor(counts / per_cycle)) if counts.size else None
 
 
 def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
@@ -65,8 +67,14 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
     from pipeline.condition.segmentation import count_cycles
 
     cycles = count_cycles(table["force"].to_numpy()) if "force" in table else None
-    counted = machine_cycles(table, metadata)
+    held = counted_cycles(table, metadata)
+    counted = None if held is None else held.size
     warnings = list(metadata.warnings)
+    if held is not None and held[-1] - held[0] + 1 > held.size:
+        warnings.append(
+            f"the machine's counter runs from {held[0]:g} to {held[-1]:g}, and the file "
+            f"holds {held.size} of those cycles: the machine logged some cycles only"
+        )
     if cycles is not None and counted is not None and cycles != counted:
         warnings.append(
             f"the force signal shows {cycles} load cycle(s), the machine's counter {counted}"

@@ -37,6 +37,20 @@ def test_json_document(tmp_path):
     assert report["warnings"] == []
 
 
+def test_a_counter_that_skips_cycles_is_named(tmp_path):
+    # a real fatigue log's counter: cycles 0 to 3 logged, then 110
+    path = tmp_path / "fatigue.csv"
+    path.write_text("N_cycles,Load [kN],Weg [mm]\n" + "".join(
+        f"{cycle},{load},{load / 100}\n" for cycle in (0, 1, 2, 3, 110) for load in (0, 5, 0)))
+    report = inspect_json(str(path))
+    assert report["machine_cycles"] == 5
+    assert any("counter runs from 0 to 110, and the file holds 5" in warning
+               for warning in report["warnings"])
+    dense = tmp_path / "dense.csv"
+    dense.write_text(path.read_text().replace("\n110,", "\n4,"))
+    assert not any("counter runs" in warning for warning in inspect_json(str(dense))["warnings"])
+
+
 def test_table_output(tmp_path):
     path = tmp_path / "t.csv"
     path.write_text(PLAIN)
