@@ -37,7 +37,8 @@ File defects handled
   (:mod:`pipeline.ingest.delimited`): missing values, a truncated last line,
   text after the last row.
 
-Refused, with a hint: ``X_Columns Multi`` (an X column per channel), and a file
+Refused, with a hint: ``X_Columns Multi`` with several channels (an X column
+per channel; with one channel it is ``X_Columns One``), and a file
 of several segments (a header again after the rows).
 """
 
@@ -96,7 +97,8 @@ def _delimiter(head: Head, first_end: int) -> str:
         for delimiter in ("\t", ","):
             fields = [field.strip() for field in line.split(delimiter)]
             if len(fields) > 1 and fields[0] == "Separator":
-                separator = fields[1].lower()
+                # an empty value after a tab: the tab itself was written as the value
+                separator = fields[1].lower() or ("tab" if delimiter == "\t" else "")
                 if separator not in SEPARATORS:
                     raise LayoutError(
                         f"separator {fields[1]!r} is not read", file=head.name,
@@ -123,12 +125,14 @@ def table_spec(head: Head) -> TableSpec:
     delimiter = _delimiter(head, ends[0])
     file_tags = _tags(head.lines[: ends[0]], delimiter)
     segment = _tags(head.lines[ends[0] + 1: ends[1]], delimiter)
+    names_index = ends[1] + 1
     x_columns = (file_tags.get("X_Columns") or ["One"])[0]
-    if x_columns.lower() == "multi":
+    if x_columns.lower() == "multi" and split_fields(
+            head.lines[names_index], delimiter).count("X_Value") > 1:
+        row = next(index for index, line in enumerate(head.lines) if line.startswith("X_Columns"))
         raise LayoutError(
             "X_Columns Multi (an X column for every channel) is not read", file=head.name,
-            row=ends[0], hint="write the file with one X column (X_Columns One) or none")
-    names_index = ends[1] + 1
+            row=row + 1, hint="write the file with one X column (X_Columns One) or none")
     data_index = names_index + 1
     data_lines = [line for line in head.lines[data_index:] if line.strip()]
     if not data_lines:
@@ -142,6 +146,8 @@ def table_spec(head: Head) -> TableSpec:
             hint="write one header only (Segment Headers: One header only), or split the file")
     names = [field.strip() for field in split_fields(head.lines[names_index], delimiter)]
     width = len(split_fields(data_lines[0], delimiter))
+    while len(names) > 1 and names[-1] == "" and names[-2] in ("", COMMENT):
+        names.pop()  # LabVIEW pads the names row with empty fields after the comment's
     if names[-1] == COMMENT:  # the data's width: rows with a comment have one field more
         names.pop()
         width = min(width, len(names))

@@ -33,11 +33,11 @@ def lvm(*, x_columns="One", decimal=".", separator="Tab", units=("N", "mm"), x0=
             line("Decimal_Separator", decimal), line("Multi_Headings", "No"),
             line("X_Columns", "Multi" if multi else x_columns), line("Operator", "lab"),
             "***End_of_Header***", "", *segment,
-            line("X_Value", "Force", "Extension", "Comment")]
+            line("X_Value", "Force", *(["X_Value"] if multi else []), "Extension", "Comment")]
     first = (lambda t: [num(t)]) if x_columns == "One" else (lambda t: [""])
     body = rows if rows is not None else [
-        line(*first(t), num(f), num(e)) for t, f, e in zip(TIME, FORCE_N, EXTENSION_MM,
-                                                           strict=True)]
+        line(*first(t), num(f), *([num(t)] if multi else []), num(e))
+        for t, f, e in zip(TIME, FORCE_N, EXTENSION_MM, strict=True)]
     tail = ["", *segment, line("X_Value", "Force", "Extension", "Comment"), *body] \
         if segment_again else []
     return "\r\n".join([*head, *body, *tail]) + "\r\n"
@@ -83,6 +83,21 @@ def test_what_is_not_read_is_refused_with_a_hint(write, options, message):
     with pytest.raises(LayoutError, match=message) as caught:
         read_table(write("log.lvm", lvm(**options)))
     assert caught.value.hint
+
+
+def test_one_channel_with_its_x_column_and_the_separator_written_as_itself(write):
+    # a real LabVIEW 2017 file: "Separator<TAB>" (the tab itself as the value),
+    # X_Columns Multi with one channel, and the names row padded after "Comment"
+    text = ("LabVIEW Measurement\t\nWriter_Version\t2\nSeparator\t\nDecimal_Separator\t.\n"
+            "X_Columns\tMulti\n***End_of_Header***\t\n\t\nChannels\t1\t\t\t\n"
+            "Samples\t3\t\t\t\nY_Unit_Label\tN\t\t\t\nX_Dimension\tTime\t\t\t\n"
+            "***End_of_Header***\t\t\t\t\nX_Value\tChan 0\tComment\t\t\t\n"
+            "-0.1997486759\t0.23167\n-0.1993486759\t0.24167\n-0.1989486759\t0.25167\n")
+    table, meta = read_table(write("Test1.lvm", text), kind="engagement",
+                             columns={"force": "Chan 0"})
+    assert (meta.delimiter, [c.name for c in meta.columns]) == ("\t", ["Time", "Chan 0"])
+    np.testing.assert_allclose(table["time"], [-0.1997486759, -0.1993486759, -0.1989486759])
+    np.testing.assert_allclose(table["force"], [0.23167, 0.24167, 0.25167])
 
 
 def test_a_header_that_does_not_end_is_refused(write):
