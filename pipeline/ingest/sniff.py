@@ -441,7 +441,9 @@ def find_table(
         raise LayoutError(
             "no names row above the first data row",
             file=name, row=data + 1,
-            hint="add a header row naming the columns, e.g. 'time [s],force [kN],gauge1 [mm]'",
+            hint="add a header row naming the columns, separated as the data are, e.g. "
+                 + {"\t": "<Tab>"}.get(delimiter, delimiter).join(
+                     ("'time [s]", "force [kN]", "gauge1 [mm]'")),
         )
     names = rows[above]
     pairs = delimiter == "," and decimal == "." and 2 * len(names) == width

@@ -65,6 +65,19 @@ def test_errors_name_the_buffer():
     assert str(caught.value).startswith("upload.csv, line 1: ")
 
 
+@pytest.mark.parametrize("text, example", [
+    (b"1,139302\t305,800815\t1,883096\n1,149302\t-16,572605\t0,317137\n",
+     "'time [s]<Tab>force [kN]<Tab>gauge1 [mm]'"),
+    (b"1,5;2,5\n3,5;4,5\n", "'time [s];force [kN];gauge1 [mm]'"),
+])
+def test_the_header_row_suggested_is_separated_as_the_data_are(text, example):
+    # a real headerless tab file with decimal commas: a comma-separated header
+    # would have split into more fields than its rows
+    with pytest.raises(LayoutError, match="no names row") as caught:
+        parse_table(text, name="data.lvm")
+    assert caught.value.hint.endswith(example)
+
+
 def test_the_name_suffix_counts_as_a_file_suffix():
     with pytest.raises(LayoutError, match=r"\.xls"):
         parse_table(b"time [s],force [kN]\n0,1\n", name="old.xls")
