@@ -347,6 +347,15 @@ def detect_dialect(
                 file=name, row=len(lines) + 1,
                 hint="the machine wrote no measurements: export the test again",
             )
+        texts = _text_in_every_row(sample, delimiters)
+        if texts:
+            raise LayoutError(
+                "every row holds text beside its numbers (" + ", ".join(map(repr, texts))
+                + "): the readers read columns of numbers only",
+                file=name,
+                hint="export the measured channels only, or delete the columns of text in "
+                     "a copy of the file",
+            )
         raise LayoutError(
             "no table of numbers found at the start of the file",
             file=name,
@@ -354,6 +363,18 @@ def detect_dialect(
             'give the format in the run sheet (format = "xlsx" or "tdms") if it is not text',
         )
     return best[1], best[2], best[3]
+
+
+def _text_in_every_row(sample: list[str], delimiters: tuple[str, ...]) -> list[str]:
+    """The text cells of the last row, when a delimiter splits every row of `sample`
+    into as many fields, with numbers in each (a table with columns of text); else []."""
+    for delimiter in delimiters:
+        rows = [split_fields(line, delimiter) for line in sample[1:]]
+        if (len(rows) >= 2 and len({len(row) for row in rows}) == 1 and len(rows[0]) >= 2
+                and all(any(is_number(cell, ".") for cell in row) for row in rows)):
+            return [cell.strip() for cell in rows[-1]
+                    if not is_number(cell, ".") and not is_missing(cell)][:3]
+    return []
 
 
 def _has_two_numbers(line: str) -> bool:

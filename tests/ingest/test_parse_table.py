@@ -78,6 +78,18 @@ def test_the_header_row_suggested_is_separated_as_the_data_are(text, example):
     assert caught.value.hint.endswith(example)
 
 
+def test_columns_of_text_in_every_row_are_named_as_the_reason():
+    # a real fatigue-database export: text columns beside the numbers in every row
+    text = (b'"Cycle Label","Data State","Elapsed Time Sec","Qual State","Strain","Stress Mpa",'
+            b'"Count","Sample","Alloy","Material_Form","Heat"\n' + b"".join(
+                b'"Cycle %d","CapPass",%.2f,"Qualified",0.00002,6.47,%d,"43-13","Alloy 617",'
+                b'"Plate",314626\n' % (1 + row // 2, row * 0.02, row + 1) for row in range(4)))
+    with pytest.raises(LayoutError, match=r"every row holds text beside its numbers "
+                                          r"\('Cycle 2', 'CapPass', 'Qualified'\)") as caught:
+        parse_table(text, name="cycles.csv")
+    assert "columns of text" in caught.value.hint
+
+
 def test_the_name_suffix_counts_as_a_file_suffix():
     with pytest.raises(LayoutError, match=r"\.xls"):
         parse_table(b"time [s],force [kN]\n0,1\n", name="old.xls")
