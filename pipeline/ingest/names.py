@@ -69,6 +69,13 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "length": ("longitud",),
         "speed": ("velocidad",),
     },
+    # Chinese names are whole words: "压缩应力" (compressive stress) is not "力" (force)
+    "zh": {
+        "time": ("时间", "试验时间"),
+        "force": ("载荷", "负荷", "力", "试验力"),
+        "gauge": ("位移", "变形", "伸长", "引伸计", "横梁位移", "应变"),
+        "cycle_count": ("循环计数", "循环次数", "循环"),
+    },
 }
 
 #: Names that say what a displacement channel measures: the travel of the machine's
@@ -81,12 +88,12 @@ GAUGE_KINDS: dict[str, tuple[str, ...]] = {
         "crosshead", "cross head", "stroke", "position", "actuator", "piston", "machine",
         "traverse", "traversenweg", "standardweg", "standardwegaufnehmer", "kolbenweg",
         "maschinenweg", "trawersa", "trawersy", "tłok", "travesaño", "actuador", "pistón",
-        "carrera",
+        "carrera", "横梁位移", "横梁", "行程",
     ),
     "extensometer": (
         "extensometer", "ext", "clip gauge", "strain", "ave", "dehnung", "feindehnung",
         "ansetzdehnungsaufnehmer", "maytec", "ekstensometr", "odkształcenie", "extensómetro",
-        "deformación", "dial", "czujnik",
+        "deformación", "dial", "czujnik", "引伸计", "应变",
     ),
 }
 

@@ -27,6 +27,9 @@ from pipeline.ingest.names import (
         ("Machine_N_cycles", "cycle_count"),
         ("Cycle time", "time"), ("Load test/Time", "time"), ("Rig/Branch tension", "force"),
         ("Segment ID", None), ("exx--1", None), ("", None),
+        # a real Bluehill export in Chinese: 时间, 位移, 载荷, 压缩应力, 循环计数
+        ("时间", "time"), ("位移", "gauge"), ("载荷", "force"), ("循环计数", "cycle_count"),
+        ("压缩应力", None),
     ],
 )
 def test_match_role(name, role):
