@@ -58,6 +58,7 @@ def test_unit_role(unit, role):
         "Nm",  # a torque is not a gauge ("nm" would be)
         "pcs", "PC", "AU",  # parsecs and astronomical units: no machine measures in them
         "rpm", "lx",  # a rotation speed or an illuminance is not an angle
+        "Mm", "Ms",  # megametres and megaseconds: refused rather than read a million-fold
     ],
 )
 def test_units_a_lab_means_otherwise_give_no_role(unit):
