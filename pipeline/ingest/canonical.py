@@ -208,7 +208,6 @@ def settle(
     return Conversion(columns, infos)
 
 
-
 def _refuse_a_table_of_peaks(raw: RawColumns) -> None:
     """Refuse a table of one row per cycle, whose force columns are its peaks and valleys."""
     forces = raw.candidates.roles.get("force", [])
@@ -222,6 +221,7 @@ def _refuse_a_table_of_peaks(raw: RawColumns) -> None:
                  "peaks table, or name the force column in the run sheet, "
                  "columns = {force = \"...\"}",
         )
+
 
 def build(
     raw: RawTable, *, kind: str, units: Mapping | None = None, strict: bool = True

@@ -64,7 +64,7 @@ import pyarrow as pa
 
 from pipeline.errors import EmptyFileError, LayoutError
 from pipeline.ingest.clock import ClockColumn, declare_seconds
-from pipeline.ingest.names import split_name_unit
+from pipeline.ingest.names import header_text, split_name_unit
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import Candidates, find_candidates
@@ -101,8 +101,8 @@ def header_columns(spec: TableSpec) -> tuple[list[str], list[str | None]]:
             return [name for name, _ in trailing], [unit for _, unit in trailing]
     names, units = [], []
     for cell, (name, unit), row_unit in zip(spec.names, split, spec.units, strict=True):
-        if row_unit and unit is not None and _bare(unit) != _bare(row_unit):
-            name = cell.strip().lstrip("\ufeff").strip()
+        if row_unit and unit is not None and unit != row_unit:
+            name = header_text(cell)
         names.append(name)
         units.append(row_unit or unit)
     return names, units
@@ -121,10 +121,6 @@ def _trailing_unit_words(cells: list[str]) -> list[tuple[str, str | None]] | Non
             name and not unit.isdigit() and spellings(unit) for name, unit in named):
         return None
     return [(name.strip(), unit or None) for name, _, unit in split]
-
-
-def _bare(unit: str) -> str:
-    return unit.strip().strip("()[]<>").strip()
 
 
 def metadata(head: Head, spec: TableSpec, layout: str, preamble: dict[str, str]) -> TableMetadata:

@@ -126,13 +126,14 @@ def table_spec(head: Head) -> TableSpec:
     file_tags = _tags(head.lines[: ends[0]], delimiter)
     segment = _tags(head.lines[ends[0] + 1: ends[1]], delimiter)
     names_index = ends[1] + 1
+    names = [field.strip() for field in split_fields(head.lines[names_index], delimiter)]
     x_columns = (file_tags.get("X_Columns") or ["One"])[0]
-    if x_columns.lower() == "multi" and split_fields(
-            head.lines[names_index], delimiter).count("X_Value") > 1:
-        row = next(index for index, line in enumerate(head.lines) if line.startswith("X_Columns"))
+    if x_columns.lower() == "multi" and names.count("X_Value") > 1:
+        row = next((index + 1 for index, line in enumerate(head.lines[: ends[0]])
+                    if line.strip().startswith("X_Columns")), None)
         raise LayoutError(
             "X_Columns Multi (an X column for every channel) is not read", file=head.name,
-            row=row + 1, hint="write the file with one X column (X_Columns One) or none")
+            row=row, hint="write the file with one X column (X_Columns One) or none")
     data_index = names_index + 1
     data_lines = [line for line in head.lines[data_index:] if line.strip()]
     if not data_lines:
@@ -144,7 +145,6 @@ def table_spec(head: Head) -> TableSpec:
             "the file holds several segments, each with its own header", file=head.name,
             row=(ends[2] + 1) if len(ends) > 2 else None,
             hint="write one header only (Segment Headers: One header only), or split the file")
-    names = [field.strip() for field in split_fields(head.lines[names_index], delimiter)]
     width = len(split_fields(data_lines[0], delimiter))
     while len(names) > 1 and names[-1] == "" and names[-2] in ("", COMMENT):
         names.pop()  # LabVIEW pads the names row with empty fields after the comment's

@@ -134,6 +134,11 @@ _KEYWORDS: tuple[tuple[tuple[str, ...], str], ...] = tuple(
 ) + tuple((tokens(word), _TRANSVERSE) for word in TRANSVERSE_NAMES)
 
 
+def header_text(header: str) -> str:
+    """A header cell without surrounding blanks or a byte-order mark."""
+    return header.strip().lstrip("\ufeff").strip()
+
+
 def split_name_unit(header: str) -> tuple[str, str | None]:
     """Split a header cell into the column name and the unit in brackets.
 
@@ -151,7 +156,7 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
         The text inside a trailing ``[...]``, ``(...)`` or ``<...>``, or after `` / `` (or
         a single ``/``) when pint reads it as a unit; None when there is none.
     """
-    text = header.strip().lstrip("\ufeff").strip()
+    text = header_text(header)
     match = _BRACKETED.match(text)
     if match is not None and match["name"]:
         unit = next(match[group] for group in ("sq", "par", "ang") if match[group] is not None)
