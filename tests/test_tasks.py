@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import threading
+import time
+
 import pytest
 
 from pipeline.tasks import Mapped, map_tasks
@@ -15,6 +18,21 @@ def _scaled(value: int, *, factor: int, offset: int = 0) -> int:
 
 def _inverse(value: int) -> float:
     return 1 / value
+
+
+#: Holds the tasks of the queueing test until the scheduler's state is read.
+_RELEASE = threading.Event()
+
+
+def _held(value: int, **shared: int) -> int:
+    _RELEASE.wait(timeout=30)
+    return value + sum(shared.values())
+
+
+def _scheduler_counts(dask_scheduler) -> tuple[int, int]:
+    """Tasks queued on the scheduler, and tasks it has handed to workers."""
+    processing = sum(len(worker.processing) for worker in dask_scheduler.workers.values())
+    return len(dask_scheduler.queued), processing
 
 
 def test_here_every_item_in_order_with_the_shared_arguments():
@@ -46,3 +64,24 @@ def test_on_a_cluster_the_first_error_is_raised():
                             dashboard_address=None, set_as_default=False) as client:
         with pytest.raises(ZeroDivisionError):
             Mapped(_inverse, [1, 0], client).results()
+
+
+def test_on_a_cluster_the_tasks_wait_on_the_scheduler_for_a_free_worker():
+    # Five shared values scattered one by one would be five dependencies: the scheduler
+    # would then hand every task to a worker at once, and one worker could sit idle at
+    # the end while the other works through its share.
+    shared = {name: index for index, name in enumerate("abcde")}
+    _RELEASE.clear()
+    with distributed.Client(processes=False, n_workers=2, threads_per_worker=1,
+                            dashboard_address=None, set_as_default=False) as client:
+        try:
+            mapped = Mapped(_held, list(range(20)), client, **shared)
+            deadline = time.monotonic() + 10
+            while sum(counts := client.run_on_scheduler(_scheduler_counts)) < 20:
+                assert time.monotonic() < deadline, counts
+                time.sleep(0.01)
+            queued, processing = counts
+            assert processing <= 4 and queued >= 16  # at most two per one-thread worker
+        finally:
+            _RELEASE.set()
+        assert mapped.results() == [value + 10 for value in range(20)]
