@@ -6,9 +6,11 @@ since the start. Such a column is read by pyarrow (or npTDMS) as a time of day
 or a timestamp and becomes seconds after the first data row's stamp, so that
 every chunk of a long log counts from the same origin. Nothing is guessed:
 
-* only these two forms are read, with ``.`` before the fraction of a second;
-  a date in another order (``05.03.2024``, ``3/5/2024``) stays text, and the
-  column is refused as not a number;
+* only these two forms are read, with ``.`` before the fraction of a second,
+  the date's parts joined by ``-`` or, as some loggers write it, by ``/``
+  (``2024/03/05 14:03:27.125``: the year first, so still one reading); a date
+  in another order (``05.03.2024``, ``3/5/2024``) stays text, and the column
+  is refused as not a number;
 * a time of day that passes midnight steps back by a day: that is reported as
   a time step back (:mod:`pipeline.ingest.canonical`), not repaired. A
   date-time carries its date, so it simply goes on counting.
@@ -27,15 +29,17 @@ import pyarrow.compute as pc
 #: The clock forms read, by kind: a time of day, and an ISO 8601 date and time.
 _FORMS = {
     "time of day": re.compile(r" *\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
-    "date and time": re.compile(r" *\d{4}-\d{2}-\d{2}[T ]\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
+    "date and time": re.compile(
+        r" *\d{4}(?P<sep>[-/])\d{2}(?P=sep)\d{2}[T ]\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
 }
 #: Anything with hours and minutes: a clock reading, read or not.
 _CLOCK_LIKE = re.compile(r"\d{1,2}:\d{2}")
 #: The hint for a clock reading in a form that is not read.
 UNREAD_FORM_HINT = (
     "the column holds clock readings in a form the reader does not guess (it reads "
-    "HH:MM:SS.fff with two-digit hours and YYYY-MM-DD HH:MM:SS.fff): export the time in "
-    "seconds, or name another time column in the run sheet")
+    "HH:MM:SS.fff with two-digit hours and YYYY-MM-DD HH:MM:SS.fff or YYYY/MM/DD "
+    "HH:MM:SS.fff): export the time in seconds, or name another time column in the run "
+    "sheet")
 #: The arrow type each kind is parsed as.
 _ARROW_TYPES = {"time of day": pa.time64("ns"), "date and time": pa.timestamp("ns")}
 #: Nanoseconds per second.
@@ -47,7 +51,7 @@ def clock_kind(text: str) -> str | None:
 
     Examples
     --------
-    >>> clock_kind("14:03:27.125"), clock_kind("2024-03-05T14:03:27"), clock_kind("1.5")
+    >>> clock_kind("14:03:27.125"), clock_kind("2024/03/05 14:03:27"), clock_kind("1.5")
     ('time of day', 'date and time', None)
     """
     for kind, form in _FORMS.items():
@@ -82,38 +86,57 @@ class ClockColumn:
 
     @property
     def arrow_type(self) -> pa.DataType:
-        """The type pyarrow parses the column's cells as."""
-        return _ARROW_TYPES[self.kind]
+        """The type pyarrow parses the column's cells as: text for a date with ``/``,
+        which its CSV reader does not take for a timestamp."""
+        return pa.string() if self._slashed else _ARROW_TYPES[self.kind]
+
+    def readings(self, cells: pa.ChunkedArray) -> pa.ChunkedArray:
+        """The column as pyarrow's CSV reader gave it (:attr:`arrow_type`), as times of
+        day or timestamps; raises :class:`pyarrow.ArrowInvalid` on a cell that is not a
+        reading."""
+        if not self._slashed:
+            return cells
+        return pc.cast(self._nanoseconds(cells), pa.timestamp("ns"))
 
     def seconds(self, readings: pa.ChunkedArray) -> pa.ChunkedArray:
         """`readings` (times of day or timestamps, any resolution) as float64 seconds after
         :attr:`first`."""
-        return self._after_first(pc.cast(pc.cast(readings, self.arrow_type), pa.int64()))
+        return self._after_first(pc.cast(pc.cast(readings, _ARROW_TYPES[self.kind]),
+                                         pa.int64()))
 
     def seconds_of_texts(self, texts: list[str | None]) -> np.ndarray:
         """Cells written as text (a spreadsheet's), as float64 seconds after :attr:`first`;
         NaN where a cell is None."""
-        return self._after_first(self._nanoseconds(texts)).to_numpy()
+        return self._after_first(self._nanoseconds(
+            pa.chunked_array([pa.array(texts, pa.string())]))).to_numpy()
 
-    def _nanoseconds(self, texts: list[str | None]) -> pa.ChunkedArray:
+    @cached_property
+    def _slashed(self) -> bool:
+        """Whether the date's parts are joined by ``/`` (``2024/03/05 14:03:27``)."""
+        return self.kind == "date and time" and "/" in self.first
+
+    def _nanoseconds(self, texts: pa.ChunkedArray) -> pa.ChunkedArray:
         """Texts as int64 nanoseconds: since midnight, or since 1970 for a date and time."""
-        column = pc.utf8_trim_whitespace(pa.chunked_array([pa.array(texts, pa.string())]))
+        column = pc.utf8_trim_whitespace(texts)
         if self.kind == "time of day":  # arrow casts text to a timestamp, not to a time
             column = pc.binary_join_element_wise("1970-01-01 ", column, "")
+        elif self._slashed:  # the date first: the time has no "/"
+            column = pc.replace_substring(column, "/", "-")
         return pc.cast(pc.cast(column, pa.timestamp("ns")), pa.int64())
 
     @cached_property
     def _origin(self) -> int:
         """:attr:`first` in nanoseconds, parsed once (every row range subtracts it)."""
-        return self._nanoseconds([self.first])[0].as_py()
+        return self._nanoseconds(pa.chunked_array([[self.first]]))[0].as_py()
 
     def _after_first(self, nanoseconds: pa.ChunkedArray) -> pa.ChunkedArray:
         return pc.divide(pc.cast(pc.subtract(nanoseconds, self._origin), pa.float64()),
                          float(_NS))
 
     def matches(self, text: str) -> bool:
-        """True if `text` is a clock reading of this column's kind."""
-        return clock_kind(text) == self.kind
+        """True if `text` is a clock reading of this column's kind that the column reads
+        (a date joined by ``/`` only where the first reading's is)."""
+        return clock_kind(text) == self.kind and (self._slashed or "/" not in text)
 
     def mismatch(self, text: str) -> str:
         """The message for a cell `text` of this column that is not a clock reading like it."""

@@ -338,12 +338,17 @@ def parse_body(
     )
     try:
         with source:
-            return pacsv.read_csv(
+            table = pacsv.read_csv(
                 source,
                 read_options=read_options,
                 parse_options=pacsv.ParseOptions(delimiter=delimiter),
                 convert_options=convert_options,
             )
+        for index, clock in clocks.items():  # dates joined by "/" are read as text first
+            position = table.schema.get_field_index(labels[index])
+            table = table.set_column(position, labels[index],
+                                     clock.readings(table.column(position)))
+        return table
     except (pa.ArrowException, UnicodeDecodeError) as error:
         raise locate_defect(
             region, names, width, delimiter, decimal, float_columns, error, clocks

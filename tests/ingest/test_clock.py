@@ -23,10 +23,11 @@ def time_of_day(seconds: float, start: float = 86_398.5) -> str:
     return stamp.strftime("%H:%M:%S.%f")[:-3]
 
 
-def date_and_time(seconds: float, separator: str = " ") -> str:
+def date_and_time(seconds: float, separator: str = " ", date_separator: str = "-") -> str:
     stamp = datetime.datetime(2024, 3, 5, 23, 59, 58, 500_000) + datetime.timedelta(
         seconds=seconds)
-    return stamp.isoformat(sep=separator, timespec="milliseconds")
+    return stamp.isoformat(sep=separator, timespec="milliseconds").replace(
+        "-", date_separator)
 
 
 def log(cells: list[str], header: str = "Time,Load (kN)") -> str:
@@ -37,6 +38,8 @@ def log(cells: list[str], header: str = "Time,Load (kN)") -> str:
 @pytest.mark.parametrize("text, kind", [
     ("14:03:27", "time of day"), (" 14:03:27.125 ", "time of day"),
     ("2024-03-05 14:03:27.125", "date and time"), ("2024-03-05T14:03:27", "date and time"),
+    ("2018/12/07 17:16:36.882", "date and time"), ("2018/12-07 17:16:36", None),
+    ("12/07/2018 17:16:36", None),
     ("4:03:27", None), ("14:03", None), ("05.03.2024 14:03:27", None), ("14:03:27,125", None),
     ("1.5", None), ("", None),
 ])
@@ -52,16 +55,18 @@ def test_a_time_of_day_is_seconds_after_the_first(milliseconds):
     np.testing.assert_allclose(seconds, expected, rtol=0, atol=1e-9)
 
 
-def test_a_date_and_time_log_counts_on_past_midnight(write):
-    for separator in (" ", "T"):
-        path = write("log.csv", log([date_and_time(s, separator) for s in SECONDS]))
-        table, meta = read_table(path, kind="engagement")
-        np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
-        np.testing.assert_allclose(table["force"], np.round(FORCE_KN, 6) * 1e3)
-        assert meta.time_monotonic
-        (column,) = [c for c in meta.columns if c.role == "time"]
-        assert (column.unit, column.si_unit) == ("s", "s")
-        assert any("holds clock readings (date and time" in w for w in meta.warnings)
+@pytest.mark.parametrize("separator, date_separator", [(" ", "-"), ("T", "-"), (" ", "/")])
+def test_a_date_and_time_log_counts_on_past_midnight(write, separator, date_separator):
+    # the year first, the date's parts joined by "-" (ISO 8601) or by "/" (a force logger)
+    path = write("log.csv", log([date_and_time(s, separator, date_separator)
+                                 for s in SECONDS]))
+    table, meta = read_table(path, kind="engagement")
+    np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(table["force"], np.round(FORCE_KN, 6) * 1e3)
+    assert meta.time_monotonic
+    (column,) = [c for c in meta.columns if c.role == "time"]
+    assert (column.unit, column.si_unit) == ("s", "s")
+    assert any("holds clock readings (date and time" in w for w in meta.warnings)
 
 
 def test_a_time_of_day_past_midnight_is_reported_as_a_step_back(write):
@@ -134,3 +139,32 @@ def test_a_clock_form_not_read_is_refused_with_what_is_read(write, cell):
     assert (caught.value.row, caught.value.column) == (2, "Time")
     assert caught.value.message == f"{cell!r} is not a number"
     assert caught.value.hint == UNREAD_FORM_HINT
+
+
+@pytest.mark.parametrize("first, other", [("/", "-"), ("-", "/")])
+def test_a_column_of_dates_joined_by_slashes_reads_iso_dates_and_names_other_cells(
+        write, first, other):
+    cells = [date_and_time(s, date_separator=first) for s in SECONDS]
+    cells[4] = cells[4].replace(first, other)  # 2024-03-06 00:00:00.500 either way
+    if first == "/":  # a date of the same order, joined as in ISO 8601: read alike
+        table, _ = read_table(write("log.csv", log(cells)), kind="engagement")
+        np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
+        cells[7] = "14:03:27"
+    with pytest.raises(ValueParseError) as caught:
+        read_table(write("log.csv", log(cells)), kind="engagement")
+    bad = 7 if first == "/" else 4
+    assert (caught.value.row, caught.value.column) == (bad + 2, "Time")
+    assert caught.value.message == (
+        f"{cells[bad]!r} is not a clock reading like the first row's {cells[0]!r}")
+
+
+def test_year_month_day_with_slashes_as_spreadsheet_text(tmp_path):
+    book = openpyxl.Workbook()
+    sheet = book.active
+    sheet.append(["Time", "Load [kN]"])
+    for s, force in zip(SECONDS, FORCE_KN, strict=True):
+        sheet.append([date_and_time(float(s), date_separator="/"), float(force)])
+    path = tmp_path / "log.xlsx"
+    book.save(path)
+    table, _ = read_table(path, kind="engagement")
+    np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)

@@ -265,9 +265,11 @@ def test_tdms_time_channel_and_unequal_channels(tmp_path, tdms_writer):
         "Rig/Encoder: 310)", "1 empty column(s) dropped: Rig/Spare"]
 
 
-def test_clock_readings_count_from_the_file_first_row_in_every_range(write, index_step):
-    rows = [f"2024-03-05 23:59:{58 + row * 0.125:06.3f},{row}" if row < 16 else
-            f"2024-03-06 00:00:{(row - 16) * 0.125:06.3f},{row}" for row in range(30)]
+@pytest.mark.parametrize("joined", ["-", "/"])
+def test_clock_readings_count_from_the_file_first_row_in_every_range(write, index_step, joined):
+    rows = [f"2024{joined}03{joined}05 23:59:{58 + row * 0.125:06.3f},{row}" if row < 16 else
+            f"2024{joined}03{joined}06 00:00:{(row - 16) * 0.125:06.3f},{row}"
+            for row in range(30)]
     path = write("clock.csv", "Time,Load [N]\n" + "\n".join(rows) + "\n")
     reader, meta = assert_opens_as_read(path, kind="engagement")
     table, _ = reader.read(20, 30)
