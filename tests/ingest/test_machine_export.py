@@ -185,3 +185,33 @@ def test_a_named_force_is_read_and_a_raw_force_beside_its_extremes_is_a_choice(w
     text = "Time (s),Load (N),Load max (N),Load min (N),Extension (mm)\n0,1,2,0,0.1\n1,2,2,0,0.2\n"
     with pytest.raises(ColumnError, match="3 columns could be the force"):
         read_table(write("log.csv", text))
+
+
+# the header of a real Instron WaveMatrix time series (German), and its English wording
+WAVEMATRIX_HEADERS = {
+    "de": '"Gesamtzeit (s)";"Verstrichene Zykluszeit (s)";"Gesamtzyklen";"Verstrichene '
+          'Zyklen";"Schritt";"Position des Aktuators (mm)";"Kraft (N)"',
+    "en": '"Total Time (s)";"Elapsed Cycle Time (s)";"Total Cycles";"Elapsed Cycles";'
+          '"Step";"Position of the Actuator (mm)";"Load (N)"',
+}
+
+
+@pytest.mark.parametrize("language", ["de", "en"])
+def test_wavematrix_total_and_elapsed_counts_are_a_choice_in_either_language(write, language):
+    # the total cycles and the cycles of the current step are both counters: taking the
+    # step's without a word would restart the cycle numbers at every step
+    rows = "".join(f"{500 + row / 1000:.3f};{row / 1000:.3f};{992 + row // 3};{row // 3};2;"
+                   f"{17 + row / 100:.4f};{-1 - row / 10:.3f}\r\n".replace(".", ",")
+                   for row in range(9))
+    path = write("stop.csv", WAVEMATRIX_HEADERS[language] + "\r\n" + rows)
+    names = [cell.strip('"').rsplit(" (", 1)[0]
+             for cell in WAVEMATRIX_HEADERS[language].split(";")]
+    with pytest.raises(ColumnError, match=f"2 columns could be the time: {names[0]!r}, "
+                                          f"{names[1]!r}"):
+        read_table(path, kind="tensile")
+    with pytest.raises(ColumnError, match=f"2 columns could be the cycle_count: "
+                                          f"{names[2]!r}, {names[3]!r}"):
+        read_table(path, kind="tensile", columns={"time": names[0]})
+    table, _ = read_table(path, kind="tensile",
+                          columns={"time": names[0], "cycle_count": names[2]})
+    np.testing.assert_array_equal(table["cycle_count"], 992 + np.arange(9) // 3)
