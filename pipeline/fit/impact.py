@@ -168,21 +168,26 @@ def _require_ringing_events(onset1: np.ndarray) -> None:
 
 
 def _fit_ringing(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: WindowGeometry,
-                omega_n: float, margin: float) -> tuple[Ringing, np.ndarray, np.ndarray]:
+                omega_n: float, margin: float, span: int
+                ) -> tuple[Ringing, np.ndarray, np.ndarray]:
     """Fit omega_n and zeta of the branch on a few events.
 
-    A grid search over omega_n (0.88-1.14 times `omega_n`, zeta = 0.03), then
-    twice: onsets refined with the current values, lmfit (Levenberg-Marquardt)
-    of omega_n and zeta on the free-phase model, the linear coefficients
-    projected out. Before the second fit, events whose onsets left their reach
-    or whose residual exceeds :data:`RESIDUAL_OUTLIER` times the median (a
-    glitch, a missed seating) are dropped. Returns the fit and the refined
-    onsets [s] of the events kept.
+    `y` holds the events' reaches of `span` samples end to end. A grid search
+    over omega_n (0.88-1.14 times `omega_n`, zeta = 0.03), then twice: onsets
+    refined with the current values, lmfit (Levenberg-Marquardt) of omega_n and
+    zeta on the free-phase model, the linear coefficients projected out. After
+    each refinement, events whose onsets moved too far (out of the accepted
+    shift, or their window out of their reach, where it would take samples of
+    the next event's) are dropped; before the second fit, so are events whose
+    residual exceeds :data:`RESIDUAL_OUTLIER` times the median (a glitch, a
+    missed seating). Returns the fit and the refined onsets [s] of the events
+    kept.
     """
     def residual_of(omega: float, zeta: float) -> np.ndarray:
         return free_phase_residuals(y, onset1, onset2, geo, Ringing(omega, zeta))
 
     _require_ringing_events(onset1)
+    reach = np.arange(onset1.size)  # each event's reach: samples reach * span on
     grid = omega_n * np.exp(np.linspace(math.log(0.88), math.log(1.14), 9))
     best = float(min(grid, key=lambda w: float(np.sum(residual_of(w, ASSUMED_DAMPING) ** 2))))
     ringing = Ringing(best, ASSUMED_DAMPING)
@@ -191,13 +196,15 @@ def _fit_ringing(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: Win
     params.add("zeta", value=ASSUMED_DAMPING, min=1e-4, max=0.5)
     for second in (False, True):
         fits = settle_onsets(y, onset1, onset2, margin, geo, ringing)
-        onset1, onset2, margin = fits.onset1[~fits.moved], fits.onset2[~fits.moved], 0.0
+        start = geo.first_sample(fits.onset1) - geo.pre
+        kept = ~fits.moved & (start >= reach * span) & (start + geo.width <= (reach + 1) * span)
+        onset1, onset2, reach, margin = fits.onset1[kept], fits.onset2[kept], reach[kept], 0.0
         _require_ringing_events(onset1)
         if second:
             residual = residual_of(ringing.omega_n, ringing.zeta).reshape(onset1.size, -1)
             rms = np.sqrt(np.mean(residual**2, axis=1))
             kept = rms <= RESIDUAL_OUTLIER * np.median(rms)
-            onset1, onset2 = onset1[kept], onset2[kept]
+            onset1, onset2, reach = onset1[kept], onset2[kept], reach[kept]
         _require_ringing_events(onset1)
         try:
             result = lmfit.minimize(lambda p: residual_of(p["omega_n"].value, p["zeta"].value),
@@ -430,7 +437,7 @@ def fit_ringing(windows: list[np.ndarray], plan: ExtractionPlan, ringing: Ringin
     prior1, prior2 = events.impact1_time[pick] - shift, events.impact2_time[pick] - shift
     if ringing is None:
         ringing, prior1, prior2 = _fit_ringing(y, prior1, prior2, geo, events.natural_frequency,
-                                               plan.margin)
+                                               plan.margin, plan.span)
     return ringing, _ringing_errors(y, prior1, prior2, geo, ringing)
 
 
