@@ -20,7 +20,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "time": ("time", "elapsed time", "test time", "hours", "operating hours"),
         "force": ("force", "load", "tension"),
         "gauge": (
-            "extension", "displacement", "gauge", "elongation", "extensometer", "ext",
+            "extension", "displacement", "disp", "gauge", "elongation", "extensometer", "ext",
             "deflection", "position", "stroke", "crosshead", "lvdt", "dial", "strain",
             "actuator", "piston", "clip gauge", "ave", "video extensometer",
         ),

@@ -21,6 +21,7 @@ from pipeline.ingest.names import (
         ("Extension", "gauge"), ("Weg", "gauge"), ("Dehnung", "gauge"),
         ("wydłużenie 2", "gauge"), ("przemieszczenie", "gauge"), ("gauge1", "gauge"),
         ("Ext2", "gauge"), ("Axial Desplazamiento", "gauge"),
+        ("Disp", "gauge"),  # a real MTI export: Load, Disp, Stress, Time, Temp, Axial
         ("Winkel", "angle"), ("kąt", "angle"), ("encoder", "angle"),
         ("Total Cycle Count", "cycle_count"), ("Zyklus", "cycle_count"),
         ("cykl", "cycle_count"), ("Channel 1 Recuento", "cycle_count"),
