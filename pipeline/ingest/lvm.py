@@ -37,6 +37,12 @@ File defects handled
   (:mod:`pipeline.ingest.delimited`): missing values, a truncated last line,
   text after the last row.
 
+A file with its X column and no row comment is delimited text below its
+headers (:data:`TEXT`): a long log is then read by row range, as a CSV log is
+(:mod:`pipeline.ingest.stream`). Whether a row has a comment is settled with
+numpy over blocks of bytes (a row with more delimiters than the channels
+need); only then are the rows searched for the comments themselves.
+
 Refused, with a hint: ``X_Columns Multi`` with several channels (an X column
 per channel; with one channel it is ``X_Columns One``), and a file
 of several segments (a header again after the rows).
@@ -50,11 +56,11 @@ from collections.abc import Mapping
 import numpy as np
 
 from pipeline.errors import LayoutError
-from pipeline.ingest.delimited import read_contiguous, text_header
-from pipeline.ingest.preamble import parse_preamble
+from pipeline.ingest.delimited import TextLayout, read_contiguous
 from pipeline.ingest.raw import RawTable
+from pipeline.ingest.rowindex import code_unit
 from pipeline.ingest.sniff import Head, TableSpec, read_head, split_fields
-from pipeline.ingest.source import BufferSource, contains
+from pipeline.ingest.source import BLOCK, BufferSource, contains
 
 LAYOUT = "lvm"
 
@@ -73,6 +79,10 @@ TIME_NAME = "Time"
 def matches(head: Head, spec: TableSpec | None = None) -> bool:
     """True for a file whose first line is ``LabVIEW Measurement``."""
     return bool(head.lines) and head.lines[0].lstrip("\ufeff").startswith(MAGIC)
+
+
+#: The rows below the headers as delimited text, the headers as its preamble.
+TEXT = TextLayout(LAYOUT, matches=matches, preamble=True)
 
 
 def _tags(lines: list[str], delimiter: str) -> dict[str, list[str]]:
@@ -176,16 +186,58 @@ def table_spec(head: Head) -> TableSpec:
 
 def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTable:
     """Read a LabVIEW measurement file sniffed as `head` / `spec` (see the module docstring)."""
-    header = text_header(head, spec, LAYOUT, parse_preamble(spec.preamble, spec.delimiter),
-                         columns)
+    header = TEXT.header(head, spec, columns)
     head, said = _without_comments(head, spec)
     header.metadata.warnings.extend(said)
     raw = read_contiguous(head, spec, header)
     tags = _tags(spec.preamble, spec.delimiter)
-    if (tags.get("X_Columns") or [""])[0].lower() == "no" and 0 in raw.arrays:
+    if _without_x_column(spec) and 0 in raw.arrays:
         start, step = _axis(tags, spec.decimal, head.name)
         raw.arrays[0] = start + step * np.arange(raw.rows)
     return raw
+
+
+def by_rows(head: Head, spec: TableSpec) -> bool:
+    """Whether the rows read by range as :data:`TEXT` are the rows :func:`read` reads: the
+    file has its X column (the time is not built from ``X0`` and ``Delta_X``) and no row
+    has a comment."""
+    return not (_without_x_column(spec) or _field_more(head, spec))
+
+
+def _without_x_column(spec: TableSpec) -> bool:
+    """``X_Columns No``: the time is built from the segment header."""
+    return (_tags(spec.preamble, spec.delimiter).get("X_Columns") or [""])[0].lower() == "no"
+
+
+def _field_more(head: Head, spec: TableSpec) -> bool:
+    """Whether a data row has more delimiters than the channels need (a comment's field).
+
+    Counted with numpy over blocks of :data:`~pipeline.ingest.source.BLOCK` bytes: the
+    delimiters before each line end (CR or LF), the count of the line a block ends in
+    carried to the next.
+    """
+    unit = code_unit(head.codec)
+    delimiter, most = ord(spec.delimiter), spec.width - 1
+    position, end = head.offsets[spec.data_index], head.size
+    carry = 0  # delimiters of the line the last block ended in
+    while position < end:
+        stop = min(position + BLOCK, end)
+        units = np.frombuffer(head.source.read(position, stop), unit)
+        position = stop
+        delimiters = np.flatnonzero(units == delimiter)
+        ends = np.flatnonzero((units == 10) | (units == 13))
+        if ends.size:
+            before = np.searchsorted(delimiters, ends)
+            lines = np.diff(before, prepend=0)
+            lines[0] += carry
+            if lines.max() > most:
+                return True
+            carry = delimiters.size - int(before[-1])
+        else:
+            carry += delimiters.size
+        if carry > most:
+            return True
+    return False
 
 
 def _without_comments(head: Head, spec: TableSpec) -> tuple[Head, list[str]]:
@@ -193,9 +245,11 @@ def _without_comments(head: Head, spec: TableSpec) -> tuple[Head, list[str]]:
 
     LabVIEW writes a comment as one more field at the end of the rows it was
     given for (often the first); the others end with the last channel. The rows
-    are searched in memory; a copy without the comments is made only when a row
-    has that field more.
+    are searched in memory only when a row has that field more
+    (:func:`_field_more`), and a copy without the comments is made.
     """
+    if not _field_more(head, spec):
+        return head, []
     body = head.source.read(head.offsets[spec.data_index], head.size)
     delimiter = re.escape(spec.delimiter.encode(head.codec))
     fields = rb"[^\r\n%s]*" % delimiter

@@ -18,6 +18,9 @@ How each layout reads rows ``[start, stop)``:
   (:func:`~pipeline.ingest.delimited.parse_rows`);
 * TDMS: the file is opened per read (npTDMS streaming mode) and only the
   rows asked for are read from the channels that take a role;
+* a LabVIEW ``.lvm`` file with its X column and no row comment
+  (:func:`~pipeline.ingest.lvm.by_rows`): as delimited text; any other is read
+  whole per call and sliced;
 * MTS and ``.xlsx``: the whole file is read per call and sliced (those
   layouts hold small logs).
 
@@ -38,7 +41,7 @@ from typing import Protocol
 import pandas as pd
 
 from pipeline.errors import IngestError
-from pipeline.ingest import delimited, tdms
+from pipeline.ingest import delimited, lvm, tdms
 from pipeline.ingest.canonical import Conversion, clean, convert_rows, empty_warning, settle
 from pipeline.ingest.formats import TEXT_LAYOUTS, Sniffed, check_options, read_raw, sniff
 from pipeline.ingest.raw import RawColumns, RawTable
@@ -186,6 +189,8 @@ def _rows_reader(
     if sniffed.layout == "tdms":
         return _tdms_rows(source, columns)
     layout = TEXT_LAYOUTS.get(sniffed.layout)
+    if layout is lvm and lvm.by_rows(sniffed.head, sniffed.spec):
+        layout = lvm.TEXT
     if isinstance(layout, delimited.TextLayout):
         return _text_rows(source, layout, sniffed, columns)
     return _whole_rows(source, sniffed, columns, sheet)

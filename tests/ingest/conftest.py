@@ -75,6 +75,12 @@ def _delimited(
 
 
 POLISH = ("czas [s]", "siła [kN]", "kąt [deg]")
+#: The headers of a LabVIEW measurement file above its names row (tab-separated).
+LABVIEW_HEADERS = (
+    "LabVIEW Measurement\t", "Writer_Version\t2", "Separator\tTab", "Decimal_Separator\t.",
+    "X_Columns\tOne", "***End_of_Header***\t", "", "Channels\t2\t",
+    "Y_Unit_Label\tkN\tdeg\t", "X_Dimension\tTime\tTime\t", "***End_of_Header***\t")
+LABVIEW_NAMES = ("X_Value", "Force", "Angle", "Comment")
 
 #: file name -> (text, encoding) of the delimited logs of the corpus.
 TEXT_LOGS = {
@@ -98,6 +104,11 @@ TEXT_LOGS = {
                                       names=("Time", "Load", "Angle", ""),
                                       units_row="(sec),(kN),(deg),", row_end=",",
                                       newline="\r\n"), "latin-1"),
+    # read by row range as delimited text, and (a comment on every row) read whole
+    "labview.lvm": (_delimited(delimiter="\t", above=LABVIEW_HEADERS, names=LABVIEW_NAMES,
+                               newline="\r\n"), "utf-8"),
+    "labview_comments.lvm": (_delimited(delimiter="\t", above=LABVIEW_HEADERS,
+                                        names=LABVIEW_NAMES, row_end="\tStandby"), "utf-8"),
 }
 
 

@@ -1,10 +1,18 @@
 """LabVIEW measurement files: dialect, units and time from their headers."""
 
+import re
+
 import numpy as np
+import pandas as pd
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from pipeline.errors import LayoutError
+from pipeline.ingest import lvm as lvm_reader
 from pipeline.ingest import open_log, read_table
+from pipeline.ingest.sniff import TableSpec, read_head
+from pipeline.ingest.source import BufferSource
 
 TIME = np.arange(40) * 0.01
 FORCE_N = 500.0 * np.abs(np.sin(2 * np.pi * TIME))
@@ -136,3 +144,43 @@ def test_rows_with_a_comment_keep_every_sample_and_the_comments_are_named(write,
                                  "'Standby' on line 19"]
     else:
         assert meta.warnings == []
+
+
+@pytest.mark.parametrize(("rows", "x_columns", "by_range"), [
+    (None, "One", True), (None, "No", False), ("commented", "One", False)])
+def test_a_long_log_is_read_by_row_range_unless_its_rows_need_the_whole_file(
+        write, monkeypatch, rows, x_columns, by_range):
+    # its X column and no comment: the rows below the headers are delimited text
+    body = None
+    if rows == "commented":
+        body = [f"{t:.6f}\t{f:.6f}\t{e:.6f}" for t, f, e in zip(TIME, FORCE_N, EXTENSION_MM,
+                                                                strict=True)]
+        body[30] += "\tStandby"
+    path = write("log.lvm", lvm(x_columns=x_columns, rows=body))
+    whole, _ = read_table(path, kind="engagement")
+    reader = open_log(path, kind="engagement")
+    if by_range:
+        monkeypatch.setattr(lvm_reader, "read", None)  # the file is no longer read whole
+    parts = [reader.read(start, stop)[0] for start, stop in ((0, 7), (7, 31), (31, 40))]
+    pd.testing.assert_frame_equal(pd.concat(parts), whole, check_exact=True)
+
+
+def _lines_with_more_fields(text: str, width: int) -> bool:
+    return any(line.count("\t") > width - 1 for line in re.split(r"\r\n|\r|\n", text))
+
+
+@settings(max_examples=60, deadline=None)
+@given(rows=st.lists(st.tuples(st.integers(1, 4), st.sampled_from(["\n", "\r\n", "\r"])),
+                     min_size=1, max_size=30),
+       block=st.integers(1, 40))
+def test_a_row_with_a_field_more_is_found_across_blocks(rows, block):
+    # the count of delimiters per line runs over blocks of bytes: a small block cuts
+    # rows anywhere, a line end (CR LF too) included
+    body = "".join("\t".join(["1.5"] * fields) + end for fields, end in rows)
+    text = "names\tof\tthree\n" + body
+    head = read_head(BufferSource(text.encode(), "log.lvm"))
+    spec = TableSpec(delimiter="\t", decimal=".", names=["a", "b", "c"], header_index=0,
+                     units_index=None, data_index=1, width=3, units=[None] * 3, preamble=[])
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(lvm_reader, "BLOCK", block)
+        assert lvm_reader._field_more(head, spec) == _lines_with_more_fields(body, 3)
