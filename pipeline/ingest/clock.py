@@ -6,11 +6,15 @@ since the start. Such a column is read by pyarrow (or npTDMS) as a time of day
 or a timestamp and becomes seconds after the first data row's stamp, so that
 every chunk of a long log counts from the same origin. Nothing is guessed:
 
-* only these two forms are read, with ``.`` before the fraction of a second,
-  the date's parts joined by ``-`` or, as some loggers write it, by ``/``
-  (``2024/03/05 14:03:27.125``: the year first, so still one reading); a date
-  in another order (``05.03.2024``, ``3/5/2024``) stays text, and the column
-  is refused as not a number;
+* only these two forms are read: hours of one or two digits, ``.`` or ``,``
+  before the fraction of a second (``9:03:27,125``, as a logger set to a
+  decimal comma writes it), the date's parts joined by ``-`` or, as some
+  loggers write it, by ``/`` (``2024/03/05 14:03:27.125``: the year first, so
+  still one reading); a date in another order (``05.03.2024``, ``3/5/2024``)
+  or a 12-hour clock stays text, and the column is refused as not a number;
+* a column whose first reading is in pyarrow's own form (two-digit hours,
+  ``.``, ISO dashes) is parsed by its CSV reader; any other is read as text
+  and rewritten to that form with pyarrow's string functions first;
 * a time of day that passes midnight steps back by a day: that is reported as
   a time step back (:mod:`pipeline.ingest.canonical`), not repaired. A
   date-time carries its date, so it simply goes on counting.
@@ -26,20 +30,32 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.compute as pc
 
-#: The clock forms read, by kind: a time of day, and an ISO 8601 date and time.
+#: The clock forms read, by kind: a time of day, and a date (year first) and time.
 _FORMS = {
-    "time of day": re.compile(r" *\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
+    "time of day": re.compile(r" *\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)? *"),
     "date and time": re.compile(
-        r" *\d{4}(?P<sep>[-/])\d{2}(?P=sep)\d{2}[T ]\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
+        r" *\d{4}(?P<sep>[-/])\d{2}(?P=sep)\d{2}[T ]\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)? *"),
 }
+#: The forms pyarrow's CSV reader parses itself: two-digit hours, ``.``, ISO 8601 dashes.
+_ARROW_FORMS = {
+    "time of day": re.compile(r" *\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
+    "date and time": re.compile(r" *\d{4}-\d{2}-\d{2}[T ]\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
+}
+#: How a reading of another form is rewritten to pyarrow's (regular expression, then
+#: replacement, for ``pyarrow.compute.replace_substring_regex``).
+_TO_ARROW_FORM = (
+    (r"^(\d{4})/(\d{2})/", r"\1-\2-"),  # the date's parts joined by "/"
+    (r"(^|[T ])(\d):", r"\10\2:"),  # a one-digit hour (RE2 reads \1 then 0)
+    (r",(\d+)$", r".\1"),  # a decimal comma before the fraction
+)
 #: Anything with hours and minutes: a clock reading, read or not.
 _CLOCK_LIKE = re.compile(r"\d{1,2}:\d{2}")
 #: The hint for a clock reading in a form that is not read.
 UNREAD_FORM_HINT = (
     "the column holds clock readings in a form the reader does not guess (it reads "
-    "HH:MM:SS.fff with two-digit hours and YYYY-MM-DD HH:MM:SS.fff or YYYY/MM/DD "
-    "HH:MM:SS.fff): export the time in seconds, or name another time column in the run "
-    "sheet")
+    "H:MM:SS.fff and YYYY-MM-DD H:MM:SS.fff or YYYY/MM/DD H:MM:SS.fff, with '.' or ',' "
+    "before the fraction): export the time in seconds, or name another time column in "
+    "the run sheet")
 #: The arrow type each kind is parsed as.
 _ARROW_TYPES = {"time of day": pa.time64("ns"), "date and time": pa.timestamp("ns")}
 #: Nanoseconds per second.
@@ -51,7 +67,7 @@ def clock_kind(text: str) -> str | None:
 
     Examples
     --------
-    >>> clock_kind("14:03:27.125"), clock_kind("2024/03/05 14:03:27"), clock_kind("1.5")
+    >>> clock_kind("9:03:27,125"), clock_kind("2024/03/05 14:03:27"), clock_kind("1.5")
     ('time of day', 'date and time', None)
     """
     for kind, form in _FORMS.items():
@@ -86,15 +102,15 @@ class ClockColumn:
 
     @property
     def arrow_type(self) -> pa.DataType:
-        """The type pyarrow parses the column's cells as: text for a date with ``/``,
-        which its CSV reader does not take for a timestamp."""
-        return pa.string() if self._slashed else _ARROW_TYPES[self.kind]
+        """The type pyarrow parses the column's cells as: text when the first reading is
+        in a form its CSV reader does not parse (see :data:`_ARROW_FORMS`)."""
+        return pa.string() if self._as_text else _ARROW_TYPES[self.kind]
 
     def readings(self, cells: pa.ChunkedArray) -> pa.ChunkedArray:
         """The column as pyarrow's CSV reader gave it (:attr:`arrow_type`), as times of
         day or timestamps; raises :class:`pyarrow.ArrowInvalid` on a cell that is not a
         reading."""
-        if not self._slashed:
+        if not self._as_text:
             return cells
         return pc.cast(self._nanoseconds(cells), pa.timestamp("ns"))
 
@@ -111,17 +127,17 @@ class ClockColumn:
             pa.chunked_array([pa.array(texts, pa.string())]))).to_numpy()
 
     @cached_property
-    def _slashed(self) -> bool:
-        """Whether the date's parts are joined by ``/`` (``2024/03/05 14:03:27``)."""
-        return self.kind == "date and time" and "/" in self.first
+    def _as_text(self) -> bool:
+        """Whether the column is read as text and rewritten (:data:`_ARROW_FORMS`)."""
+        return _ARROW_FORMS[self.kind].fullmatch(self.first) is None
 
     def _nanoseconds(self, texts: pa.ChunkedArray) -> pa.ChunkedArray:
         """Texts as int64 nanoseconds: since midnight, or since 1970 for a date and time."""
         column = pc.utf8_trim_whitespace(texts)
+        for pattern, replacement in _TO_ARROW_FORM:
+            column = pc.replace_substring_regex(column, pattern, replacement)
         if self.kind == "time of day":  # arrow casts text to a timestamp, not to a time
             column = pc.binary_join_element_wise("1970-01-01 ", column, "")
-        elif self._slashed:  # the date first: the time has no "/"
-            column = pc.replace_substring(column, "/", "-")
         return pc.cast(pc.cast(column, pa.timestamp("ns")), pa.int64())
 
     @cached_property
@@ -135,8 +151,9 @@ class ClockColumn:
 
     def matches(self, text: str) -> bool:
         """True if `text` is a clock reading of this column's kind that the column reads
-        (a date joined by ``/`` only where the first reading's is)."""
-        return clock_kind(text) == self.kind and (self._slashed or "/" not in text)
+        (in pyarrow's own form only, unless the column is read as text)."""
+        return clock_kind(text) == self.kind and (
+            self._as_text or _ARROW_FORMS[self.kind].fullmatch(text) is not None)
 
     def mismatch(self, text: str) -> str:
         """The message for a cell `text` of this column that is not a clock reading like it."""
