@@ -41,13 +41,12 @@ _ARROW_FORMS = {
     "time of day": re.compile(r" *\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
     "date and time": re.compile(r" *\d{4}-\d{2}-\d{2}[T ]\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
 }
-#: How a reading of another form is rewritten to pyarrow's (regular expression, then
-#: replacement, for ``pyarrow.compute.replace_substring_regex``).
-_TO_ARROW_FORM = (
-    (r"^(\d{4})/(\d{2})/", r"\1-\2-"),  # the date's parts joined by "/"
-    (r"(^|[T ])(\d):", r"\10\2:"),  # a one-digit hour (RE2 reads \1 then 0)
-    (r",(\d+)$", r".\1"),  # a decimal comma before the fraction
-)
+#: How a reading of another form is rewritten to pyarrow's: the date's parts joined by
+#: "/", a decimal comma (each the only "/" or "," a reading can hold), then a one-digit
+#: hour (a regular expression and its replacement, RE2 reading ``\10`` as group 1, "0").
+_PLAIN_REWRITES = (("/", "-"), (",", "."))
+_ONE_DIGIT_HOUR = {"time of day": (r"^(\d):", r"0\1:"),
+                   "date and time": (r"([T ])(\d):", r"\10\2:")}
 #: Anything with hours and minutes: a clock reading, read or not.
 _CLOCK_LIKE = re.compile(r"\d{1,2}:\d{2}")
 #: The hint for a clock reading in a form that is not read.
@@ -134,10 +133,12 @@ class ClockColumn:
     def _nanoseconds(self, texts: pa.ChunkedArray) -> pa.ChunkedArray:
         """Texts as int64 nanoseconds: since midnight, or since 1970 for a date and time."""
         column = pc.utf8_trim_whitespace(texts)
-        for pattern, replacement in _TO_ARROW_FORM:
-            column = pc.replace_substring_regex(column, pattern, replacement)
+        if self._as_text:
+            for old, new in _PLAIN_REWRITES:
+                column = pc.replace_substring(column, old, new)
+            column = pc.replace_substring_regex(column, *_ONE_DIGIT_HOUR[self.kind])
         if self.kind == "time of day":  # arrow casts text to a timestamp, not to a time
-            column = pc.binary_join_element_wise("1970-01-01 ", column, "")
+            column = pc.utf8_replace_slice(column, 0, 0, "1970-01-01 ")
         return pc.cast(pc.cast(column, pa.timestamp("ns")), pa.int64())
 
     @cached_property
