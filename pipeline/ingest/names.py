@@ -71,6 +71,15 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "length": ("longitud",),
         "speed": ("velocidad",),
     },
+    "fr": {
+        "time": ("temps", "durée"),
+        "force": ("force", "effort", "charge"),
+        "gauge": ("déplacement", "allongement", "déformation", "déform", "extensomètre",
+                  "course", "course traverse", "vérin"),
+        "cycle_count": ("cycles", "nombre de cycles"),
+        "length": ("longueur",),
+        "speed": ("vitesse",),
+    },
     # Chinese names are whole words: "压缩应力" (compressive stress) is not "力" (force)
     "zh": {
         "time": ("时间", "试验时间"),
@@ -90,12 +99,13 @@ GAUGE_KINDS: dict[str, tuple[str, ...]] = {
         "crosshead", "cross head", "stroke", "position", "actuator", "piston", "machine",
         "traverse", "traversenweg", "standardweg", "standardwegaufnehmer", "kolbenweg",
         "maschinenweg", "trawersa", "trawersy", "tłok", "travesaño", "actuador", "pistón",
-        "carrera", "横梁位移", "横梁", "行程",
+        "carrera", "course", "vérin", "横梁位移", "横梁", "行程",
     ),
     "extensometer": (
         "extensometer", "ext", "clip gauge", "strain", "ave", "dehnung", "feindehnung",
         "ansetzdehnungsaufnehmer", "maytec", "ekstensometr", "odkształcenie", "extensómetro",
-        "deformación", "dial", "czujnik", "引伸计", "应变",
+        "deformación", "dial", "czujnik", "extensomètre", "déformation", "déform",
+        "引伸计", "应变",
     ),
 }
 

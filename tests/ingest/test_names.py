@@ -5,6 +5,7 @@ import pytest
 from pipeline.ingest.names import (
     COLUMN_NAMES,
     fold,
+    gauge_kind,
     is_transverse,
     match_role,
     split_name_unit,
@@ -31,6 +32,11 @@ from pipeline.ingest.names import (
         # a real Bluehill export in Chinese: 时间, 位移, 载荷, 压缩应力, 循环计数
         ("时间", "time"), ("位移", "gauge"), ("载荷", "force"), ("循环计数", "cycle_count"),
         ("压缩应力", None),
+        # real French exports (Shimadzu, Walter+Bai): Temps, Force, Course_Traverse,
+        # C_1_Déform1, C_1_Déplacement, C_1_Valeur de consigne; Bluehill's "Charge"
+        ("Temps", "time"), ("C_1_Temps", "time"), ("Charge", "force"), ("Effort", "force"),
+        ("Course_Traverse", "gauge"), ("C_1_Déform1", "gauge"), ("Déplacement", "gauge"),
+        ("C_1_Valeur de consigne", None), ("Nombre de cycles", "cycle_count"),
     ],
 )
 def test_match_role(name, role):
@@ -79,3 +85,12 @@ def test_a_channel_across_the_specimen_takes_no_role(name):
 @pytest.mark.parametrize("name", ["Dehnung", "Strain 1", "Extension", "Weg"])
 def test_a_channel_along_the_specimen_is_not_transverse(name):
     assert match_role(name) == "gauge" and not is_transverse(name)
+
+
+@pytest.mark.parametrize(("name", "kind"), [
+    ("Course_Traverse", "crosshead"), ("Position vérin", "crosshead"),
+    ("C_1_Déform1", "extensometer"), ("Extensomètre", "extensometer"),
+    ("Déplacement", "gauge"), ("Allongement", "gauge"),
+])
+def test_what_a_french_displacement_channel_measures(name, kind):
+    assert gauge_kind(name) == kind
