@@ -78,9 +78,10 @@ def display_name(names: list[str], index: int) -> str:
 
 def _lookup(wanted: str, names: list[str], role: str, file: Path | str, line: int | None) -> int:
     target = fold(str(wanted).strip())
-    hits = [
+    hits = [  # a blank name answers to the "column N" the messages call it
         index for index, name in enumerate(names)
         if target in (fold(name.strip()), fold(name.rsplit("/", 1)[-1].strip()))
+        or (not name.strip() and target == fold(display_name(names, index)))
     ]
     if not hits:
         raise ColumnError(

@@ -32,6 +32,17 @@ def test_group_channel_names():
     assert found.roles == {"force": [0], "time": [1]}
 
 
+def test_a_column_without_a_name_is_given_by_what_the_messages_call_it():
+    # "the file has: Time, column 2, column 3": the hint's names work in the run sheet
+    with pytest.raises(ColumnError) as caught:
+        candidates(["Time", "", ""], columns={"force": "Kraft"})
+    assert caught.value.hint == "the file has: Time, column 2, column 3"
+    found = candidates(["Time", "", ""], columns={"force": "Column 3"})
+    assert found.roles == {"force": [2], "time": [0]}
+    with pytest.raises(ColumnError, match="no column 'column 1'"):  # it has a name
+        candidates(["Time", "", ""], columns={"force": "column 1"})
+
+
 @pytest.mark.parametrize(
     ("columns", "message"),
     [({"force": "Kraft"}, "no column 'Kraft'"), ({"force": "Load"}, "appears 2 times"),
