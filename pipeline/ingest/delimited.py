@@ -68,7 +68,7 @@ from pipeline.ingest.names import header_text, split_name_unit
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import Candidates, find_candidates
-from pipeline.ingest.sniff import Head, TableSpec
+from pipeline.ingest.sniff import Head, TableSpec, require_names
 from pipeline.ingest.table import TableMetadata
 from pipeline.ingest.textbody import (
     Region,
@@ -132,14 +132,19 @@ def metadata(head: Head, spec: TableSpec, layout: str, preamble: dict[str, str])
         delimiter=spec.delimiter,
         decimal=spec.decimal,
         preamble=preamble,
-        header_line=spec.header_index + 1,
+        header_line=names_line(spec),
         first_data_line=spec.data_index + 1,
     )
 
 
-def units_line(spec: TableSpec) -> int:
+def names_line(spec: TableSpec) -> int | None:
+    """The 1-based line of the names row; None when the file has none."""
+    return None if spec.header_index is None else spec.header_index + 1
+
+
+def units_line(spec: TableSpec) -> int | None:
     """The line to point at for a unit problem: the units row, else the names row."""
-    return (spec.units_index if spec.units_index is not None else spec.header_index) + 1
+    return spec.units_index + 1 if spec.units_index is not None else names_line(spec)
 
 
 def text_header(
@@ -158,9 +163,10 @@ def text_header(
     columns : mapping, optional
         Run-sheet ``columns`` (see :func:`~pipeline.ingest.roles.find_candidates`).
     """
+    require_names(spec, head.name, columns)
     names, units = header_columns(spec)
     candidates = find_candidates(names, units, columns, file=head.name,
-                                 header_line=spec.header_index + 1)
+                                 header_line=names_line(spec))
     meta = metadata(head, spec, layout, preamble)
     clocks = time_clocks(spec, candidates, names, units, meta.warnings)
     return RawColumns(names=names, units=units, candidates=candidates, metadata=meta,

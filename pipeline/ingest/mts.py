@@ -61,6 +61,8 @@ def _is_data(line: str) -> bool:
 
 def matches(head: Head, spec: TableSpec) -> bool:
     """True for an ``MTS`` first line, or a names row repeated below the first block."""
+    if spec.header_index is None:
+        return False
     names_row = head.lines[spec.header_index]
     return head.lines[0].startswith("MTS") or names_row in head.lines[spec.data_index:]
 

@@ -21,6 +21,7 @@ import csv
 import re
 import unicodedata
 from collections import Counter
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import pyarrow.csv as pacsv
@@ -110,9 +111,11 @@ class TableSpec:
     delimiter, decimal : str
         The field delimiter and the decimal mark.
     names : list of str
-        The names-row cells (units included), one per data field.
-    header_index : int
-        Index in :attr:`Head.lines` of the names row.
+        The names-row cells (units included), one per data field; blank when the
+        file has no names row.
+    header_index : int or None
+        Index in :attr:`Head.lines` of the names row; None when the file begins
+        with its data (:func:`require_names`).
     units_index : int or None
         Index of the separate units row, if any.
     data_index : int
@@ -133,7 +136,7 @@ class TableSpec:
     delimiter: str
     decimal: str
     names: list[str]
-    header_index: int
+    header_index: int | None
     units_index: int | None
     data_index: int
     width: int
@@ -458,15 +461,9 @@ def find_table(
         and _units_row(rows[above], rows[data])
     ):
         units_index, above = above, above - 1
-    if above < 0 or kinds[above] != "text":
-        raise LayoutError(
-            "no names row above the first data row",
-            file=name, row=data + 1,
-            hint="add a header row naming the columns, separated as the data are, e.g. "
-                 + {"\t": "<Tab>"}.get(delimiter, delimiter).join(
-                     ("'time [s]", "force [kN]", "gauge1 [mm]'")),
-        )
-    names = rows[above]
+    if above >= 0 and kinds[above] != "text":
+        raise _no_names_row(name, data, delimiter)
+    names = rows[above] if above >= 0 else [""] * width
     pairs = delimiter == "," and decimal == "." and 2 * len(names) == width
     columns = width // 2 if pairs else width
     if len(names) > columns and not any(cell.strip() for cell in names[columns:]):
@@ -489,14 +486,42 @@ def find_table(
         delimiter=delimiter,
         decimal="," if pairs else decimal,
         names=names,
-        header_index=above,
+        header_index=above if above >= 0 else None,
         units_index=units_index,
         data_index=data,
         width=width,
         units=units,
-        preamble=[line for line in lines[:above] if line.strip()],
+        preamble=[line for line in lines[:max(above, 0)] if line.strip()],
         pairs=pairs,
         clocks=clocks,
+    )
+
+
+def require_names(spec: TableSpec, file: str, columns: Mapping | None) -> None:
+    """Refuse a table without a names row unless the run sheet names its columns.
+
+    Such a file's columns are called ``column 1``, ``column 2``... and take the
+    roles the run sheet's ``columns`` give them, nothing else: no role is
+    guessed from a position.
+
+    Raises
+    ------
+    LayoutError
+        When the file has no names row and `columns` is empty.
+    """
+    if spec.header_index is None and not columns:
+        raise _no_names_row(file, spec.data_index, spec.delimiter)
+
+
+def _no_names_row(file: str, data: int, delimiter: str) -> LayoutError:
+    return LayoutError(
+        "no names row above the first data row",
+        file=file, row=data + 1,
+        hint="add a header row naming the columns, separated as the data are, e.g. "
+             + {"\t": "<Tab>"}.get(delimiter, delimiter).join(
+                 ("'time [s]", "force [kN]", "gauge1 [mm]'"))
+             + ", or name them in the run sheet by position, with their units: columns = "
+               '{time = "column 1", force = "column 2"}, units = {time = "s", force = "kN"}',
     )
 
 

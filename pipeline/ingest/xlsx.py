@@ -28,11 +28,17 @@ import pandas as pd
 
 from pipeline.errors import EmptyFileError, LayoutError, ValueParseError
 from pipeline.ingest.clock import UNREAD_FORM_HINT, ClockColumn, looks_like_clock
-from pipeline.ingest.delimited import header_columns, time_clocks, units_line
+from pipeline.ingest.delimited import header_columns, names_line, time_clocks, units_line
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.roles import display_name, find_candidates
-from pipeline.ingest.sniff import detect_dialect, find_table, is_missing, is_number
+from pipeline.ingest.sniff import (
+    detect_dialect,
+    find_table,
+    is_missing,
+    is_number,
+    require_names,
+)
 from pipeline.ingest.source import Source
 from pipeline.ingest.table import TableMetadata
 
@@ -161,10 +167,11 @@ def parse(
     spec = find_table(lines, file, "\t", point, width)
     decimal = "," if any(_sniffed(text) != text for row in cells[spec.data_index:]
                          for text in row) else "."
-    preamble = [line for line in ("\t".join(row) for row in cells[: spec.header_index])
+    require_names(spec, file, columns)
+    preamble = [line for line in ("\t".join(row) for row in cells[: spec.header_index or 0])
                 if line.strip()]
     names, units = header_columns(spec)
-    found = find_candidates(names, units, columns, file=file, header_line=spec.header_index + 1)
+    found = find_candidates(names, units, columns, file=file, header_line=names_line(spec))
     body = frame.iloc[spec.data_index:, : len(names)].dropna(axis=0, how="all")
     if body.empty:
         raise EmptyFileError(
@@ -189,7 +196,7 @@ def parse(
         decimal=decimal,
         preamble=parse_preamble(preamble, "\t"),
         sheet=sheet_name,
-        header_line=spec.header_index + 1,
+        header_line=names_line(spec),
         first_data_line=int(sheet_rows[0]),
         warnings=notes,
     )

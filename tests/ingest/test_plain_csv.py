@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from pipeline.errors import LayoutError, ValueParseError
-from pipeline.ingest import read_table
+from pipeline.errors import ColumnError, LayoutError, ValueParseError
+from pipeline.ingest import open_log, read_table
 
 PLAIN = (
     "time [s],force [kN],gauge1 [mm],gauge2 [mm]\n"
@@ -89,3 +89,36 @@ def test_complete_last_line_without_line_end_is_kept(write):
 def test_forced_layout(write):
     _, meta = read_table(write("t.csv", PLAIN), format="plain_csv")
     assert meta.layout == "plain_csv"
+
+
+# a real headerless export (LabVIEW "write to spreadsheet"): tab, decimal comma, no names
+HEADERLESS = "1,139302\t305,800815\t1,883096\n1,149302\t-16,572605\t0,317137\n" \
+             "1,159302\t-16,572605\t0,314587\n1,174673\t-8,921337\t0,355393\n"
+HEADERLESS_SHEET = {
+    "columns": {"time": "column 1", "force": "column 2", "gauges": ["column 3"]},
+    "units": {"time": "s", "force": "N", "gauges": "mm"}}
+
+
+def test_a_file_without_names_is_read_by_the_run_sheets_positions(write):
+    path = write("data.lvm", HEADERLESS)
+    table, meta = read_table(path, kind="tensile", format="csv", **HEADERLESS_SHEET)
+    np.testing.assert_allclose(table["time"], [1.139302, 1.149302, 1.159302, 1.174673])
+    np.testing.assert_allclose(table["force"], [305.800815, -16.572605, -16.572605, -8.921337])
+    np.testing.assert_allclose(table["gauge_1"], [1.883096e-3, 0.317137e-3, 0.314587e-3,
+                                                  0.355393e-3])
+    assert (meta.header_line, meta.first_data_line) == (None, 1)
+    assert [(column.name, column.role) for column in meta.columns] == [
+        ("column 1", "time"), ("column 2", "force"), ("column 3", "gauge_1")]
+    reader = open_log(path, kind="tensile", format="csv", **HEADERLESS_SHEET)
+    np.testing.assert_array_equal(reader.read(1, 4)[0]["force"], table["force"][1:4])
+
+
+def test_a_file_without_names_gets_no_role_from_a_position(write):
+    path = write("data.csv", "0.0,1.5,0.01\n0.1,2.5,0.02\n")
+    with pytest.raises(LayoutError, match="no names row") as caught:  # nothing named
+        read_table(path, kind="tensile")
+    assert 'columns = {time = "column 1", force = "column 2"}' in caught.value.hint
+    # a role the run sheet names is read; the others are not guessed from their place
+    with pytest.raises(ColumnError, match="no gauge column found") as missing:
+        read_table(path, kind="tensile", columns={"force": "column 2"}, units={"force": "kN"})
+    assert "the file has: column 1, column 2, column 3" in missing.value.hint

@@ -74,3 +74,15 @@ def test_header_only_sheet(workbook):
 def test_broken_workbook(write):
     with pytest.raises(LayoutError, match="not a readable .xlsx"):
         read_table(write("w.xlsx", b"PK\x03\x04 this is not a zip file"))
+
+
+def test_a_sheet_without_names_is_read_by_the_run_sheets_positions(workbook):
+    path = workbook({"Data": [[0.0, 1.5, 0.01], [0.1, 2.5, 0.02], [0.2, 3.5, 0.03]]})
+    with pytest.raises(LayoutError, match="no names row"):
+        read_table(path, kind="tensile")
+    table, meta = read_table(
+        path, kind="tensile", columns={"force": "column 2", "gauges": ["column 3"]},
+        units={"force": "kN", "gauges": "mm"})
+    np.testing.assert_allclose(table["force"], [1500.0, 2500.0, 3500.0])
+    np.testing.assert_allclose(table["gauge_1"], [1e-5, 2e-5, 3e-5])
+    assert (meta.header_line, meta.first_data_line, meta.preamble) == (None, 1, {})
