@@ -73,7 +73,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
     },
     "fr": {
         "time": ("temps", "durée"),
-        "force": ("force", "effort", "charge"),
+        "force": ("force", "effort"),  # not "charge": an electric charge in English logs
         "gauge": ("déplacement", "allongement", "déformation", "déform", "extensomètre",
                   "course", "course traverse", "vérin"),
         "cycle_count": ("cycles", "nombre de cycles"),

@@ -33,8 +33,9 @@ from pipeline.ingest.names import (
         ("时间", "time"), ("位移", "gauge"), ("载荷", "force"), ("循环计数", "cycle_count"),
         ("压缩应力", None),
         # real French exports (Shimadzu, Walter+Bai): Temps, Force, Course_Traverse,
-        # C_1_Déform1, C_1_Déplacement, C_1_Valeur de consigne; Bluehill's "Charge"
-        ("Temps", "time"), ("C_1_Temps", "time"), ("Charge", "force"), ("Effort", "force"),
+        # C_1_Déform1, C_1_Déplacement, C_1_Valeur de consigne; Bluehill's "Charge (kN)"
+        # is a force by its unit, not its name, an electric charge in English logs
+        ("Temps", "time"), ("C_1_Temps", "time"), ("Charge", None), ("Effort", "force"),
         ("Course_Traverse", "gauge"), ("C_1_Déform1", "gauge"), ("Déplacement", "gauge"),
         ("C_1_Valeur de consigne", None), ("Nombre de cycles", "cycle_count"),
     ],
