@@ -435,7 +435,9 @@ def find_table(
     Raises
     ------
     LayoutError
-        If there is no names row, or it does not fit the data rows.
+        If the line above the first data row is no names row, or the names row does
+        not fit the data rows. A file that begins with its data has no names row
+        (:attr:`TableSpec.header_index` None): :func:`require_names` decides.
     """
     # Rows are classified from the top, as far as it takes to find the table (the head
     # holds thousands of lines; the table usually starts within the first few).
