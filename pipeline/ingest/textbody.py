@@ -344,7 +344,7 @@ def parse_body(
                 parse_options=pacsv.ParseOptions(delimiter=delimiter),
                 convert_options=convert_options,
             )
-        for index, clock in clocks.items():  # dates joined by "/" are read as text first
+        for index, clock in clocks.items():  # readings not in pyarrow's form: read as text
             position = table.schema.get_field_index(labels[index])
             table = table.set_column(position, labels[index],
                                      clock.readings(table.column(position)))
