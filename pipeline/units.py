@@ -13,6 +13,8 @@ import pint
 ureg = pint.UnitRegistry()
 # Laboratory spellings pint does not know by default.
 ureg.define("@alias kilogram_force = kG = KG")
+# "seg" (Spanish, Portuguese, Italian), "sek" (German, Polish, Scandinavian): seconds.
+ureg.define("@alias second = seg = sek")
 Q_ = ureg.Quantity
 
 #: Standard acceleration of gravity [m/s^2] (CGPM 1901); 1 kgf = 9.80665 N.

@@ -24,6 +24,7 @@ def factor(text, role):
         ("(sec)", "time", 1.0), ("ms", "time", 1e-3), ("min", "time", 60.0),
         ("deg", "angle", 0.017453292519943295), ("rad", "angle", 1.0),
         ("Min", "time", 60.0), ("MM", "gauge", 1e-3), ("SEC", "time", 1.0),
+        ("seg", "time", 1.0), ("sek", "time", 1.0),  # Portuguese and Spanish; German, Polish
     ],
 )
 def test_si_factor(unit, role, expected):
@@ -74,7 +75,7 @@ def test_a_current_in_amperes_is_not_a_time_candidate():
     assert found.roles == {"time": [0], "force": [1]}
 
 
-@pytest.mark.parametrize("cell", ["(sec)", "[mm]", "Sec", "kgf", "cycles", "segments", ""])
+@pytest.mark.parametrize("cell", ["(sec)", "[mm]", "Sec", "kgf", "cycles", "segments", "", "seg"])
 def test_units_row_cells(cell):
     assert looks_like_unit(cell)
 
