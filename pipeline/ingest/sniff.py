@@ -39,8 +39,9 @@ DELIMITERS = ("\t", ";", ",", "|")
 DIALECT_LINES = 128
 #: Lines of the head first classified to find the table (more when they do not tell).
 FIND_LINES = 256
-#: Cell texts read as missing values (pyarrow's defaults).
-NULL_VALUES = frozenset(pacsv.ConvertOptions().null_values)
+#: Cell texts read as missing values: pyarrow's defaults, and "none" (a data logger's empty
+#: channel; Python's None written as text).
+NULL_VALUES = frozenset(pacsv.ConvertOptions().null_values) | {"None", "none"}
 #: Single-byte encodings tried when a file is not UTF-8, in order of preference on a tie.
 SINGLE_BYTE_ENCODINGS = ("latin-1", "cp1250")
 

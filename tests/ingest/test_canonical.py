@@ -45,6 +45,12 @@ def test_time_backwards_and_gaps_are_warnings(write):
     assert "first before line 8" in meta.warnings[1]
 
 
+def test_none_marks_a_missing_value(write):
+    table, meta = read_table(write("none.csv", HEADER + rows((0, "none", 0), (1, 2, "None"))))
+    assert table["force"].isna().tolist() == [True, False]
+    assert table["gauge_1"].isna().tolist() == [False, True]
+
+
 def test_run_sheet_units_fill_missing_units_and_override_with_warning(write):
     text = "time,force [kN],gauge1\n" + rows((0, 1, 2), (1, 2, 3))
     table, meta = read_table(write("u.csv", text),
