@@ -80,12 +80,43 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "length": ("longueur",),
         "speed": ("vitesse",),
     },
-    # Chinese names are whole words: "压缩应力" (compressive stress) is not "力" (force)
+    "pt": {
+        "time": ("tempo",),
+        "force": ("força", "carga"),
+        "gauge": ("deslocamento", "extensão", "alongamento", "extensômetro", "travessa",
+                  "atuador", "pistão"),
+        "cycle_count": ("ciclo", "ciclos"),
+        "length": ("comprimento",),
+        "speed": ("velocidade",),
+    },
+    "it": {
+        "time": ("tempo",),
+        "force": ("forza", "carico"),
+        "gauge": ("spostamento", "allungamento", "estensometro", "traversa", "corsa",
+                  "attuatore", "pistone"),
+        "cycle_count": ("ciclo", "cicli"),
+        "length": ("lunghezza",),
+        "speed": ("velocità",),
+    },
+    "tr": {
+        "time": ("zaman", "süre"),
+        "force": ("kuvvet", "yük"),
+        "gauge": ("uzama", "deplasman", "ekstansometre"),
+        "cycle_count": ("çevrim", "çevrim sayısı"),
+    },
+    # Chinese and Japanese names are whole words: "压缩应力" (compressive stress) is not
+    # "力" (force)
     "zh": {
         "time": ("时间", "试验时间"),
         "force": ("载荷", "负荷", "力", "试验力"),
         "gauge": ("位移", "变形", "伸长", "引伸计", "横梁位移", "应变"),
         "cycle_count": ("循环计数", "循环次数", "循环"),
+    },
+    "ja": {
+        "time": ("時間", "経過時間", "試験時間"),
+        "force": ("試験力", "荷重"),
+        "gauge": ("変位", "伸び", "ストローク", "伸び計", "クロスヘッド変位"),
+        "cycle_count": ("サイクル数", "繰返し数"),
     },
 }
 
@@ -99,13 +130,14 @@ GAUGE_KINDS: dict[str, tuple[str, ...]] = {
         "crosshead", "cross head", "stroke", "position", "actuator", "piston", "machine",
         "traverse", "traversenweg", "standardweg", "standardwegaufnehmer", "kolbenweg",
         "maschinenweg", "trawersa", "trawersy", "tłok", "travesaño", "actuador", "pistón",
-        "carrera", "course", "vérin", "横梁位移", "横梁", "行程",
+        "carrera", "course", "vérin", "travessa", "atuador", "pistão", "traversa", "corsa",
+        "attuatore", "pistone", "横梁位移", "横梁", "行程", "ストローク", "クロスヘッド変位",
     ),
     "extensometer": (
         "extensometer", "ext", "clip gauge", "strain", "ave", "dehnung", "feindehnung",
         "ansetzdehnungsaufnehmer", "maytec", "ekstensometr", "odkształcenie", "extensómetro",
         "deformación", "dial", "czujnik", "extensomètre", "déformation", "déform",
-        "引伸计", "应变",
+        "extensômetro", "estensometro", "ekstansometre", "引伸计", "应变", "伸び計",
     ),
 }
 

@@ -215,3 +215,23 @@ def test_wavematrix_total_and_elapsed_counts_are_a_choice_in_either_language(wri
     table, _ = read_table(path, kind="tensile",
                           columns={"time": names[0], "cycle_count": names[2]})
     np.testing.assert_array_equal(table["cycle_count"], 992 + np.arange(9) // 3)
+
+
+# a real MTS TestSuite export in Portuguese: names with trailing blanks, "seg" for seconds
+TESTSUITE_PT = (
+    "Teste: MTS EM ASTM A370 Tração de Metais\n"
+    "Execução de Teste: Execução de Teste 1\n"
+    "\n"
+    "Travessa Horizontal \tCarga \tTempo \n"
+    "mm\tkN\tseg\n"
+    "0,00101365412774612\t0,034461555480957\t0,104999996721745\n"
+    "0,0013785695500701\t0,0473601341247559\t0,125\n"
+)
+
+
+def test_a_portuguese_testsuite_export(write):
+    table, meta = read_table(write("1045.txt", TESTSUITE_PT))
+    np.testing.assert_allclose(table["time"], [0.104999996721745, 0.125])
+    np.testing.assert_allclose(table["force"], [34.461555480957, 47.3601341247559])
+    np.testing.assert_allclose(table["gauge_1"], [1.01365412774612e-6, 1.3785695500701e-6])
+    assert meta.columns[0].kind == "crosshead"

@@ -38,6 +38,14 @@ from pipeline.ingest.names import (
         ("Temps", "time"), ("C_1_Temps", "time"), ("Charge", None), ("Effort", "force"),
         ("Course_Traverse", "gauge"), ("C_1_Déform1", "gauge"), ("Déplacement", "gauge"),
         ("C_1_Valeur de consigne", None), ("Nombre de cycles", "cycle_count"),
+        # real Portuguese exports (MTS TestSuite, Bluehill): Travessa Horizontal, Carga,
+        # Tempo; Extensão; the computed Deformação à tracção and Esforço à tracção
+        ("Travessa Horizontal", "gauge"), ("Carga", "force"), ("Tempo", "time"),
+        ("Extensão", "gauge"), ("Deformação à tracção", None), ("Esforço à tracção", None),
+        # a real Turkish rebar tester (PCM304): Test no, Zaman, Kuvvet, Cetvel, Kanal3
+        ("Zaman", "time"), ("Kuvvet", "force"), ("Test no", None), ("Kanal3", None),
+        ("Forza", "force"), ("Spostamento", "gauge"), ("試験力", "force"),
+        ("ストローク", "gauge"),
     ],
 )
 def test_match_role(name, role):
@@ -94,4 +102,13 @@ def test_a_channel_along_the_specimen_is_not_transverse(name):
     ("Déplacement", "gauge"), ("Allongement", "gauge"),
 ])
 def test_what_a_french_displacement_channel_measures(name, kind):
+    assert gauge_kind(name) == kind
+
+
+@pytest.mark.parametrize(("name", "kind"), [
+    ("Travessa Horizontal", "crosshead"), ("Extensão", "gauge"), ("Extensômetro", "extensometer"),
+    ("Corsa traversa", "crosshead"), ("Estensometro", "extensometer"), ("Spostamento", "gauge"),
+    ("ストローク", "crosshead"), ("伸び計", "extensometer"), ("変位", "gauge"),
+])
+def test_what_a_portuguese_italian_or_japanese_displacement_channel_measures(name, kind):
     assert gauge_kind(name) == kind
