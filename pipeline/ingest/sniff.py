@@ -28,6 +28,7 @@ import pyarrow.csv as pacsv
 
 from pipeline.errors import EmptyFileError, EncodingError, LayoutError
 from pipeline.ingest.clock import ClockColumn, clock_kind, looks_like_clock
+from pipeline.ingest.names import match_role
 from pipeline.ingest.source import Source
 from pipeline.ingest.unitparse import looks_like_unit
 
@@ -452,9 +453,19 @@ def find_table(
         limit *= 4
     while data > 0 and kinds[data - 1] in _DATA_KINDS:
         data -= 1
-    above = data - 1
-    while above >= 0 and kinds[above] == "blank":
-        above -= 1
+    above = _above(kinds, data)
+    labels = _specimen_labels(rows, kinds, above)
+    if len(labels) > 1:
+        raise LayoutError(
+            f"the row of specimen labels {', '.join(map(repr, labels[:3]))}"
+            f"{', ...' if len(labels) > 3 else ''} over the data: the file holds "
+            f"{len(labels)} specimens side by side",
+            file=name, row=above + 1,
+            hint="export each specimen to a file of its own, or delete the other "
+                 "specimens' columns; one file is one run",
+        )
+    if labels:  # one specimen's label between the header and the data
+        above = _above(kinds, above)
     units_index = None
     if (
         above >= 1
@@ -498,6 +509,37 @@ def find_table(
         pairs=pairs,
         clocks=clocks,
     )
+
+
+def _above(kinds: list[str], index: int) -> int:
+    """The nearest row above row `index` that is not blank (-1: none)."""
+    above = index - 1
+    while above >= 0 and kinds[above] == "blank":
+        above -= 1
+    return above
+
+
+def _specimen_labels(rows: list[list[str]], kinds: list[str], index: int) -> list[str]:
+    """The labels of row `index` if it labels the specimens of the columns below it, else [].
+
+    Mecmesin Emperor writes its names and units rows, then a row with a label
+    over the first column of each specimen's group (``Sample 1,,,,Sample 2,,,,...``),
+    then the data. Such a row is text under another header row, its labels
+    name no role and stand alone at the start of groups of equal width (one
+    label: over the first column, every other cell empty).
+    """
+    if index < 1 or kinds[index] != "text" or kinds[_above(kinds, index)] != "text":
+        return []
+    row = rows[index]
+    filled = [position for position, cell in enumerate(row) if cell.strip()]
+    if not filled or filled[0] != 0 or len(row) < 2:
+        return []
+    stride = filled[1] if len(filled) > 1 else len(row)
+    labels = [row[position].strip() for position in filled]
+    if (stride < 2 or filled != list(range(0, stride * len(filled), stride))
+            or len(set(labels)) < len(labels) or any(match_role(label) for label in labels)):
+        return []
+    return labels
 
 
 def require_names(spec: TableSpec, file: str, columns: Mapping | None) -> None:

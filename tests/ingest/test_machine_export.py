@@ -217,6 +217,33 @@ def test_wavematrix_total_and_elapsed_counts_are_a_choice_in_either_language(wri
     np.testing.assert_array_equal(table["cycle_count"], 992 + np.arange(9) // 3)
 
 
+# a real Mecmesin Emperor export: names, units, then a label over each specimen's columns
+EMPEROR = (
+    "Force,Distance,Time,Event,,,,\n"
+    "N,mm,min,,,,,\n"
+    "Sample 1,,,,Sample 2,,,\n"
+    "\n"
+    "0.1202,0,0,0,0.0601,0,0,0\n"
+    "0.1202,0,0.00002,0,0.1202,0.0025,0.00002,0\n"
+    "0.1502,0,0.00005,0,0.1202,0.0025,0.00005,0\n"
+)
+
+
+def test_specimens_side_by_side_under_a_row_of_labels_are_refused(write):
+    with pytest.raises(LayoutError, match="holds 2 specimens side by side") as caught:
+        read_table(write("emperor.csv", EMPEROR))
+    assert caught.value.row == 3 and "file of its own" in caught.value.hint
+
+
+def test_one_specimens_label_between_the_header_and_the_data_is_passed_over(write):
+    one = "".join(line.rsplit(",", 4)[0] + "\n" if line else "\n"
+                  for line in EMPEROR.splitlines())
+    table, meta = read_table(write("emperor.csv", one))
+    assert list(table.columns) == ["time", "force", "gauge_1"]
+    np.testing.assert_allclose(table["time"], [0, 0.0012, 0.003])  # minutes, in seconds
+    assert [column.unit for column in meta.columns] == ["N", "mm", "min", None]
+
+
 # a real MTS TestSuite export in Portuguese: names with trailing blanks, "seg" for seconds
 TESTSUITE_PT = (
     "Teste: MTS EM ASTM A370 Tração de Metais\n"
