@@ -20,9 +20,14 @@ def parse_preamble(lines: list[str], delimiter: str) -> dict[str, str]:
     """
     preamble: dict[str, str] = {}
     for line in lines:
+        whole = split_fields(line, delimiter) if line.lstrip().startswith('"') else []
+        if len(whole) == 1:  # quoted whole (Deben: "Span : 10,0"): one key and one value
+            line = whole[0]
+            if not line.strip():
+                continue
         if " : " in line:
             category, rest = (part.strip() for part in line.split(" : ", 1))
-            fields = split_fields(rest, delimiter)
+            fields = split_fields(rest, delimiter) if len(whole) != 1 else [rest]
             key, values = (fields[0], fields[1:]) if len(fields) > 1 else (category, [rest])
         else:
             fields = [field.strip() for field in split_fields(line, delimiter) if field.strip()]

@@ -156,6 +156,9 @@ def test_run_sheet_columns_pick_among_candidates(write):
         (["Rate: 5 mm/min"], {"Rate": "5 mm/min"}),
         (["Points: \t51"], {"Points": "51"}),
         (["Title only", "Title only"], {"Title only": "", "Title only (2)": ""}),
+        # a real Deben Microtest preamble: each line quoted whole, decimal commas inside
+        (['"Span : 10,0"', '""', '"Test duration : 2938,19999999842s"'],
+         {"Span": "10,0", "Test duration": "2938,19999999842s"}),
     ],
 )
 def test_parse_preamble(lines, expected):
