@@ -112,10 +112,15 @@ class Conversion:
         table, in table order.
     infos : tuple of ColumnInfo
         Every raw column and what it became (:attr:`TableMetadata.columns`).
+    unitless_time : int or None
+        Raw column index of a time column left out of the table for want of a
+        unit: its steps are still checked (a step back, such as specimens stacked
+        one below the other, needs no unit to be seen).
     """
 
     columns: tuple[tuple[int, str, float], ...]
     infos: tuple[ColumnInfo, ...]
+    unitless_time: int | None = None
 
     def table(self, raw: RawTable) -> pd.DataFrame:
         """The canonical table of `raw` (its arrays converted in place), indexed by file row."""
@@ -127,6 +132,14 @@ class Conversion:
             data[name] = array
         rows = pd.RangeIndex(raw.first_row, raw.first_row + raw.rows)
         return pd.DataFrame(data, index=rows, copy=False)
+
+    def checked_rows(self, table: pd.DataFrame, raw: RawTable, warnings: list[str]
+                     ) -> tuple[bool | None, int]:
+        """:func:`_check_rows` of `table`, with the time column left out for want of a unit
+        (:attr:`unitless_time`) checked as read."""
+        if self.unitless_time is not None:
+            table = table.assign(time=raw.arrays[self.unitless_time])
+        return _check_rows(table, raw, warnings)
 
 
 def settle(
@@ -205,7 +218,9 @@ def settle(
         )
         for index in range(len(raw.names))
     )
-    return Conversion(columns, infos)
+    unitless_time = next((index for index in assigned.get("time", []) if index not in factors),
+                         None)
+    return Conversion(columns, infos, unitless_time)
 
 
 def _refuse_a_table_of_peaks(raw: RawColumns) -> None:
@@ -257,7 +272,7 @@ def build(
         meta.warnings.append(empty_warning(raw.names, empty))
     conversion = settle(raw, empty, kind=kind, units=units, strict=strict)
     table = conversion.table(raw)
-    meta.time_monotonic, meta.time_gaps = _check_rows(table, raw, meta.warnings)
+    meta.time_monotonic, meta.time_gaps = conversion.checked_rows(table, raw, meta.warnings)
     meta.rows = raw.rows
     meta.columns = list(conversion.infos)
     return table, meta
@@ -284,7 +299,7 @@ def convert_rows(raw: RawTable, conversion: Conversion) -> tuple[pd.DataFrame, l
     warnings: list[str] = []
     clean(raw, warnings)
     table = conversion.table(raw)
-    _check_rows(table, raw, warnings)
+    conversion.checked_rows(table, raw, warnings)
     return table, warnings
 
 

@@ -45,6 +45,19 @@ def test_time_backwards_and_gaps_are_warnings(write):
     assert "first before line 8" in meta.warnings[1]
 
 
+def test_a_time_without_unit_is_still_checked_for_steps_back(write):
+    # a real Turkish rebar tester stacks its specimens one below the other, its time
+    # column (Zaman) without a unit: what `chainbench inspect` shows of it (a run refuses
+    # the file until the run sheet gives the unit) includes the second specimen's restart
+    text = "Zaman\tKuvvet(N)\tCetvel(mm)\n" + "".join(
+        f"{t}\t{f}\t{g}\n" for t, f, g in ((0.1, 1, 0), (0.2, 2, 1), (0.3, 3, 2), (0.1, 1, 0)))
+    table, meta = read_table(write("stacked.dru", text), strict=False)
+    assert "time" not in table
+    assert meta.time_monotonic is False
+    assert any("no unit for the time column" in warning for warning in meta.warnings)
+    assert "time: steps back 1 times, first at line 5" in meta.warnings
+
+
 def test_none_marks_a_missing_value(write):
     table, meta = read_table(write("none.csv", HEADER + rows((0, "none", 0), (1, 2, "None"))))
     assert table["force"].isna().tolist() == [True, False]
