@@ -470,12 +470,13 @@ def find_table(
     if (
         above >= 1
         and kinds[above] == "text"
-        and kinds[above - 1] == "text"
+        and any(not (is_number(cell, decimal) or is_missing(cell)) for cell in rows[above - 1])
         and len(rows[above]) <= width
         and _units_row(rows[above], rows[data])
-    ):
+    ):  # numbers among the names over a units row (sensors named by serial number, an
+        # oscilloscope's channels 1 and 2: "x-axis,1,2") do not make the names row data
         units_index, above = above, above - 1
-    if above >= 0 and kinds[above] != "text":
+    if above >= 0 and kinds[above] != "text" and units_index is None:
         raise _no_names_row(name, data, delimiter)
     names = rows[above] if above >= 0 else [""] * width
     pairs = delimiter == "," and decimal == "." and 2 * len(names) == width

@@ -265,3 +265,22 @@ def test_a_portuguese_testsuite_export(write):
     np.testing.assert_allclose(table["force"], [34.461555480957, 47.3601341247559])
     np.testing.assert_allclose(table["gauge_1"], [1.01365412774612e-6, 1.3785695500701e-6])
     assert meta.columns[0].kind == "crosshead"
+
+
+# a real Keysight InfiniiVision export: channels named by number, over a units row
+INFINIIVISION = (
+    "x-axis,1,2\n"
+    "second,Volt,Volt\n"
+    "-1.00000E-06,-402.01005E-06,-201.00502E-06\n"
+    "-999.00E-09,-402.01005E-06,+0.0E+00\n"
+)
+
+
+def test_an_oscilloscopes_numbered_channels_over_a_units_row(write):
+    table, meta = read_table(write("scope_0.csv", INFINIIVISION), kind="engagement",
+                             columns={"force": "1"}, units={"force": "kN"})
+    assert [column.name for column in meta.columns] == ["x-axis", "1", "2"]
+    np.testing.assert_allclose(table["time"], [-1e-6, -999e-9])
+    np.testing.assert_allclose(table["force"], [-0.40201005, -0.40201005])
+    assert "unit 'kN' from the run sheet replaces 'Volt' from the file" in " ".join(
+        meta.warnings)
