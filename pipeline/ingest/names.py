@@ -149,6 +149,11 @@ TRANSVERSE_NAMES = (
     "dicke", "dickenänderung", "dickenaenderung", "querdehnung", "szerokość", "grubość",
     "anchura", "espesor",
 )
+#: Words of a channel that holds what the controller asked for (a setpoint, a command),
+#: not what a sensor measured: ``"Ch 1 Kraft Sollwert"``, ``"Load Command"``,
+#: ``"Valeur de consigne"``. Such a column takes no role, wherever the word stands.
+COMMAND_NAMES = ("sollwert", "soll", "setpoint", "set point", "command", "demand", "target",
+                 "consigne", "consigna", "zadana")
 #: The label of :data:`TRANSVERSE_NAMES` among the role keywords: it wins as a role would.
 _TRANSVERSE = "transverse"
 
@@ -264,7 +269,20 @@ def match_role(name: str) -> str | None:
     ('cycle_count', 'force', 'force')
     """
     role = _best_match(name, _KEYWORDS)
-    return None if role == _TRANSVERSE else role
+    return None if role == _TRANSVERSE or is_command(name) else role
+
+
+_COMMAND_KEYWORDS = tuple((tokens(word), "command") for word in COMMAND_NAMES)
+
+
+def is_command(name: str) -> bool:
+    """Whether a column name says it holds a setpoint or a command (:data:`COMMAND_NAMES`):
+    such a column takes no role, not even from its unit.
+
+    >>> [is_command(name) for name in ("Ch 1 Kraft Sollwert", "Load Command", "Ch 1 Kraft")]
+    [True, True, False]
+    """
+    return _best_match(name, _COMMAND_KEYWORDS) is not None
 
 
 def is_transverse(name: str) -> bool:

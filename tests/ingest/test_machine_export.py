@@ -267,6 +267,27 @@ def test_a_portuguese_testsuite_export(write):
     assert meta.columns[0].kind == "crosshead"
 
 
+# a real MTS TestSuite export in German: every cell quoted, sensors named by their serial
+# numbers, and the force's setpoint beside the force
+TESTSUITE_DE = (
+    '"Test: E_Modul_Beton_Zylinder 2"\n'
+    '""\n'
+    '"Zeit ";"Ch 1 Kraft Sollwert ";"Ch 1 Kraft ";"Ch 1 Weg ";"1470533 ";"1281068 "\n'
+    '"sec";"kN";"kN";"mm";"mm";"mm"\n'
+    '"159,8212890625";"-40,39783984375";"-40,41028125";"-0,0075727703";"-0,0005323";"-0,11404"\n'
+    '"160,021484375";"-40,39783984375";"-40,45183984375";"-0,0079900028";"-0,0005865";"-0,11411"\n'
+)
+
+
+def test_names_row_with_serial_numbers_and_a_setpoint_that_is_no_force(write):
+    table, meta = read_table(write("zeitgetaktet.csv", TESTSUITE_DE))
+    assert [column.name for column in meta.columns] == [
+        "Zeit", "Ch 1 Kraft Sollwert", "Ch 1 Kraft", "Ch 1 Weg", "1470533", "1281068"]
+    assert meta.columns[1].role is None
+    np.testing.assert_allclose(table["force"], [-40410.28125, -40451.83984375])
+    assert list(table.columns) == ["time", "force", "gauge_1", "gauge_2", "gauge_3"]
+
+
 # a real Keysight InfiniiVision export: channels named by number, over a units row
 INFINIIVISION = (
     "x-axis,1,2\n"

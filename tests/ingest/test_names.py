@@ -6,6 +6,7 @@ from pipeline.ingest.names import (
     COLUMN_NAMES,
     fold,
     gauge_kind,
+    is_command,
     is_transverse,
     match_role,
     split_name_unit,
@@ -89,6 +90,12 @@ def test_fold_drops_case_and_diacritics():
                                   "Transverse strain", "Transverse", "Querdehnung"])
 def test_a_channel_across_the_specimen_takes_no_role(name):
     assert match_role(name) is None and is_transverse(name)
+
+
+@pytest.mark.parametrize("name", ["Ch 1 Kraft Sollwert", "Sollwert Kraft", "Load Command",
+                                  "Force setpoint", "Valeur de consigne", "Siła zadana"])
+def test_a_setpoint_or_command_channel_takes_no_role(name):
+    assert match_role(name) is None and is_command(name)
 
 
 @pytest.mark.parametrize("name", ["Dehnung", "Strain 1", "Extension", "Weg"])
