@@ -45,6 +45,12 @@ FIND_LINES = 256
 NULL_VALUES = frozenset(pacsv.ConvertOptions().null_values) | {"None", "none"}
 #: Single-byte encodings tried when a file is not UTF-8, in order of preference on a tie.
 SINGLE_BYTE_ENCODINGS = ("latin-1", "cp1250")
+#: Japanese Windows text (Shift-JIS), chosen when the single-byte encodings give control
+#: characters and every non-ASCII character it gives is Japanese (:data:`_JAPANESE_SCRIPTS`).
+SHIFT_JIS = "cp932"
+#: Unicode name prefixes of the characters of Japanese text (µ and ° are written full-width).
+_JAPANESE_SCRIPTS = ("CJK", "HIRAGANA", "KATAKANA", "HALFWIDTH KATAKANA", "FULLWIDTH",
+                     "GREEK", "IDEOGRAPHIC", "DEGREE", "KATAKANA-HIRAGANA")
 
 _LINE = re.compile(r"([^\r\n]*)(\r\n|\r|\n|$)")
 _NON_ASCII = re.compile(r"[^\x00-\x7f]")
@@ -231,7 +237,27 @@ def detect_encoding(raw: bytes, complete: bool, file: str) -> tuple[str, str, in
         (codec for codec, score in scores.items() if score is not None),
         key=lambda codec: (scores[codec], codec == "latin-1"),
     )
+    if _has_controls(text, best) and _is_japanese(text):
+        return SHIFT_JIS, SHIFT_JIS, 0
     return best, best, 0
+
+
+def _has_controls(raw: bytes, codec: str) -> bool:
+    """Whether `raw` decoded with `codec` holds control characters other than line ends
+    and tabs: no text written in that encoding does."""
+    return any(unicodedata.category(char) == "Cc" for char in _NON_ASCII.findall(
+        raw.decode(codec)))
+
+
+def _is_japanese(raw: bytes) -> bool:
+    """Whether `raw` decodes as Japanese Windows text (:data:`SHIFT_JIS`), its non-ASCII
+    characters all ideographs, kana or full-width forms."""
+    try:
+        text = raw.decode(SHIFT_JIS)
+    except UnicodeDecodeError:
+        return False
+    return all(unicodedata.name(char, "").startswith(_JAPANESE_SCRIPTS)
+               for char in _NON_ASCII.findall(text))
 
 
 def _printable(raw: bytes, codec: str) -> bool:

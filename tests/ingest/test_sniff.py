@@ -21,6 +21,11 @@ def head_of(path):
 
 POLISH = "czas [s];siła [kN];wydłużenie [mm]\r\n0,0;1,5;0,01\r\n0,1;1,6;0,02\r\n"
 SPANISH = "Tiempo\tFuerza\tDesplazamiento\r\nSec\tkgf\tmm\r\n0,0\t1,5\t0,01\r\n0,1\t1,6\t0,02\r\n"
+# a real Japanese data logger's header, written in Shift-JIS by Japanese Windows
+JAPANESE = ("H300-CP-No.1\r\n名前,測定日時 ,荷重 kN,変位 mm,表-縦 μ\r\n"
+            "1,2019/11/01 17:06:57,0.064,-0.004,-0.947867\r\n"
+            "2,2019/11/01 17:06:59,0.104,0,0.947867\r\n")
+GERMAN = "Zeit [s];Temperatur [°C];Kraft [kN];Länge [mm]\r\n0,1;20,5;1,2;3\r\n0,2;20,5;1,3;3\r\n"
 
 
 @pytest.mark.parametrize(
@@ -28,6 +33,8 @@ SPANISH = "Tiempo\tFuerza\tDesplazamiento\r\nSec\tkgf\tmm\r\n0,0\t1,5\t0,01\r\n0
     [
         (POLISH, "cp1250", "cp1250"),
         (SPANISH.replace("Fuerza", "Fuerza señal"), "latin-1", "latin-1"),
+        (JAPANESE, "cp932", "cp932"),
+        (GERMAN, "latin-1", "latin-1"),  # °C and ä decode in Shift-JIS too, as nonsense
         (POLISH, "utf-8", "utf-8"),
         (POLISH, "utf-8-sig", "utf-8-sig"),
         (POLISH, "utf-16", "utf-16"),
