@@ -64,7 +64,7 @@ import pyarrow as pa
 
 from pipeline.errors import EmptyFileError, LayoutError
 from pipeline.ingest.clock import ClockColumn, declare_seconds
-from pipeline.ingest.names import header_text, split_name_unit
+from pipeline.ingest.names import header_text, match_role, split_name_unit
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import Candidates, find_candidates
@@ -80,7 +80,7 @@ from pipeline.ingest.textbody import (
     trim_truncated_tail,
     truncated_warning,
 )
-from pipeline.ingest.unitparse import spellings
+from pipeline.ingest.unitparse import spellings, unit_fits
 
 #: The warning of a file whose decimal comma is also its delimiter.
 PAIRS_WARNING = "the decimal comma is also the delimiter: values were rejoined in pairs"
@@ -109,18 +109,30 @@ def header_columns(spec: TableSpec) -> tuple[list[str], list[str | None]]:
 
 
 def _trailing_unit_words(cells: list[str]) -> list[tuple[str, str | None]] | None:
-    """Names and units of a names row whose every named cell ends in a unit word.
+    """Names and units of a names row whose cells end in a unit word.
 
-    Bluehill's ``.raw.csv`` writes ``Time sec;Extension mm;Strain 1 %;Load N``. Only
-    a whole row counts: ``"Weg 1"`` or ``"Channel A"`` alone end in a word pint
-    reads (``1``, amperes) without being units, and a number never is one.
+    Bluehill's ``.raw.csv`` writes ``Time sec;Extension mm;Strain 1 %;Load N``: when
+    every named cell ends in a word pint reads, each is a unit. Otherwise a last word
+    is a unit only where it is a unit of the role the rest of the name gives
+    (a Japanese logger's ``荷重 kN`` beside ``名前`` and ``測定日時``): ``"Weg 1"`` or
+    ``"Channel A"`` end in a word pint reads (``1``, amperes) without being units.
+    None when no cell has a unit.
     """
     split = [cell.strip().rpartition(" ") for cell in cells]
     named = [(name.strip(), unit) for name, _, unit in split if unit]
-    if len(named) < 2 or not all(
+    if len(named) >= 2 and all(
             name and not unit.isdigit() and spellings(unit) for name, unit in named):
-        return None
-    return [(name.strip(), unit or None) for name, _, unit in split]
+        return [(name.strip(), unit or None) for name, _, unit in split]
+    fitting = [(name.strip(), unit) if _unit_of_its_name(name.strip(), unit)
+               else (cell.strip(), None)
+               for cell, (name, _, unit) in zip(cells, split, strict=True)]
+    return fitting if any(unit for _, unit in fitting) else None
+
+
+def _unit_of_its_name(name: str, unit: str) -> bool:
+    """Whether `unit` is a unit of the role `name` gives (``荷重`` and ``kN``: force)."""
+    role = match_role(name) if name and unit else None
+    return role is not None and unit_fits(unit, role)
 
 
 def metadata(head: Head, spec: TableSpec, layout: str, preamble: dict[str, str]) -> TableMetadata:
