@@ -7,7 +7,7 @@ from pipeline.ingest import FORMATS, read_table
 
 
 def test_formats_listed():
-    assert FORMATS == ("auto", "csv", "xlsx", "tdms", "lvm", "mts", "machine_export",
+    assert FORMATS == ("auto", "csv", "xlsx", "tdms", "lvm", "rigol", "mts", "machine_export",
                        "european_csv", "plain_csv")
 
 
