@@ -112,7 +112,8 @@ def _trailing_unit_words(cells: list[str]) -> list[tuple[str, str | None]] | Non
     """Names and units of a names row whose cells end in a unit word.
 
     Bluehill's ``.raw.csv`` writes ``Time sec;Extension mm;Strain 1 %;Load N``: when
-    every named cell ends in a word pint reads, each is a unit. Otherwise a last word
+    every named cell ends in a word pint reads, each is a unit (after ``in``, which
+    is left out of the name: ``in s,C1 in V``). Otherwise a last word
     is a unit only where it is a unit of the role the rest of the name gives
     (a Japanese logger's ``荷重 kN`` beside ``名前`` and ``測定日時``): ``"Weg 1"`` or
     ``"Channel A"`` end in a word pint reads (``1``, amperes) without being units.
@@ -122,11 +123,17 @@ def _trailing_unit_words(cells: list[str]) -> list[tuple[str, str | None]] | Non
     named = [(name.strip(), unit) for name, _, unit in split if unit]
     if len(named) >= 2 and all(
             name and not unit.isdigit() and spellings(unit) for name, unit in named):
-        return [(name.strip(), unit or None) for name, _, unit in split]
+        return [(_without_in(name), unit or None) for name, _, unit in split]
     fitting = [(name.strip(), unit) if _unit_of_its_name(name.strip(), unit)
                else (cell.strip(), None)
                for cell, (name, _, unit) in zip(cells, split, strict=True)]
     return fitting if any(unit for _, unit in fitting) else None
+
+
+def _without_in(name: str) -> str:
+    """A name without the ``in`` before its unit word (Rohde & Schwarz: ``C1 in V``)."""
+    words = name.split()
+    return " ".join(words[:-1] if words[-1:] == ["in"] else words)
 
 
 def _unit_of_its_name(name: str, unit: str) -> bool:

@@ -79,6 +79,8 @@ def test_units_as_the_last_word_of_every_name_are_read(write):
     ("Time;Extension mm;Load N", ["Time", "Extension", "Load"], [None, "mm", "N"]),
     # a real Japanese logger: 名前 (the row number) and 測定日時 beside 荷重 kN, 変位 mm
     ("名前;荷重 kN;変位 mm", ["名前", "荷重", "変位"], [None, "kN", "mm"]),
+    # a real Rohde & Schwarz oscilloscope export: the unit after "in"
+    ("in s;C1 in V;C2 in V", ["column 1", "C1", "C2"], ["s", "V", "V"]),
 ])
 def test_a_last_word_is_a_unit_of_every_name_or_of_the_role_its_name_gives(
         write, header, names, units):
