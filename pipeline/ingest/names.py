@@ -22,7 +22,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "gauge": (
             "extension", "displacement", "disp", "gauge", "elongation", "extensometer", "ext",
             "deflection", "position", "stroke", "crosshead", "lvdt", "dial", "strain",
-            "actuator", "piston", "clip gauge", "ave", "video extensometer",
+            "actuator", "piston", "clip gauge", "ave", "video extensometer", "travel",
         ),
         "angle": ("angle", "encoder", "rotation"),
         "cycle_count": ("cycle", "cycles", "cycle count", "count"),
@@ -128,6 +128,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
 GAUGE_KINDS: dict[str, tuple[str, ...]] = {
     "crosshead": (
         "crosshead", "cross head", "stroke", "position", "actuator", "piston", "machine",
+        "standard travel",
         "traverse", "traversenweg", "standardweg", "standardwegaufnehmer", "kolbenweg",
         "maschinenweg", "trawersa", "trawersy", "tłok", "travesaño", "actuador", "pistón",
         "carrera", "course", "vérin", "travessa", "atuador", "pistão", "traversa", "corsa",

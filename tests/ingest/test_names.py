@@ -47,6 +47,8 @@ from pipeline.ingest.names import (
         ("Zaman", "time"), ("Kuvvet", "force"), ("Test no", None), ("Kanal3", None),
         ("Forza", "force"), ("Spostamento", "gauge"), ("試験力", "force"),
         ("ストローク", "gauge"),
+        # ZwickRoell testXpert's English channel names
+        ("Standard travel", "gauge"), ("Standard force", "force"), ("System time", "time"),
     ],
 )
 def test_match_role(name, role):
@@ -116,6 +118,8 @@ def test_what_a_french_displacement_channel_measures(name, kind):
     ("Travessa Horizontal", "crosshead"), ("Extensão", "gauge"), ("Extensômetro", "extensometer"),
     ("Corsa traversa", "crosshead"), ("Estensometro", "extensometer"), ("Spostamento", "gauge"),
     ("ストローク", "crosshead"), ("伸び計", "extensometer"), ("変位", "gauge"),
+    ("Standard travel", "crosshead"), ("Crosshead travel", "crosshead"),
+    ("Standard extensometer", "extensometer"),
 ])
-def test_what_a_portuguese_italian_or_japanese_displacement_channel_measures(name, kind):
+def test_what_a_displacement_channel_measures_in_more_languages(name, kind):
     assert gauge_kind(name) == kind
