@@ -276,8 +276,9 @@ def tdms_files(draw):
     info = np.iinfo(dtype) if dtype.kind in "iu" else None
     values = st.integers(int(info.min), int(info.max)) if info else VALUES
     force = np.array(draw(st.lists(values, min_size=rows, max_size=rows)), dtype=dtype)
-    group_names = draw(st.lists(NAME_TEXT.map(str.strip).filter(bool), min_size=1, max_size=2,
-                                unique=True))
+    # a group's name is part of its channels' ("group/channel"): none is a role word either
+    group_names = draw(st.lists(NAME_TEXT.map(str.strip).filter(bool).filter(
+        lambda name: match_role(name) is None), min_size=1, max_size=2, unique=True))
     force_name, time_name, other_name = channel_names(draw, 3)
     force_group = draw(st.sampled_from(group_names))
     properties = {}
