@@ -153,6 +153,7 @@ def metadata(head: Head, spec: TableSpec, layout: str, preamble: dict[str, str])
         preamble=preamble,
         header_line=names_line(spec),
         first_data_line=spec.data_index + 1,
+        warnings=spec.results_warning(),
     )
 
 

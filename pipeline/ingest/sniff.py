@@ -40,6 +40,9 @@ DELIMITERS = ("\t", ";", ",", "|")
 DIALECT_LINES = 128
 #: Lines of the head first classified to find the table (more when they do not tell).
 FIND_LINES = 256
+#: The most rows a table above the data may have to be passed over as a table of results
+#: (one row per specimen of a batch) rather than read as the data.
+RESULTS_ROWS = 20
 #: Cell texts read as missing values: pyarrow's defaults, and "none" (a data logger's empty
 #: channel; Python's None written as text).
 NULL_VALUES = frozenset(pacsv.ConvertOptions().null_values) | {"None", "none"}
@@ -139,6 +142,9 @@ class TableSpec:
         value is two fields.
     clocks : dict of int -> ClockColumn
         The columns whose first data cell is a clock reading (``14:03:27.125``).
+    results : tuple of (int, int) or None
+        The lines (first, past the last; indexes in :attr:`Head.lines`) of the
+        results tables passed over above the data (:func:`find_table`).
     """
 
     delimiter: str
@@ -152,6 +158,15 @@ class TableSpec:
     preamble: list[str] = field(default_factory=list)
     pairs: bool = False
     clocks: dict[int, ClockColumn] = field(default_factory=dict)
+    results: tuple[int, int] | None = None
+
+    def results_warning(self) -> list[str]:
+        """The warning of the results tables passed over, if any."""
+        if self.results is None:
+            return []
+        first, stop = self.results
+        return [f"lines {first + 1}-{stop}: a table of results above the data was passed "
+                f"over; the data are the table from line {self.data_index + 1}"]
 
 
 def split_fields(line: str, delimiter: str) -> list[str]:
@@ -473,9 +488,15 @@ def find_table(
     while True:
         rows = [split_fields(line, delimiter) for line in lines[:limit]]
         kinds = [row_kind(row, line, decimal) for row, line in zip(rows, lines, strict=False)]
-        data = _first_data_row(rows, kinds, width, complete=limit >= len(lines))
-        if data is not None:
+        complete = limit >= len(lines)
+        data = _first_data_row(rows, kinds, width, complete=complete)
+        found = None if data is None else _past_results(rows, kinds, width, data, complete)
+        if found is not None:
+            data, results = found
             break
+        if complete:  # the dialect is chosen on rows of numbers: some are of this width
+            raise LayoutError("no data rows of the table's width", file=name,
+                              hint="check the file's delimiter and decimal mark")
         limit *= 4
     while data > 0 and kinds[data - 1] in _DATA_KINDS:
         data -= 1
@@ -532,10 +553,57 @@ def find_table(
         data_index=data,
         width=width,
         units=units,
-        preamble=[line for line in lines[:max(above, 0)] if line.strip()],
+        preamble=[line for index, line in enumerate(lines[:max(above, 0)])
+                  if line.strip() and not (results and results[0] <= index < results[1])],
         pairs=pairs,
         clocks=clocks,
+        results=results,
     )
+
+
+def _past_results(rows: list[list[str]], kinds: list[str], width: int, data: int,
+                  complete: bool) -> tuple[int, tuple[int, int] | None] | None:
+    """The first data row past any results tables above the data, and the rows (first,
+    past the last) of those tables; None when the rows so far do not tell.
+
+    Bluehill exports the results of a batch (one row per specimen) above a
+    specimen's raw data. A table is passed over when it has at most
+    :data:`RESULTS_ROWS` rows and a table of other names and more rows follows
+    it (or runs past the rows looked at); tables of the same names are blocks of
+    one log (MTS TestWare), read as such.
+    """
+    first = None
+    while True:
+        end = next((index for index in range(data + 1, len(kinds)) if kinds[index] == "text"),
+                   None)
+        count = sum(kind != "blank" for kind in kinds[data:end])
+        if end is None or count > RESULTS_ROWS:
+            break
+        later = _first_data_row(rows[end:], kinds[end:], width, complete)
+        if later is None:
+            if not complete:
+                return None  # more rows may hold the data's table
+            break
+        later += end
+        stop = next((index for index in range(later + 1, len(kinds)) if kinds[index] == "text"),
+                    len(kinds))
+        longer = (stop == len(kinds) and not complete
+                  or sum(kind != "blank" for kind in kinds[later:stop]) > count)
+        if not longer or rows[_header_top(rows, kinds, later)] == rows[_header_top(
+                rows, kinds, data)]:
+            break  # a shorter table below (a trailer), or the same names (blocks of one log)
+        if first is None:
+            first = _header_top(rows, kinds, data)
+        data = later
+    return data, (None if first is None else (first, _header_top(rows, kinds, data)))
+
+
+def _header_top(rows: list[list[str]], kinds: list[str], data: int) -> int:
+    """The first row of the names (and units) rows over the data row `data`."""
+    above = _above(kinds, data)
+    if above >= 1 and kinds[above] == "text" and _units_row(rows[above], rows[data]):
+        above = _above(kinds, above)
+    return max(above, 0)
 
 
 def _above(kinds: list[str], index: int) -> int:
@@ -621,4 +689,4 @@ def _first_data_row(rows: list[list[str]], kinds: list[str], width: int,
             return None
         if following is None or (kinds[following] in _DATA_KINDS and len(rows[following]) == width):
             return i
-    return candidates[0] if complete else None
+    return candidates[0] if complete and candidates else None

@@ -377,8 +377,8 @@ def locate_defect(
                 f"a second table starts here, its names {names_row}: the rows above it were "
                 "read as the data",
                 file=region.name, row=number,
-                hint="keep one table per file: export the raw data alone, or delete the "
-                     "lines above its names row (a results table?)",
+                hint="keep one table per file: export each specimen's raw data alone, or "
+                     "delete the other table's lines",
             )
         if len(fields) != width:
             return LayoutError(

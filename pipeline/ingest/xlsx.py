@@ -168,8 +168,9 @@ def parse(
     decimal = "," if any(_sniffed(text) != text for row in cells[spec.data_index:]
                          for text in row) else "."
     require_names(spec, file, columns)
-    preamble = [line for line in ("\t".join(row) for row in cells[: spec.header_index or 0])
-                if line.strip()]
+    skipped = range(*spec.results) if spec.results else range(0)
+    preamble = [line for index, line in enumerate("\t".join(row) for row in cells[
+        : spec.header_index or 0]) if line.strip() and index not in skipped]
     names, units = header_columns(spec)
     found = find_candidates(names, units, columns, file=file, header_line=names_line(spec))
     body = frame.iloc[spec.data_index:, : len(names)].dropna(axis=0, how="all")
@@ -179,7 +180,7 @@ def parse(
             file=file, row=spec.data_index + 1, hint="the sheet holds no measurements",
         )
     sheet_rows = body.index.to_numpy() + 1
-    notes: list[str] = []
+    notes = spec.results_warning()
     clocks = time_clocks(spec, found, names, units, notes)
     arrays = {
         index: _clock_seconds(body.iloc[:, index], clocks[index], file, display_name(names, index))

@@ -120,6 +120,39 @@ def test_a_results_table_above_the_raw_data_is_named_as_a_second_table(write):
     assert "one table per file" in error.value.hint
 
 
+def bluehill_batch(raw_rows: int, results_rows: int = 4) -> str:
+    """A Bluehill export of a batch's results table (one row per specimen) above one
+    specimen's raw data, as a real one lays them out: the raw names row begins with the
+    specimen's number, and the raw data rows with an empty cell."""
+    results = [f"{n},9.{n},{3000 + n}.5,,50" for n in range(1, results_rows + 1)]
+    raw = [f",{0.02 * row:.2f},{0.001 * row:.4f},{10.0 * row:.1f},{0.01 * row:.3f}"
+           for row in range(raw_rows)]
+    return "\n".join([
+        "Results Table 1,,,,", ",Gauge length,Maximum Force,Specimen note 1,Rate 1",
+        ",(mm),(N),,(mm/min)", *results, ",,,,", "Results Table 2,,,,", ",,,,",
+        "1,Time,Displacement,Force,Tensile strain (Digital Strain 1)",
+        ",(s),(mm),(N),(%)", *raw]) + "\n"
+
+
+@pytest.mark.parametrize("rows", [60, 3000])  # within the lines first looked at, and past
+@pytest.mark.parametrize("reader", [read_table, open_log])
+def test_a_batchs_results_table_above_the_raw_data_is_passed_over(write, reader, rows):
+    found = reader(write("batch.csv", bluehill_batch(rows)), kind="tensile")
+    table, meta = found if reader is read_table else (found.read(0, rows)[0], found.metadata)
+    np.testing.assert_allclose(table["force"], 10.0 * np.arange(rows))
+    np.testing.assert_allclose(table["gauge_1"], 1e-6 * np.arange(rows), atol=1e-12)
+    assert meta.first_data_line == 13
+    assert "lines 2-10: a table of results above the data was passed over; the data are " \
+           "the table from line 13" in meta.warnings
+    assert meta.preamble == {"Results Table 1": ""}  # the results are no preamble
+
+
+def test_a_results_table_is_passed_over_only_above_a_longer_table(write):
+    # a table of three rows over one of two is no batch's results over the raw data
+    with pytest.raises(LayoutError, match="second table starts here"):
+        read_table(write("batch.csv", bluehill_batch(2, results_rows=3)))
+
+
 def test_a_data_row_with_one_bad_cell_is_still_named_as_such(write):
     text = "time [s],force [kN],gauge [mm]\n0,1,2\n1,x,3\n"
     with pytest.raises(ValueParseError, match="'x' is not a number") as error:
