@@ -82,6 +82,8 @@ from pipeline.ingest.textbody import (
 )
 from pipeline.ingest.unitparse import spellings, unit_fits
 
+#: The preamble setting an oscilloscope gives its time axis's unit under.
+HORIZONTAL_UNITS = "Horizontal Units"
 #: The warning of a file whose decimal comma is also its delimiter.
 PAIRS_WARNING = "the decimal comma is also the delimiter: values were rejoined in pairs"
 
@@ -128,6 +130,20 @@ def _trailing_unit_words(cells: list[str]) -> list[tuple[str, str | None]] | Non
                else (cell.strip(), None)
                for cell, (name, _, unit) in zip(cells, split, strict=True)]
     return fitting if any(unit for _, unit in fitting) else None
+
+
+def _time_unit_of_the_scope(names: list[str], units: list[str | None],
+                            preamble: dict[str, str], warnings: list[str]) -> list[str | None]:
+    """`units`, a time column without one given the preamble's :data:`HORIZONTAL_UNITS`
+    (a Tektronix oscilloscope's ``TIME,CH1`` under its settings), with a note."""
+    axis = preamble.get(HORIZONTAL_UNITS, "").strip()
+    if not axis:
+        return units
+    given = [axis if unit is None and match_role(name) == "time" else unit
+             for name, unit in zip(names, units, strict=True)]
+    warnings += [f"column {name!r}: unit {axis!r} from the preamble's {HORIZONTAL_UNITS}"
+                 for name, unit, new in zip(names, units, given, strict=True) if unit != new]
+    return given
 
 
 def _without_in(name: str) -> str:
@@ -185,9 +201,10 @@ def text_header(
     """
     require_names(spec, head.name, columns)
     names, units = header_columns(spec)
+    meta = metadata(head, spec, layout, preamble)
+    units = _time_unit_of_the_scope(names, units, preamble, meta.warnings)
     candidates = find_candidates(names, units, columns, file=head.name,
                                  header_line=names_line(spec))
-    meta = metadata(head, spec, layout, preamble)
     clocks = time_clocks(spec, candidates, names, units, meta.warnings)
     return RawColumns(names=names, units=units, candidates=candidates, metadata=meta,
                       units_line=units_line(spec), clocks=clocks)
