@@ -51,7 +51,8 @@ SINGLE_BYTE_ENCODINGS = ("latin-1", "cp1250")
 #: Japanese Windows text (Shift-JIS), chosen when the single-byte encodings give control
 #: characters and every non-ASCII character it gives is Japanese (:data:`_JAPANESE_SCRIPTS`).
 SHIFT_JIS = "cp932"
-#: Unicode name prefixes of the characters of Japanese text (µ and ° are written full-width).
+#: Unicode name prefixes of the characters of Japanese text (with Greek letters, such as the
+#: μ of microstrain, and the degree sign).
 _JAPANESE_SCRIPTS = ("CJK", "HIRAGANA", "KATAKANA", "HALFWIDTH KATAKANA", "FULLWIDTH",
                      "GREEK", "IDEOGRAPHIC", "DEGREE", "KATAKANA-HIRAGANA")
 
@@ -623,7 +624,8 @@ def _specimen_labels(rows: list[list[str]], kinds: list[str], index: int) -> lis
     name no role and stand alone at the start of groups of equal width (one
     label: over the first column, every other cell empty).
     """
-    if index < 1 or kinds[index] != "text" or kinds[_above(kinds, index)] != "text":
+    header = _above(kinds, index)
+    if header < 0 or kinds[index] != "text" or kinds[header] != "text":
         return []
     row = rows[index]
     filled = [position for position, cell in enumerate(row) if cell.strip()]
