@@ -294,7 +294,7 @@ def parse_rows(
     names, found = header.names, header.candidates
     try:
         table = parse_body(
-            region.open(),
+            region,
             region,
             names=names,
             width=spec.width,

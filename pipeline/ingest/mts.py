@@ -81,7 +81,7 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
                                           spec.width, spec.delimiter, spec.decimal)
     region = Region(head.source, start, head.size, spec.data_index + 1, head.codec, _is_data)
     table = parse_body(
-        kept.open(),
+        kept,
         region,
         names=header.names,
         width=spec.width,

@@ -27,6 +27,8 @@ from pipeline.ingest.source import Source, contains, text_lines
 TAIL_BYTES = 1 << 16
 
 _INVALID = re.compile(r"column #(\d+).*invalid value '(.*)'", re.DOTALL)
+#: A number with thousands separators and a decimal point (``1,004.80328``).
+_THOUSANDS = re.compile(r"[+-]?\d{1,3}(?:,\d{3})+(?:\.\d*)?(?:[eE][+-]?\d+)?")
 #: A number without exponent; group 1 or 2 holds its decimals.
 _PLAIN_NUMBER = {
     mark: re.compile(rf" *[+-]?(?:\d+(?:{re.escape(mark)}(\d*))?|{re.escape(mark)}(\d+)) *")
@@ -273,7 +275,7 @@ def _decimals(cell: str, decimal: str) -> int | None:
 
 
 def parse_body(
-    source: pa.NativeFile,
+    body: Region,
     region: Region,
     *,
     names: list[str],
@@ -288,8 +290,8 @@ def parse_body(
 
     Parameters
     ----------
-    source : pyarrow.NativeFile
-        A stream of the body (data lines only, or data lines and blank lines).
+    body : Region
+        The body's bytes (data lines only, or data lines and blank lines).
     region : Region
         Where the rows sit in the file (for error messages).
     names : list of str
@@ -336,14 +338,18 @@ def parse_body(
         null_values=sorted(NULL_VALUES),
         strings_can_be_null=True,
     )
+    parse_options = pacsv.ParseOptions(delimiter=delimiter)
     try:
-        with source:
-            table = pacsv.read_csv(
-                source,
-                read_options=read_options,
-                parse_options=pacsv.ParseOptions(delimiter=delimiter),
-                convert_options=convert_options,
-            )
+        try:
+            with body.open() as source:
+                table = pacsv.read_csv(source, read_options=read_options,
+                                       parse_options=parse_options,
+                                       convert_options=convert_options)
+        except pa.ArrowInvalid as error:
+            if decimal != "." or as_text or not _thousands_cell(error):
+                raise
+            table = _with_thousands(body, read_options, parse_options, convert_options,
+                                    [labels[index] for index in float_columns - set(clocks)])
         for index, clock in clocks.items():  # readings not in pyarrow's form: read as text
             position = table.schema.get_field_index(labels[index])
             table = table.set_column(position, labels[index],
@@ -353,6 +359,43 @@ def parse_body(
         raise locate_defect(
             region, names, width, delimiter, decimal, float_columns, error, clocks
         ) from error
+
+
+def _thousands_cell(error: Exception) -> bool:
+    """Whether the cell pyarrow could not read is a number with thousands separators."""
+    reported = _INVALID.search(str(error))
+    return reported is not None and _THOUSANDS.fullmatch(reported.group(2)) is not None
+
+
+def _with_thousands(body: Region, read_options: pacsv.ReadOptions,
+                    parse_options: pacsv.ParseOptions, convert_options: pacsv.ConvertOptions,
+                    labels: list[str]) -> pa.Table:
+    """The body read again, the columns `labels` as text, their thousands separators
+    (``"1,004.80328"``, Bluehill's quoted forces) removed, then as float64.
+
+    Raises
+    ------
+    pyarrow.ArrowInvalid
+        If a cell with a comma is not a number so grouped, or another cell is no number.
+    """
+    types = dict(convert_options.column_types) | dict.fromkeys(labels, pa.string())
+    as_text = pacsv.ConvertOptions(column_types=types, decimal_point=".",
+                                   null_values=convert_options.null_values,
+                                   strings_can_be_null=True)
+    with body.open() as source:
+        table = pacsv.read_csv(source, read_options=read_options,
+                               parse_options=parse_options, convert_options=as_text)
+    for label in labels:
+        position = table.schema.get_field_index(label)
+        text = table.column(position)
+        grouped = pc.match_substring(text, ",")
+        if pc.any(pc.and_kleene(grouped, pc.invert(pc.match_substring_regex(
+                text, f"^{_THOUSANDS.pattern}$")))).as_py():
+            raise pa.ArrowInvalid(f"column {label}: a comma in a number that is not a "
+                                  "thousands separator")
+        numbers = pc.cast(pc.replace_substring(text, ",", ""), pa.float64())
+        table = table.set_column(position, label, numbers)
+    return table
 
 
 def locate_defect(
@@ -391,7 +434,8 @@ def locate_defect(
             if index in clocks:
                 if not (clocks[index].matches(cell) or is_missing(cell)):
                     return _bad_clock(region, names, number, index, cell, clocks[index])
-            elif not (is_number(cell, decimal) or is_missing(cell)):
+            elif not (is_number(cell, decimal) or is_missing(cell)
+                      or decimal == "." and _THOUSANDS.fullmatch(cell.strip())):
                 return _bad_cell(region, names, number, index, cell, decimal)
     if reported is not None:
         index = int(reported.group(1))

@@ -346,3 +346,27 @@ def test_an_oscilloscopes_numbered_channels_over_a_units_row(write):
     np.testing.assert_allclose(table["force"], [-0.40201005, -0.40201005])
     assert "unit 'kN' from the run sheet replaces 'Volt' from the file" in " ".join(
         meta.warnings)
+
+
+def bluehill_quoted(rows: int) -> str:
+    """A Bluehill export with every number quoted, as a real one: loads from 1,000 N on
+    written with a thousands separator (``"1,004.80328"``)."""
+    lines = ['"Specimen number","1"', "", '"Time","Extension","Load"', '"(s)","(mm)","(N)"']
+    lines += [f'"{0.1 * row:.5f}","{0.002 * row:.5f}","{25.0 * row:,.5f}"' for row in range(rows)]
+    return "\r\n".join(lines) + "\r\n"
+
+
+@pytest.mark.parametrize("reader", [read_table, open_log])
+def test_quoted_numbers_with_thousands_separators(write, reader):
+    found = reader(write("Specimen_RawData_1.csv", bluehill_quoted(80)), kind="tensile")
+    table = found[0] if reader is read_table else found.read(0, 80)[0]
+    np.testing.assert_allclose(table["force"], 25.0 * np.arange(80))  # 40: "1,000.00000"
+    np.testing.assert_allclose(table["gauge_1"], 2e-6 * np.arange(80), atol=1e-12)
+
+
+@pytest.mark.parametrize("cell", ["1,2", "10,00.5", "1,0045.2"])
+def test_a_comma_that_is_no_thousands_separator_is_still_refused(write, cell):
+    text = bluehill_quoted(80).replace('"1,500.00000"', f'"{cell}"')  # past 20 grouped loads
+    with pytest.raises(ValueParseError, match=f"'{cell}' is not a number") as error:
+        read_table(write("Specimen_RawData_1.csv", text))
+    assert error.value.row == 65
