@@ -23,7 +23,7 @@ from pipeline.ingest.source import Source
 #: Text layouts, in the order they are tried on a file (a LabVIEW measurement file and a
 #: Rigol or Tektronix oscilloscope's export are known by their first lines, before a table
 #: is looked for).
-TEXT_LAYOUTS = {lvm.LAYOUT: lvm, rigol.LAYOUT: rigol, tektronix.LAYOUT: tektronix,
+TEXT_LAYOUTS = {lvm.LAYOUT: lvm, rigol.LAYOUT: rigol, tektronix.LAYOUT: tektronix.TEXT,
                 mts.LAYOUT: mts,
                 **{layout.name: layout for layout in delimited.LAYOUTS}}
 

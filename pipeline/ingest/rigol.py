@@ -33,8 +33,6 @@ AXIS = ("Start", "Increment")
 SEQUENCE = "Sequence"
 #: The name given to the X column, once it holds the time.
 TIME_NAME = "Time"
-#: The rows below the headers, read as a delimited table with a preamble.
-TEXT = TextLayout(LAYOUT, matches=lambda head, spec: True, preamble=True)
 
 
 def matches(head: Head, spec: TableSpec | None = None) -> bool:
@@ -45,6 +43,11 @@ def matches(head: Head, spec: TableSpec | None = None) -> bool:
     names = _cells(head.lines[0])
     return (names[0] == "X" and all(name in names[2:] for name in AXIS)
             and _cells(head.lines[1])[0] == SEQUENCE)
+
+
+#: The rows below the headers as delimited text, read whole (the X column becomes the
+#: time in :func:`read`), the time axis's values as the preamble.
+TEXT = TextLayout(LAYOUT, matches=matches, preamble=True)
 
 
 def table_spec(head: Head) -> TableSpec:

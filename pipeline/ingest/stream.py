@@ -10,7 +10,8 @@ picklable, so that a dask task can read its own rows.
 
 How each layout reads rows ``[start, stop)``:
 
-* delimited text (every :class:`~pipeline.ingest.delimited.TextLayout`): one
+* delimited text (every :class:`~pipeline.ingest.delimited.TextLayout`, a
+  Tektronix oscilloscope's export among them): one
   pass at open indexes every :data:`~pipeline.ingest.rowindex.EVERY`-th data
   row (:mod:`pipeline.ingest.rowindex`, numpy over blocks of bytes, about
   1 GB/s); a read finds its first and last byte from the nearest indexed
@@ -21,8 +22,9 @@ How each layout reads rows ``[start, stop)``:
 * a LabVIEW ``.lvm`` file with its X column and no row comment
   (:func:`~pipeline.ingest.lvm.by_rows`): as delimited text; any other is read
   whole per call and sliced;
-* MTS and ``.xlsx``: the whole file is read per call and sliced (those
-  layouts hold small logs).
+* MTS, ``.xlsx`` and a Rigol oscilloscope's export (its time built from the
+  sample number): the whole file is read per call and sliced (those layouts
+  hold small logs).
 
 At open, the columns that take a role are read until each has shown a value
 (the first :data:`~pipeline.ingest.rowindex.EVERY` rows, as a rule): a column

@@ -22,10 +22,7 @@ row (``Record Length`` beside a sample).
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-
-from pipeline.ingest.delimited import TextLayout, read_contiguous
-from pipeline.ingest.raw import RawTable
+from pipeline.ingest.delimited import TextLayout
 from pipeline.ingest.sniff import Head, TableSpec, is_number, split_fields
 
 LAYOUT = "tektronix"
@@ -36,8 +33,6 @@ FIRST_SETTING = "Record Length"
 SAMPLE = (3, 4)
 #: The name of the time column.
 TIME_NAME = "Time"
-#: The rows below the headers, read as a delimited table with a preamble.
-TEXT = TextLayout(LAYOUT, matches=lambda head, spec: True, preamble=True)
 
 
 def matches(head: Head, spec: TableSpec | None = None) -> bool:
@@ -47,6 +42,10 @@ def matches(head: Head, spec: TableSpec | None = None) -> bool:
     cells = [cell.strip() for cell in split_fields(head.lines[0], ",")]
     return (len(cells) > max(SAMPLE) and cells[0] == FIRST_SETTING
             and all(is_number(cells[index], ".") for index in SAMPLE))
+
+
+#: The layout as delimited text (its settings the preamble): read whole, or by row range.
+TEXT = TextLayout(LAYOUT, matches=matches, preamble=True)
 
 
 def table_spec(head: Head) -> TableSpec:
@@ -63,8 +62,3 @@ def table_spec(head: Head) -> TableSpec:
         data_index=0, width=width, units=units,
         preamble=[f"{row[0]},{row[1]}" for row in rows if len(row) > 1 and row[0]],
     )
-
-
-def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTable:
-    """Read a Tektronix export sniffed as `head` / `spec` (see the module docstring)."""
-    return read_contiguous(head, spec, TEXT.header(head, spec, columns))

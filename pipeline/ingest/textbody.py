@@ -370,21 +370,20 @@ def _thousands_cell(error: Exception) -> bool:
 def _with_thousands(body: Region, read_options: pacsv.ReadOptions,
                     parse_options: pacsv.ParseOptions, convert_options: pacsv.ConvertOptions,
                     labels: list[str]) -> pa.Table:
-    """The body read again, the columns `labels` as text, their thousands separators
-    (``"1,004.80328"``, Bluehill's quoted forces) removed, then as float64.
+    """The body read again, the columns `labels` as text (`convert_options` changed so),
+    their thousands separators (``"1,004.80328"``, Bluehill's quoted forces) removed,
+    then as float64.
 
     Raises
     ------
     pyarrow.ArrowInvalid
         If a cell with a comma is not a number so grouped, or another cell is no number.
     """
-    types = dict(convert_options.column_types) | dict.fromkeys(labels, pa.string())
-    as_text = pacsv.ConvertOptions(column_types=types, decimal_point=".",
-                                   null_values=convert_options.null_values,
-                                   strings_can_be_null=True)
+    convert_options.column_types = (dict(convert_options.column_types)
+                                    | dict.fromkeys(labels, pa.string()))
     with body.open() as source:
         table = pacsv.read_csv(source, read_options=read_options,
-                               parse_options=parse_options, convert_options=as_text)
+                               parse_options=parse_options, convert_options=convert_options)
     for label in labels:
         position = table.schema.get_field_index(label)
         text = table.column(position)
