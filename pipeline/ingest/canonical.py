@@ -45,8 +45,7 @@ from pipeline.ingest.unitparse import (
     ROLE_SI_UNIT,
     is_strain_unit,
     si_factor,
-    spellings,
-    unit_fits,
+    unit_misfits,
 )
 
 #: Values some machines write for a channel that records nothing.
@@ -186,7 +185,7 @@ def settle(
     _refuse_a_table_of_peaks(raw)
     problems = _Problems(strict, meta.warnings)
     sheet_units = _run_sheet_units(units, meta.file)
-    assigned = _settle_roles(raw, empty, problems)
+    assigned = _settle_roles(raw, empty, set(sheet_units), problems)
     rejected: dict[str, UnitError] = {}
     factors, found_units, strains = _settle_units(raw, assigned, sheet_units, problems,
                                                   rejected)
@@ -350,11 +349,23 @@ def empty_warning(names: list[str], empty: set[int]) -> str:
             + ", ".join(display_name(names, index) for index in sorted(empty)))
 
 
-def _settle_roles(raw: RawColumns, empty: set[int], problems: _Problems) -> dict[str, list[int]]:
+def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], problems: _Problems
+                  ) -> dict[str, list[int]]:
+    """The columns of each role: the candidates with values, and of a role that takes one
+    column, the only one (else an ambiguity is reported). Of several candidates matched by
+    name, those whose unit in the file is not one of the role (a stress in MPa named
+    after its load channel) are left out, with a warning, when some others fit."""
     file = raw.metadata.file
     assigned: dict[str, list[int]] = {}
     for role, indexes in raw.candidates.roles.items():
         live = [index for index in indexes if index not in empty]
+        if (role in _SINGLE and len(live) > 1 and role not in raw.candidates.explicit
+                and role not in sheet_units):
+            misfits = [index for index in live if unit_misfits(raw.units[index], role)]
+            if len(misfits) < len(live):
+                for index in misfits:
+                    _warn_misfit(raw, index, role)
+                live = [index for index in live if index not in misfits]
         if role in raw.candidates.explicit and len(live) < len(indexes):
             dead = next(index for index in indexes if index in empty)
             problems.report(ColumnError(
@@ -376,6 +387,11 @@ def _settle_roles(raw: RawColumns, empty: set[int], problems: _Problems) -> dict
         if live:
             assigned[role] = live
     return assigned
+
+
+def _warn_misfit(raw: RawColumns, index: int, role: str) -> None:
+    raw.metadata.warnings.append(f"column {display_name(raw.names, index)!r}: unit "
+                                 f"{raw.units[index]!r} is not a unit of {role}: column not used")
 
 
 def _settle_units(
@@ -432,10 +448,8 @@ def _settle_units(
                                            column=name, source=source)
                 continue
             explicit = role in raw.candidates.explicit or source == "the run sheet"
-            if spellings(text) and not unit_fits(text, role) and not explicit:
-                raw.metadata.warnings.append(
-                    f"column {name!r}: unit {text!r} is not a unit of {role}: column not used"
-                )
+            if unit_misfits(text, role) and not explicit:
+                _warn_misfit(raw, index, role)
                 rejected[role] = UnitError(
                     f"unit {text!r} is not a unit of {role} ({ROLE_SI_UNIT[role]})",
                     file=file, row=raw.units_line, column=name,

@@ -121,6 +121,28 @@ def unit_fits(text: str | None, role: str) -> bool:
     return any(_fits(spelling, role) for spelling in spellings(text or ""))
 
 
+def unit_misfits(text: str | None, role: str) -> bool:
+    """Whether `text` is a unit, and not one a column of `role` could be logged in.
+
+    A ratio fits a gauge (a strain); a cycle count fits no unit of a dimension but its
+    cycles (``"cycles"``, an angle to pint) or none.
+
+    Examples
+    --------
+    >>> unit_misfits("MPa", "force"), unit_misfits("J", "cycle_count"), unit_misfits("%", "gauge")
+    (True, True, False)
+    >>> unit_misfits("", "force"), unit_misfits("cycles", "cycle_count")
+    (False, False)
+    """
+    found = spellings(text or "")
+    if not found or (role == "gauge" and is_strain_unit(text)):
+        return False
+    if role == "cycle_count":
+        return not any(ureg.parse_units(spelling).dimensionless or _role_of(spelling) == "angle"
+                       for spelling in found)
+    return not unit_fits(text, role)
+
+
 def unit_role(text: str | None) -> str | None:
     """The role a unit alone suggests (``"kN"`` -> ``"force"``), or None."""
     for spelling in spellings(text or ""):

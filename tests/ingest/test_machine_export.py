@@ -261,6 +261,31 @@ def test_wavematrix_total_and_elapsed_counts_are_a_choice_in_either_language(wri
     np.testing.assert_array_equal(table["cycle_count"], 992 + np.arange(9) // 3)
 
 
+# the names of a real Instron WaveMatrix tracking export: derived channels are named
+# after the channel they come from ("Stress(...:Load)") or a count ("Cycle Energy")
+TRACKING = ('"Total Time (s)","Total Cycles","Load(8801:Load) (kN)","Stress(8801:Load) (MPa)",'
+            '"Cycle Energy(Energy Calculation) (J)","Position(8801:Position) (mm)"\n'
+            "5.08,1,4.3857,108.77,0,8.0699\n5.12,1,4.6882,116.27,0.0332,8.0772\n")
+
+
+def test_a_candidate_whose_unit_is_not_of_its_role_makes_no_ambiguity(write):
+    # a stress (MPa) is no force and an energy (J) no cycle count: each is left out with a
+    # warning, instead of refusing the file for two candidates
+    table, meta = read_table(write("tracking.csv", TRACKING), kind="tensile")
+    np.testing.assert_allclose(table["force"], [4385.7, 4688.2])
+    np.testing.assert_array_equal(table["cycle_count"], [1, 1])
+    assert "column 'Stress(8801:Load)': unit 'MPa' is not a unit of force: column not used" \
+        in meta.warnings
+    assert ("column 'Cycle Energy(Energy Calculation)': unit 'J' is not a unit of "
+            "cycle_count: column not used") in meta.warnings
+
+
+def test_candidates_none_of_which_fits_are_still_an_ambiguity(write):
+    text = TRACKING.replace("Load(8801:Load) (kN)", "Load(8801:Load) (MPa)")
+    with pytest.raises(ColumnError, match="2 columns could be the force"):
+        read_table(write("tracking.csv", text), kind="tensile")
+
+
 # a real Mecmesin Emperor export: names, units, then a label over each specimen's columns
 EMPEROR = (
     "Force,Distance,Time,Event,,,,\n"
