@@ -67,8 +67,8 @@ from pipeline.ingest.clock import ClockColumn, declare_seconds
 from pipeline.ingest.names import header_text, match_role, split_name_unit
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawColumns, RawTable
-from pipeline.ingest.roles import Candidates, find_candidates
-from pipeline.ingest.sniff import Head, TableSpec, require_names
+from pipeline.ingest.roles import Candidates, display_name, find_candidates
+from pipeline.ingest.sniff import Head, TableSpec, require_names, split_fields
 from pipeline.ingest.table import TableMetadata
 from pipeline.ingest.textbody import (
     Region,
@@ -203,8 +203,12 @@ def text_header(
     names, units = header_columns(spec)
     meta = metadata(head, spec, layout, preamble)
     units = _time_unit_of_the_scope(names, units, preamble, meta.warnings)
-    candidates = find_candidates(names, units, columns, file=head.name,
-                                 header_line=names_line(spec))
+    candidates, texts = find_candidates(names, units, columns, file=head.name,
+                                        header_line=names_line(spec)).without(spec.texts)
+    first = split_fields(head.lines[spec.data_index], spec.delimiter)
+    meta.warnings += [f"column {display_name(names, index)!r} holds text ({first[index].strip()!r}"
+                      f"...), not numbers: not used as the {role}"
+                      for index, role in texts.items()]
     clocks = time_clocks(spec, candidates, names, units, meta.warnings)
     return RawColumns(names=names, units=units, candidates=candidates, metadata=meta,
                       units_line=units_line(spec), clocks=clocks)

@@ -43,6 +43,9 @@ FIND_LINES = 256
 #: The most rows a table above the data may have to be passed over as a table of results
 #: (one row per specimen of a batch) rather than read as the data.
 RESULTS_ROWS = 20
+#: Data rows of the head looked at to tell a column of text labels (a step's name, a
+#: status) from a column of numbers with a bad cell.
+TEXT_ROWS = 32
 #: Cell texts read as missing values: pyarrow's defaults, and "none" (a data logger's empty
 #: channel; Python's None written as text).
 NULL_VALUES = frozenset(pacsv.ConvertOptions().null_values) | {"None", "none"}
@@ -146,6 +149,9 @@ class TableSpec:
     results : tuple of (int, int) or None
         The lines (first, past the last; indexes in :attr:`Head.lines`) of the
         results tables passed over above the data (:func:`find_table`).
+    texts : frozenset of int
+        The columns whose every cell in the head's first data rows is text (a label of
+        the step, a status): they hold no numbers to read.
     """
 
     delimiter: str
@@ -160,6 +166,7 @@ class TableSpec:
     pairs: bool = False
     clocks: dict[int, ClockColumn] = field(default_factory=dict)
     results: tuple[int, int] | None = None
+    texts: frozenset[int] = frozenset()
 
     def results_warning(self) -> list[str]:
         """The warning of the results tables passed over, if any."""
@@ -559,7 +566,22 @@ def find_table(
         pairs=pairs,
         clocks=clocks,
         results=results,
+        texts=frozenset() if pairs else _text_columns(rows[data:], kinds[data:], columns,
+                                                      decimal),
     )
+
+
+def _text_columns(rows: list[list[str]], kinds: list[str], columns: int, decimal: str
+                  ) -> frozenset[int]:
+    """The columns whose cells are text in each of the first :data:`TEXT_ROWS` data rows
+    of `rows`, two at least (neither numbers, clock readings nor missing values)."""
+    texts = set(range(columns))
+    data = [row for row, kind in zip(rows, kinds, strict=False) if kind == "numeric"]
+    for row in data[:TEXT_ROWS]:
+        texts = {index for index in texts if index < len(row) and not (
+            is_number(row[index], decimal) or is_missing(row[index])
+            or looks_like_clock(row[index]))}
+    return frozenset(texts) if len(data) >= 2 else frozenset()  # one bad row is a bad cell
 
 
 def _past_results(rows: list[list[str]], kinds: list[str], width: int, data: int,

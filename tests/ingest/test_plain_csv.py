@@ -67,6 +67,32 @@ def test_text_column_is_kept_out(write):
     assert meta.columns[0].role is None
 
 
+# the head of a real CellScale micro-tester export: "Cycle" holds the step's label
+CELLSCALE = ("Set Name,Cycle,Time(ms),Force(uN),Tip Displacement(um)\n"
+             "noise,1-Compress,0,9.11398,-0.22992\nnoise,1-Hold,200,9.11398,-0.22992\n"
+             "noise,1-Hold,400,9.3,-0.2\n")
+
+
+def test_a_column_of_labels_named_as_a_role_is_kept_out_with_a_warning(write):
+    table, meta = read_table(write("cellscale.csv", CELLSCALE))
+    assert list(table.columns) == ["time", "force", "gauge_1"]
+    np.testing.assert_allclose(table["time"], [0.0, 0.2, 0.4])
+    assert meta.warnings == ["column 'Cycle' holds text ('1-Compress'...), not numbers: not "
+                             "used as the cycle_count"]
+
+
+def test_a_column_of_labels_named_in_the_run_sheet_is_refused_at_its_first_label(write):
+    with pytest.raises(ValueParseError, match="'1-Compress' is not a number") as caught:
+        read_table(write("cellscale.csv", CELLSCALE), columns={"cycle_count": "Cycle"})
+    assert (caught.value.row, caught.value.column) == (2, "Cycle")
+
+
+@pytest.mark.parametrize("rows", ["0,x,0\n", "0,x,0\n1,2,3\n"])
+def test_a_bad_cell_is_no_column_of_labels(write, rows):
+    with pytest.raises(ValueParseError, match="'x' is not a number"):
+        read_table(write("t.csv", "time [s],force [kN],gauge [mm]\n" + rows))
+
+
 def test_short_row_in_the_middle(write):
     with pytest.raises(LayoutError, match="2 fields where the data rows have 3") as caught:
         read_table(write("t.csv", "time [s],force [kN],gauge [mm]\n0,1,2\n0,1\n0,1,2\n"))
