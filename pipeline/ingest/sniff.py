@@ -58,6 +58,10 @@ SHIFT_JIS = "cp932"
 #: μ of microstrain, and the degree sign).
 _JAPANESE_SCRIPTS = ("CJK", "HIRAGANA", "KATAKANA", "HALFWIDTH KATAKANA", "FULLWIDTH",
                      "GREEK", "IDEOGRAPHIC", "DEGREE", "KATAKANA-HIRAGANA")
+#: First bytes of the Shift-JIS symbols Japanese text also holds: punctuation, brackets
+#: (【kN】), signs (±, ×, ℃, ※), Greek and Cyrillic letters, box drawing (rows 1 to 8 of JIS
+#: X 0208), and NEC's circled numbers and unit squares (㎜).
+_JIS_SYMBOL_LEADS = frozenset((0x81, 0x82, 0x83, 0x84, 0x87))
 
 _LINE = re.compile(r"([^\r\n]*)(\r\n|\r|\n|$)")
 _NON_ASCII = re.compile(r"[^\x00-\x7f]")
@@ -274,12 +278,13 @@ def _has_controls(raw: bytes, codec: str) -> bool:
 
 def _is_japanese(raw: bytes) -> bool:
     """Whether `raw` decodes as Japanese Windows text (:data:`SHIFT_JIS`), its non-ASCII
-    characters all ideographs, kana or full-width forms."""
+    characters all ideographs, kana, full-width forms or Japanese symbols."""
     try:
         text = raw.decode(SHIFT_JIS)
     except UnicodeDecodeError:
         return False
     return all(unicodedata.name(char, "").startswith(_JAPANESE_SCRIPTS)
+               or char.encode(SHIFT_JIS)[0] in _JIS_SYMBOL_LEADS
                for char in _NON_ASCII.findall(text))
 
 

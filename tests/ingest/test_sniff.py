@@ -34,6 +34,8 @@ GERMAN = "Zeit [s];Temperatur [°C];Kraft [kN];Länge [mm]\r\n0,1;20,5;1,2;3\r\n
         (POLISH, "cp1250", "cp1250"),
         (SPANISH.replace("Fuerza", "Fuerza señal"), "latin-1", "latin-1"),
         (JAPANESE, "cp932", "cp932"),
+        # a real Japanese logger's channel table: ranges in ±, units in 【】 brackets
+        (JAPANESE.replace("荷重 kN", "荷重【kN】") + "入力レンジ,±10V\r\n", "cp932", "cp932"),
         (GERMAN, "latin-1", "latin-1"),  # °C and ä decode in Shift-JIS too, as nonsense
         (POLISH, "utf-8", "utf-8"),
         (POLISH, "utf-8-sig", "utf-8-sig"),
