@@ -159,7 +159,7 @@ COMMAND_NAMES = ("sollwert", "soll", "setpoint", "set point", "command", "demand
 _TRANSVERSE = "transverse"
 
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^()]*)\)"
-                        r"|<(?P<ang>[^<>]*)>)\s*$")
+                        r"|<(?P<ang>[^<>]*)>|【(?P<jis>[^【】]*)】|（(?P<wide>[^（）]*)）)\s*$")
 #: The channel a computed one was derived from, in trailing brackets.
 _SOURCE = re.compile(r"\((?P<source>[^()]+)\)\s*$")
 _TOKEN = re.compile(r"[^\W\d_]+|\d+")
@@ -196,20 +196,22 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
     ----------
     header : str
         A names-row cell, e.g. ``"force [kN]"``, ``"Load (N)"``, ``"KRAFT <N>"``,
-        ``"Kraft / kN"`` (ISO 80000 quantity / unit) or ``"Time"``.
+        ``"Kraft / kN"`` (ISO 80000 quantity / unit), ``"荷重【kN】"`` or ``"Time"``.
 
     Returns
     -------
     name : str
         The name without the unit, stripped.
     unit : str or None
-        The text inside a trailing ``[...]``, ``(...)`` or ``<...>``, or after `` / `` (or
-        a single ``/``) when pint reads it as a unit; None when there is none.
+        The text inside trailing ``[...]``, ``(...)``, ``<...>``, ``【...】`` or full-width
+        parentheses ``（...）``, or after `` / `` (or a single ``/``) when pint reads it as
+        a unit; None when there is none.
     """
     text = header_text(header)
     match = _BRACKETED.match(text)
     if match is not None and match["name"]:
-        unit = next(match[group] for group in ("sq", "par", "ang") if match[group] is not None)
+        unit = next(match[group] for group in ("sq", "par", "ang", "jis", "wide")
+                    if match[group] is not None)
         return match["name"].strip(), unit.strip()
     separator = " / " if " / " in text else "/" if text.count("/") == 1 else None
     if separator:

@@ -78,6 +78,8 @@ def test_every_listed_name_matches_its_own_role():
         ("Rig/Branch tension", ("Rig/Branch tension", None)),
         ("KRAFT <N>", ("KRAFT", "N")),
         ("DEHNRATE_SOLL <1/s>", ("DEHNRATE_SOLL", "1/s")),
+        ("荷重【kN】", ("荷重", "kN")),  # Japanese and Chinese brackets
+        ("位移（mm）", ("位移", "mm")),
     ],
 )
 def test_split_name_unit(cell, expected):
