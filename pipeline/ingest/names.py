@@ -17,7 +17,8 @@ from pipeline.ingest.unitparse import spellings
 #: Names (whole words or word sequences) that give a column its role, per language.
 COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
     "en": {
-        "time": ("time", "elapsed time", "test time", "hours", "operating hours"),
+        "time": ("time", "elapsed time", "test time", "hours", "operating hours", "timestamp",
+                 "time stamp"),
         "force": ("force", "load", "tension"),
         "gauge": (
             "extension", "displacement", "disp", "gauge", "elongation", "extensometer", "ext",
@@ -34,7 +35,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
     },
     "de": {
         "time": ("zeit", "prüfzeit", "testzeit", "versuchszeit", "laufzeit", "betriebsstunden",
-                 "gesamtzeit", "zykluszeit"),
+                 "gesamtzeit", "zykluszeit", "zeitstempel"),
         "force": ("kraft", "standardkraft", "prüfkraft", "last"),
         "gauge": ("weg", "standardweg", "traversenweg", "dehnung", "verlängerung", "feindehnung",
                   "wegaufnehmer", "standardwegaufnehmer", "traverse", "kolbenweg",

@@ -49,6 +49,8 @@ from pipeline.ingest.names import (
         ("ストローク", "gauge"),
         # ZwickRoell testXpert's English channel names
         ("Standard travel", "gauge"), ("Standard force", "force"), ("System time", "time"),
+        # an Arduino load-cell logger, Campbell Scientific's TOA5
+        ("Timestamp", "time"), ("TIMESTAMP", "time"), ("Time stamp", "time"),
     ],
 )
 def test_match_role(name, role):
