@@ -531,7 +531,7 @@ def find_table(
         above >= 1
         and kinds[above] == "text"
         and any(not (is_number(cell, decimal) or is_missing(cell)) for cell in rows[above - 1])
-        and len(rows[above]) <= width
+        and _filled_width(rows[above]) <= width  # a trailing delimiter adds a blank field
         and _units_row(rows[above], rows[data])
     ):  # numbers among the names over a units row (sensors named by serial number, an
         # oscilloscope's channels 1 and 2: "x-axis,1,2") do not make the names row data
@@ -692,6 +692,14 @@ def _no_names_row(file: str, data: int, delimiter: str) -> LayoutError:
              + ", or name them in the run sheet by position, with their units: columns = "
                '{time = "column 1", force = "column 2"}, units = {time = "s", force = "kN"}',
     )
+
+
+def _filled_width(row: list[str]) -> int:
+    """The fields of `row` up to its last one not blank."""
+    width = len(row)
+    while width and not row[width - 1].strip():
+        width -= 1
+    return width
 
 
 def _units_row(row: list[str], first_data: list[str]) -> bool:

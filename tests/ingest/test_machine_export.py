@@ -286,6 +286,21 @@ def test_candidates_none_of_which_fits_are_still_an_ambiguity(write):
         read_table(write("tracking.csv", text), kind="tensile")
 
 
+# a real transient recorder's export (Hopkinson bar strain gauges): every header row ends
+# with the delimiter, the data rows do not
+RECORDER = ("Starttime;16.08.2016 15:46:25\nSamplerate;10000000 Hz\n\n"
+            "Kanal;DMS1A (0.A1);DMS1B (0.A2);\nZeit;Signal;Signal;\ns;V;V;\n\n\n"
+            "2,24130000e-03;-4,37500e-03;-3,12500e-03\n"
+            "2,24140000e-03;-5,00000e-03;-5,62500e-03\n")
+
+
+def test_a_units_row_ending_with_the_delimiter_is_still_the_units_row(write):
+    table, meta = read_table(write("recorder.asd", RECORDER), kind="tensile", strict=False)
+    np.testing.assert_allclose(table["time"], [2.2413e-3, 2.2414e-3])
+    assert [(column.name, column.unit) for column in meta.columns] == [
+        ("Zeit", "s"), ("Signal", "V"), ("Signal", "V")]
+
+
 # a real Mecmesin Emperor export: names, units, then a label over each specimen's columns
 EMPEROR = (
     "Force,Distance,Time,Event,,,,\n"
