@@ -30,7 +30,7 @@ from pipeline.errors import EmptyFileError, EncodingError, LayoutError
 from pipeline.ingest.clock import ClockColumn, clock_kind, looks_like_clock
 from pipeline.ingest.names import match_role
 from pipeline.ingest.source import Source
-from pipeline.ingest.unitparse import looks_like_unit
+from pipeline.ingest.unitparse import NO_UNIT_CELLS, looks_like_unit
 
 #: Bytes read to sniff a file.
 HEAD_BYTES = 1 << 16
@@ -556,7 +556,8 @@ def find_table(
                                if (kind := clock_kind(cell))}
     if units_index is not None:
         for index, cell in enumerate(rows[units_index][:columns]):
-            units[index] = cell.strip().strip("()[]<>").strip() or None
+            unit = cell.strip().strip("()[]<>").strip()
+            units[index] = None if unit.lower() in NO_UNIT_CELLS else unit or None
     return TableSpec(
         delimiter=delimiter,
         decimal="," if pairs else decimal,

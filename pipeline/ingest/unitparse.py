@@ -45,6 +45,10 @@ COUNTER_UNITS = frozenset(
      "zyklen", "cykle", "ciclos"}
 )
 
+#: Units-row cells that stand for no unit: Siglent oscilloscopes write ``Value`` over each
+#: channel beside ``Second`` over the time.
+NO_UNIT_CELLS = frozenset({"value"})
+
 #: What to tell a user whose unit is not understood.
 ACCEPTED_UNITS = ("N, kN, daN, kgf (kG), tf, lbf; mm, µm (um), m, in; s, ms, min, h; deg, rad; "
                   "m/s")
@@ -167,7 +171,7 @@ def is_strain_unit(text: str | None) -> bool:
 def looks_like_unit(text: str) -> bool:
     """True if `text` reads as a unit cell of a units row (``"(mm)"``, ``"Sec"``, ``""``)."""
     stripped = text.strip()
-    if not stripped or stripped.lower() in COUNTER_UNITS:
+    if not stripped or stripped.lower() in COUNTER_UNITS | NO_UNIT_CELLS:
         return True
     if stripped[0] + stripped[-1] in ("()", "[]"):
         return True

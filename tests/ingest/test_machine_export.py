@@ -301,6 +301,21 @@ def test_a_units_row_ending_with_the_delimiter_is_still_the_units_row(write):
         ("Zeit", "s"), ("Signal", "V"), ("Signal", "V")]
 
 
+# a real Siglent SDS1204X-E export: 'Value' over each channel in the units row
+SIGLENT = ("Record Length,Analog:14000,\nVertical Units,CH1:V, CH2:V,,\nSource,CH1,CH2\n"
+           "Second,Value,Value\n-1.400000E-05,-4.400000E+01,-2.800000E+00\n"
+           "-1.399800E-05,-4.600000E+01,-2.800000E+00\n")
+
+
+def test_value_in_a_units_row_stands_for_no_unit(write):
+    table, meta = read_table(write("SDS00368.csv", SIGLENT), kind="engagement",
+                             columns={"force": "CH1"}, units={"force": "kN"})
+    assert [(column.name, column.unit) for column in meta.columns] == [
+        ("Source", "Second"), ("CH1", "kN"), ("CH2", None)]
+    np.testing.assert_allclose(table["time"], [-1.4e-05, -1.3998e-05])
+    np.testing.assert_allclose(table["force"], [-44e3, -46e3])
+
+
 # a real Mecmesin Emperor export: names, units, then a label over each specimen's columns
 EMPEROR = (
     "Force,Distance,Time,Event,,,,\n"
