@@ -1,17 +1,23 @@
-"""Time columns written as clock readings: times of day and ISO 8601 date-times.
+"""Time columns written as clock readings: times of day, ISO 8601 date-times, elapsed
+minutes and seconds.
 
 Some loggers stamp each row with the wall-clock time (``14:03:27.125``, or
-``2024-03-05 14:03:27.125``, or a TDMS timestamp channel) instead of seconds
-since the start. Such a column is read by pyarrow (or npTDMS) as a time of day
-or a timestamp and becomes seconds after the first data row's stamp, so that
-every chunk of a long log counts from the same origin. Nothing is guessed:
+``2024-03-05 14:03:27.125``, or a TDMS timestamp channel) or the time elapsed in
+minutes and seconds (``12:03.4``) instead of seconds since the start. Such a
+column is read by pyarrow (or npTDMS) as a time of day or a timestamp and
+becomes seconds after the first data row's stamp, so that every chunk of a long
+log counts from the same origin. Nothing is guessed:
 
-* only these two forms are read: hours of one or two digits, ``.`` or ``,``
+* only these three forms are read: hours of one or two digits, ``.`` or ``,``
   before the fraction of a second (``9:03:27,125``, as a logger set to a
   decimal comma writes it), the date's parts joined by ``-`` or, as some
   loggers write it, by ``/`` (``2024/03/05 14:03:27.125``: the year first, so
-  still one reading); a date in another order (``05.03.2024``, ``3/5/2024``)
-  or a 12-hour clock stays text, and the column is refused as not a number;
+  still one reading); minutes and seconds with the fraction of a second
+  (``0:00.1``, ``75:12.3``, hours in front once past the hour, as Measurement
+  Computing's DAQami writes its elapsed time: without the fraction, ``5:14``
+  could be hours and minutes); a date in another order (``05.03.2024``,
+  ``3/5/2024``) or a 12-hour clock stays text, and the column is refused as
+  not a number;
 * a column whose first reading is in pyarrow's own form (two-digit hours,
   ``.``, ISO dashes) is parsed by its CSV reader; any other is read as text
   and rewritten to that form with pyarrow's string functions first;
@@ -30,12 +36,16 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.compute as pc
 
-#: The clock forms read, by kind: a time of day, and a date (year first) and time.
+#: The clock forms read, by kind: a time of day, a date (year first) and time, and an
+#: elapsed time in minutes and seconds (hours in front once past the hour).
 _FORMS = {
     "time of day": re.compile(r" *\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)? *"),
     "date and time": re.compile(
         r" *\d{4}(?P<sep>[-/])\d{2}(?P=sep)\d{2}[T ]\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)? *"),
+    "minutes and seconds": re.compile(r" *(?:\d+:)?\d+:\d{2}[.,]\d+ *"),
 }
+#: The parts of an elapsed time (RE2, for pyarrow), its decimal comma made a point.
+_ELAPSED_PARTS = r"^(?P<hours>\d+:)?(?P<minutes>\d+):(?P<seconds>\d{2}\.\d+)$"
 #: The forms pyarrow's CSV reader parses itself: two-digit hours, ``.``, ISO 8601 dashes.
 _ARROW_FORMS = {
     "time of day": re.compile(r" *\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
@@ -52,22 +62,26 @@ _CLOCK_LIKE = re.compile(r"\d{1,2}:\d{2}")
 #: The hint for a clock reading in a form that is not read.
 UNREAD_FORM_HINT = (
     "the column holds clock readings in a form the reader does not guess (it reads "
-    "H:MM:SS.fff and YYYY-MM-DD H:MM:SS.fff or YYYY/MM/DD H:MM:SS.fff, with '.' or ',' "
-    "before the fraction): export the time in seconds, or name another time column in "
-    "the run sheet")
+    "H:MM:SS.fff, YYYY-MM-DD H:MM:SS.fff or YYYY/MM/DD H:MM:SS.fff and M:SS.fff, with '.' "
+    "or ',' before the fraction): export the time in seconds, or name another time column "
+    "in the run sheet")
 #: The arrow type each kind is parsed as.
-_ARROW_TYPES = {"time of day": pa.time64("ns"), "date and time": pa.timestamp("ns")}
+_ARROW_TYPES = {"time of day": pa.time64("ns"), "date and time": pa.timestamp("ns"),
+                "minutes and seconds": pa.timestamp("ns")}
 #: Nanoseconds per second.
 _NS = 1_000_000_000
 
 
 def clock_kind(text: str) -> str | None:
-    """``"time of day"`` or ``"date and time"`` if `text` is a clock reading, else None.
+    """``"time of day"``, ``"date and time"`` or ``"minutes and seconds"`` if `text` is a
+    clock reading, else None.
 
     Examples
     --------
     >>> clock_kind("9:03:27,125"), clock_kind("2024/03/05 14:03:27"), clock_kind("1.5")
     ('time of day', 'date and time', None)
+    >>> clock_kind("12:03.4"), clock_kind("12:03")
+    ('minutes and seconds', None)
     """
     for kind, form in _FORMS.items():
         if form.fullmatch(text):
@@ -91,7 +105,8 @@ class ClockColumn:
     Attributes
     ----------
     kind : str
-        ``"time of day"`` or ``"date and time"`` (see :func:`clock_kind`).
+        ``"time of day"``, ``"date and time"`` or ``"minutes and seconds"`` (see
+        :func:`clock_kind`).
     first : str
         The first data row's cell: the origin of the seconds.
     """
@@ -128,11 +143,15 @@ class ClockColumn:
     @cached_property
     def _as_text(self) -> bool:
         """Whether the column is read as text and rewritten (:data:`_ARROW_FORMS`)."""
-        return _ARROW_FORMS[self.kind].fullmatch(self.first) is None
+        form = _ARROW_FORMS.get(self.kind)
+        return form is None or form.fullmatch(self.first) is None
 
     def _nanoseconds(self, texts: pa.ChunkedArray) -> pa.ChunkedArray:
-        """Texts as int64 nanoseconds: since midnight, or since 1970 for a date and time."""
+        """Texts as int64 nanoseconds: since midnight, since 1970 for a date and time, or
+        the time elapsed."""
         column = pc.utf8_trim_whitespace(texts)
+        if self.kind == "minutes and seconds":
+            return _elapsed_nanoseconds(column)
         if self._as_text:
             for old, new in _PLAIN_REWRITES:
                 column = pc.replace_substring(column, old, new)
@@ -153,7 +172,7 @@ class ClockColumn:
     def matches(self, text: str) -> bool:
         """True if `text` is a clock reading of this column's kind that the column reads
         (in pyarrow's own form only, unless the column is read as text)."""
-        return clock_kind(text) == self.kind and (
+        return _FORMS[self.kind].fullmatch(text) is not None and (
             self._as_text or _ARROW_FORMS[self.kind].fullmatch(text) is not None)
 
     def mismatch(self, text: str) -> str:
@@ -165,6 +184,21 @@ class ClockColumn:
         """What the reader tells the user about column `name`."""
         return (f"column {name!r} holds clock readings ({self.kind}, first "
                 f"{self.first.strip()!r}): read as seconds after the first row's")
+
+
+def _elapsed_nanoseconds(texts: pa.ChunkedArray) -> pa.ChunkedArray:
+    """Elapsed times (``[H:]M:SS.fff``, see :data:`_FORMS`) as int64 nanoseconds; raises
+    :class:`pyarrow.ArrowInvalid` on a cell of another form."""
+    parts = pc.extract_regex(pc.replace_substring(texts, ",", "."), _ELAPSED_PARTS)
+    if parts.null_count > texts.null_count:  # a cell that does not match comes back null
+        raise pa.ArrowInvalid("a cell is no elapsed time")
+    hours = pc.utf8_rtrim(pc.struct_field(parts, "hours"), characters=":")
+    seconds = pc.add(pc.multiply(pc.cast(pc.if_else(pc.equal(hours, ""), "0", hours),
+                                         pa.float64()), 3600.0),
+                     pc.add(pc.multiply(pc.cast(pc.struct_field(parts, "minutes"),
+                                                pa.float64()), 60.0),
+                            pc.cast(pc.struct_field(parts, "seconds"), pa.float64())))
+    return pc.cast(pc.round(pc.multiply(seconds, float(_NS))), pa.int64())
 
 
 def declare_seconds(clocks: dict[int, ClockColumn], names: list[str], units: list[str | None],

@@ -44,6 +44,8 @@ def log(cells: list[str], header: str = "Time,Load (kN)") -> str:
     ("2024-03-05 4:03:27,5", "date and time"), ("14:03", None), ("114:03:27", None),
     ("05.03.2024 14:03:27", None), ("2:03:27 PM", None), ("14:03:27,", None),
     ("1.5", None), ("", None),
+    ("0:00.0", "minutes and seconds"), ("75:12,3", "minutes and seconds"),
+    ("1:00:00.5", "time of day"), ("12:3.4", None),
 ])
 def test_clock_kind(text, kind):
     assert clock_kind(text) == kind
@@ -55,6 +57,38 @@ def test_a_time_of_day_is_seconds_after_the_first(milliseconds):
     seconds = ClockColumn("time of day", texts[0]).seconds_of_texts(texts)
     expected = (np.array(milliseconds) - milliseconds[0]) / 1e3
     np.testing.assert_allclose(seconds, expected, rtol=0, atol=1e-9)
+
+
+def elapsed(seconds: float, decimal: str = ".") -> str:
+    """``[H:]M:SS.f``, as Measurement Computing's DAQami writes the time since the start."""
+    hours, rest = divmod(round(seconds * 10), 36_000)
+    minutes, tenths = divmod(rest, 600)
+    text = f"{minutes}:{tenths / 10:04.1f}".replace(".", decimal)
+    return f"{hours}:{text.zfill(len(text) + 1)}" if hours else text
+
+
+@pytest.mark.parametrize("decimal", [".", ","])
+def test_elapsed_minutes_and_seconds_read_on_past_the_hour(write, decimal):
+    start = 3598.0  # the fifth reading is past the hour: 0:59:59.9 -> 1:00:00.0
+    cells = [elapsed(start + s, decimal) for s in SECONDS]
+    assert cells[:2] == [f"59:58{decimal}0", f"59:58{decimal}2"] and cells[-1].startswith("1:00:")
+    delimiter = ";" if decimal == "," else ","
+    text = f"Time (s){delimiter}Load (kN)\n" + "".join(
+        f"{cell}{delimiter}{force:.6f}\n".replace(".", decimal)
+        for cell, force in zip(cells, FORCE_KN, strict=True))
+    table, meta = read_table(write("daqami.csv", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], np.round(SECONDS * 10) / 10, rtol=0, atol=1e-9)
+    assert any("clock readings (minutes and seconds" in warning for warning in meta.warnings)
+
+
+@pytest.mark.parametrize("cell", ["x", "0:00:03", "1.5"])
+def test_a_cell_that_is_no_elapsed_time_is_named(write, cell):
+    cells = [elapsed(s) for s in SECONDS]
+    cells[6] = cell
+    with pytest.raises(ValueParseError) as caught:
+        read_table(write("daqami.csv", log(cells)), kind="engagement")
+    assert (caught.value.row, caught.value.column) == (8, "Time")
+    assert caught.value.message == f"{cell!r} is not a clock reading like the first row's '0:00.0'"
 
 
 @pytest.mark.parametrize("separator, date_separator", [(" ", "-"), ("T", "-"), (" ", "/")])
