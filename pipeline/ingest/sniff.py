@@ -536,6 +536,8 @@ def find_table(
     ):  # numbers among the names over a units row (sensors named by serial number, an
         # oscilloscope's channels 1 and 2: "x-axis,1,2") do not make the names row data
         units_index, above = above, above - 1
+        if above >= 1 and _channel_states(rows[above]) and kinds[above - 1] == "text":
+            above -= 1  # a row of channel states between the names and the units (MaCh3D)
     if above >= 0 and kinds[above] != "text" and units_index is None:
         raise _no_names_row(name, data, delimiter)
     names = rows[above] if above >= 0 else [""] * width
@@ -693,6 +695,13 @@ def _no_names_row(file: str, data: int, delimiter: str) -> LayoutError:
              + ", or name them in the run sheet by position, with their units: columns = "
                '{time = "column 1", force = "column 2"}, units = {time = "s", force = "kN"}',
     )
+
+
+def _channel_states(row: list[str]) -> bool:
+    """Whether `row` tells each channel's state: ``ON`` or ``OFF`` (``-`` where a channel has
+    none), as a MaCh3D machine writes between the names and the units."""
+    cells = {cell.strip().lower() for cell in row}
+    return bool(cells & {"on", "off"}) and cells <= {"on", "off", "-", ""}
 
 
 def _filled_width(row: list[str]) -> int:

@@ -316,6 +316,20 @@ def test_value_in_a_units_row_stands_for_no_unit(write):
     np.testing.assert_allclose(table["force"], [-44e3, -46e3])
 
 
+# a real MaCh3D export: a row of channel states between the names and the units
+MACH3D = ("+----+\n|  DATA  |\n+----+\n\nTIME;DISP;LOAD;TMP1;TMP2\n-;-;ON;ON;OFF\n"
+          "(ms);(mm);(N);(deg_C);(deg_C)\n\n0;7.430;2.94;nan;0\n200;7.443;4.23;nan;0\n")
+
+
+def test_a_row_of_channel_states_between_names_and_units_is_passed_over(write):
+    table, meta = read_table(write("example.dat", MACH3D), kind="tensile")
+    assert [(column.name, column.unit) for column in meta.columns][:3] == [
+        ("TIME", "ms"), ("DISP", "mm"), ("LOAD", "N")]
+    np.testing.assert_allclose(table["time"], [0.0, 0.2])
+    np.testing.assert_allclose(table["force"], [2.94, 4.23])
+    assert "ON" not in str(meta.preamble)
+
+
 # a real Mecmesin Emperor export: names, units, then a label over each specimen's columns
 EMPEROR = (
     "Force,Distance,Time,Event,,,,\n"
