@@ -400,6 +400,14 @@ def detect_dialect(
             if score > best[0]:
                 best = (score, delimiter, decimal, width)
     if best[0][0] == 0:
+        if _spaced_numbers(sample):
+            raise LayoutError(
+                "the columns are separated by runs of spaces: the readers read columns "
+                "separated by ',', ';', tabs or '|'",
+                file=name,
+                hint="export the table with tabs or ';' between the columns, or replace "
+                     "the spaces between the columns by one tab in a copy of the file",
+            )
         if not any(_has_two_numbers(line) for line in sample):
             raise EmptyFileError(
                 "no data rows: the file holds only text lines",
@@ -434,6 +442,13 @@ def _text_in_every_row(sample: list[str], delimiters: tuple[str, ...]) -> list[s
             return [cell.strip() for cell in rows[-1]
                     if not is_number(cell, ".") and not is_missing(cell)][:3]
     return []
+
+
+def _spaced_numbers(sample: list[str]) -> bool:
+    """Whether most lines of `sample` are two numbers or more separated by spaces alone."""
+    spaced = sum(len(cells := line.split()) >= 2 and all(
+        is_number(cell, ".") or is_missing(cell) for cell in cells) for line in sample)
+    return spaced > len(sample) / 2
 
 
 def _has_two_numbers(line: str) -> bool:

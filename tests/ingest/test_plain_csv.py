@@ -93,6 +93,17 @@ def test_a_bad_cell_is_no_column_of_labels(write, rows):
         read_table(write("t.csv", "time [s],force [kN],gauge [mm]\n" + rows))
 
 
+# a real strain-gauge logger's export: quoted names, columns aligned by runs of spaces
+SPACED = ('"Time"  "Strain_1a" "Strain_1b"\n0   -454.0928   122.4755\n'
+          '0.005   -454.2175    121.9769\n0.01    -453.9680    121.9769\n')
+
+
+def test_columns_separated_by_spaces_are_refused_as_such(write):
+    with pytest.raises(LayoutError, match="separated by runs of spaces") as caught:
+        read_table(write("dataexample.txt", SPACED))
+    assert "tab" in caught.value.hint
+
+
 def test_short_row_in_the_middle(write):
     with pytest.raises(LayoutError, match="2 fields where the data rows have 3") as caught:
         read_table(write("t.csv", "time [s],force [kN],gauge [mm]\n0,1,2\n0,1\n0,1,2\n"))
