@@ -177,8 +177,8 @@ class TableSpec:
         if self.results is None:
             return []
         first, stop = self.results
-        return [f"lines {first + 1}-{stop}: a table of results above the data was passed "
-                f"over; the data are the table from line {self.data_index + 1}"]
+        return [f"lines {first + 1}-{stop}: a table above the data (of results or settings) "
+                f"was passed over; the data are the table from line {self.data_index + 1}"]
 
 
 def split_fields(line: str, delimiter: str) -> list[str]:

@@ -142,8 +142,8 @@ def test_a_batchs_results_table_above_the_raw_data_is_passed_over(write, reader,
     np.testing.assert_allclose(table["force"], 10.0 * np.arange(rows))
     np.testing.assert_allclose(table["gauge_1"], 1e-6 * np.arange(rows), atol=1e-12)
     assert meta.first_data_line == 13
-    assert "lines 2-10: a table of results above the data was passed over; the data are " \
-           "the table from line 13" in meta.warnings
+    assert "lines 2-10: a table above the data (of results or settings) was passed over; " \
+           "the data are the table from line 13" in meta.warnings
     assert meta.preamble == {"Results Table 1": ""}  # the results are no preamble
 
 
