@@ -35,7 +35,11 @@ from pipeline.ingest.unitparse import NO_UNIT_CELLS, looks_like_unit
 #: Bytes read to sniff a file.
 HEAD_BYTES = 1 << 16
 #: Delimiters tried, in order of preference when several fit.
-DELIMITERS = ("\t", ";", ",", "|")
+DELIMITERS = ("\t", ";", ",", "|", " ")
+#: The delimiter of columns aligned by runs of blanks (spaces or tabs; tried last).
+BLANKS = " "
+#: What separates the names of a table aligned by blanks when a name holds a blank.
+_WIDE_BLANKS = re.compile(r" {2,}|\t")
 #: Non-blank lines at the end of the head that the dialect is chosen on.
 DIALECT_LINES = 128
 #: Lines of the head first classified to find the table (more when they do not tell).
@@ -182,7 +186,13 @@ class TableSpec:
 
 
 def split_fields(line: str, delimiter: str) -> list[str]:
-    """The fields of one line (``"`` quotes honoured)."""
+    """The fields of one line (``"`` quotes honoured); with :data:`BLANKS`, each run of
+    blanks is one delimiter and blanks around the line are none."""
+    if delimiter == BLANKS:
+        line = line.replace("\t", " ").strip()
+        if '"' not in line:
+            return line.split()
+        return next(csv.reader([line], delimiter=" ", skipinitialspace=True), [])
     if '"' not in line:
         return line.split(delimiter)
     try:
@@ -391,7 +401,7 @@ def detect_dialect(
     for delimiter in delimiters:
         rows = [split_fields(line, delimiter) for line in sample]
         for decimal in ".,":
-            numeric = [row for row in rows if _numeric_row(row, decimal)]
+            numeric = [row for row in rows if _numeric_row(row, decimal, delimiter == BLANKS)]
             if not numeric:
                 continue
             width = Counter(len(row) for row in numeric).most_common(1)[0][0]
@@ -400,21 +410,13 @@ def detect_dialect(
             if score > best[0]:
                 best = (score, delimiter, decimal, width)
     if best[0][0] == 0:
-        if _spaced_numbers(sample):
-            raise LayoutError(
-                "the columns are separated by runs of spaces: the readers read columns "
-                "separated by ',', ';', tabs or '|'",
-                file=name,
-                hint="export the table with tabs or ';' between the columns, or replace "
-                     "the spaces between the columns by one tab in a copy of the file",
-            )
         if not any(_has_two_numbers(line) for line in sample):
             raise EmptyFileError(
                 "no data rows: the file holds only text lines",
                 file=name, row=len(lines) + 1,
                 hint="the machine wrote no measurements: export the test again",
             )
-        texts = _text_in_every_row(sample, delimiters)
+        texts = _text_in_every_row(sample, tuple(d for d in delimiters if d != BLANKS))
         if texts:
             raise LayoutError(
                 "every row holds text beside its numbers (" + ", ".join(map(repr, texts))
@@ -426,7 +428,7 @@ def detect_dialect(
         raise LayoutError(
             "no table of numbers found at the start of the file",
             file=name,
-            hint="the readers expect rows of numbers separated by ',', ';' or tabs; "
+            hint="the readers expect rows of numbers separated by ',', ';', tabs or spaces; "
             'give the format in the run sheet (format = "xlsx" or "tdms") if it is not text',
         )
     return best[1], best[2], best[3]
@@ -444,17 +446,10 @@ def _text_in_every_row(sample: list[str], delimiters: tuple[str, ...]) -> list[s
     return []
 
 
-def _spaced_numbers(sample: list[str]) -> bool:
-    """Whether most lines of `sample` are two numbers or more separated by spaces alone."""
-    spaced = sum(len(cells := line.split()) >= 2 and all(
-        is_number(cell, ".") or is_missing(cell) for cell in cells) for line in sample)
-    return spaced > len(sample) / 2
-
-
 def _has_two_numbers(line: str) -> bool:
     return any(
         sum(is_number(cell, decimal) for cell in split_fields(line, delimiter)) >= 2
-        for delimiter in DELIMITERS
+        for delimiter in DELIMITERS if delimiter != BLANKS  # a sentence has blanks too
         for decimal in ".,"
     )
 
@@ -464,11 +459,13 @@ def _balance(row: list[str], decimal: str) -> int:
     return sum(1 if is_number(cell, decimal) else 0 if is_missing(cell) else -1 for cell in row)
 
 
-def _numeric_row(row: list[str], decimal: str) -> bool:
+def _numeric_row(row: list[str], decimal: str, blanks: bool = False) -> bool:
     """At least two fields, and more numbers (or clock readings, read or not) than texts.
 
     A text cell is allowed so that a table with a text column (a date, a
-    status) is still found; its text column takes no role.
+    status) is still found; its text column takes no role. In a table aligned
+    by blanks (`blanks`), where a line of words and numbers splits into fields
+    too (``Cycles: 3 5``), none is.
     """
     numbers = texts = 0
     for cell in row:
@@ -476,16 +473,17 @@ def _numeric_row(row: list[str], decimal: str) -> bool:
             numbers += 1
         elif not is_missing(cell):
             texts += 1
-    return len(row) >= 2 and numbers > texts
+    return len(row) >= 2 and numbers > texts and not (blanks and texts)
 
 
-def row_kind(row: list[str], line: str, decimal: str) -> str:
+def row_kind(row: list[str], line: str, decimal: str, blanks: bool = False) -> str:
     """``"blank"``, ``"numeric"``, ``"missing"`` (only missing values), ``"partial"``
     (numbers and text: a data row with a bad cell) or ``"text"``. A line of
-    delimiters only (``"\t\t"``) is a row of missing values, not a blank line."""
+    delimiters only (``"\t\t"``) is a row of missing values, not a blank line.
+    `blanks`: the row is of a table aligned by blanks (:data:`BLANKS`)."""
     if not line.strip(" "):
         return "blank"
-    if _numeric_row(row, decimal):
+    if _numeric_row(row, decimal, blanks):
         return "numeric"
     if len(row) >= 2 and all(is_missing(cell) for cell in row):
         return "missing"
@@ -515,7 +513,8 @@ def find_table(
     limit = FIND_LINES
     while True:
         rows = [split_fields(line, delimiter) for line in lines[:limit]]
-        kinds = [row_kind(row, line, decimal) for row, line in zip(rows, lines, strict=False)]
+        kinds = [row_kind(row, line, decimal, delimiter == BLANKS)
+                 for row, line in zip(rows, lines, strict=False)]
         complete = limit >= len(lines)
         data = _first_data_row(rows, kinds, width, complete=complete)
         found = None if data is None else _past_results(rows, kinds, width, data, complete)
@@ -560,11 +559,15 @@ def find_table(
     columns = width // 2 if pairs else width
     if len(names) > columns and not any(cell.strip() for cell in names[columns:]):
         names = names[:columns]
+    if len(names) > columns and delimiter == BLANKS:  # names with a blank inside them
+        names = _WIDE_BLANKS.split(lines[above].strip())
     if len(names) > columns:
         raise LayoutError(
             f"the names row has {len(names)} fields but the data rows have {width}",
             file=name, row=above + 1,
-            hint="the header and the data do not match: check the delimiter and the export",
+            hint="the header and the data do not match: check the delimiter and the export"
+            + (" (in a table aligned by blanks, separate names that hold a blank by two "
+               "blanks or more)" if delimiter == BLANKS else ""),
         )
     names = names + [""] * (columns - len(names))
     units: list[str | None] = [None] * columns

@@ -20,7 +20,14 @@ import pyarrow.csv as pacsv
 
 from pipeline.errors import LayoutError, ValueParseError
 from pipeline.ingest.clock import UNREAD_FORM_HINT, ClockColumn, looks_like_clock
-from pipeline.ingest.sniff import NULL_VALUES, is_missing, is_number, row_kind, split_fields
+from pipeline.ingest.sniff import (
+    BLANKS,
+    NULL_VALUES,
+    is_missing,
+    is_number,
+    row_kind,
+    split_fields,
+)
 from pipeline.ingest.source import Source, contains, text_lines
 
 #: Bytes of the file's end searched for a truncated last line.
@@ -29,6 +36,9 @@ TAIL_BYTES = 1 << 16
 _INVALID = re.compile(r"column #(\d+).*invalid value '(.*)'", re.DOTALL)
 #: A number with thousands separators and a decimal point (``1,004.80328``).
 _THOUSANDS = re.compile(r"[+-]?\d{1,3}(?:,\d{3})+(?:\.\d*)?(?:[eE][+-]?\d+)?")
+#: A run of blanks between the fields of a table aligned by blanks, and blanks around a line.
+_BLANK_RUN = re.compile(rb"[ \t]+")
+_BLANKS_AROUND_A_LINE = re.compile(rb"(?m)^[ \t]+|[ \t]+(?=\r?$)")
 #: A number without exponent; group 1 or 2 holds its decimals.
 _PLAIN_NUMBER = {
     mark: re.compile(rf" *[+-]?(?:\d+(?:{re.escape(mark)}(\d*))?|{re.escape(mark)}(\d+)) *")
@@ -152,7 +162,8 @@ def trim_trailer(
         line = lines[position]
         offset -= len(line)
         fields = split_fields(line, delimiter)
-        if row_kind(fields, line, decimal) == "numeric" and len(fields) == width:
+        if row_kind(fields, line, decimal, delimiter == BLANKS) == "numeric" and len(
+                fields) == width:
             break
         if position == 0 and cut_first:
             return region, None
@@ -171,7 +182,7 @@ def trim_trailer(
 def _is_text(line: str, delimiter: str, decimal: str) -> bool:
     """True if no field of `line` is a number (with either decimal mark) and one is text."""
     fields = split_fields(line, delimiter)
-    return row_kind(fields, line, decimal) == "text" and not any(
+    return row_kind(fields, line, decimal, delimiter == BLANKS) == "text" and not any(
         is_number(field, mark) for field in fields for mark in ".,")
 
 
@@ -327,7 +338,8 @@ def parse_body(
     clocks = {} if as_text or clocks is None else clocks
     read_options = pacsv.ReadOptions(
         column_names=labels,
-        encoding=region.codec if region.codec.startswith("utf-16") else "utf8",
+        encoding=(region.codec if region.codec.startswith("utf-16") and delimiter != BLANKS
+                  else "utf8"),
     )
     convert_options = pacsv.ConvertOptions(
         column_types={
@@ -338,17 +350,18 @@ def parse_body(
         null_values=sorted(NULL_VALUES),
         strings_can_be_null=True,
     )
-    parse_options = pacsv.ParseOptions(delimiter=delimiter)
+    parse_options = pacsv.ParseOptions(delimiter="\t" if delimiter == BLANKS else delimiter)
     try:
         try:
-            with body.open() as source:
+            with _stream(body, delimiter) as source:
                 table = pacsv.read_csv(source, read_options=read_options,
                                        parse_options=parse_options,
                                        convert_options=convert_options)
         except pa.ArrowInvalid as error:
             if decimal != "." or as_text or not _thousands_cell(error):
                 raise
-            table = _with_thousands(body, read_options, parse_options, convert_options,
+            table = _with_thousands(_stream(body, delimiter), read_options, parse_options,
+                                    convert_options,
                                     [labels[index] for index in float_columns - set(clocks)])
         for index, clock in clocks.items():  # readings not in pyarrow's form: read as text
             position = table.schema.get_field_index(labels[index])
@@ -361,16 +374,28 @@ def parse_body(
         ) from error
 
 
+def _stream(body: Region, delimiter: str) -> pa.NativeFile:
+    """The body's bytes for pyarrow; of a table aligned by blanks (:data:`BLANKS`), as UTF-8
+    with each run of blanks one tab and none around a line (read whole: such tables are
+    small)."""
+    if delimiter != BLANKS:
+        return body.open()
+    data = body.read(body.start, body.end)
+    if body.codec.startswith("utf-16"):
+        data = data.decode(body.codec).encode()
+    return pa.BufferReader(_BLANK_RUN.sub(b"\t", _BLANKS_AROUND_A_LINE.sub(b"", data)))
+
+
 def _thousands_cell(error: Exception) -> bool:
     """Whether the cell pyarrow could not read is a number with thousands separators."""
     reported = _INVALID.search(str(error))
     return reported is not None and _THOUSANDS.fullmatch(reported.group(2)) is not None
 
 
-def _with_thousands(body: Region, read_options: pacsv.ReadOptions,
+def _with_thousands(body: pa.NativeFile, read_options: pacsv.ReadOptions,
                     parse_options: pacsv.ParseOptions, convert_options: pacsv.ConvertOptions,
                     labels: list[str]) -> pa.Table:
-    """The body read again, the columns `labels` as text (`convert_options` changed so),
+    """The `body` stream read again, the columns `labels` as text (`convert_options` changed so),
     their thousands separators (``"1,004.80328"``, Bluehill's quoted forces) removed,
     then as float64.
 
@@ -381,7 +406,7 @@ def _with_thousands(body: Region, read_options: pacsv.ReadOptions,
     """
     convert_options.column_types = (dict(convert_options.column_types)
                                     | dict.fromkeys(labels, pa.string()))
-    with body.open() as source:
+    with body as source:
         table = pacsv.read_csv(source, read_options=read_options,
                                parse_options=parse_options, convert_options=convert_options)
     for label in labels:

@@ -98,10 +98,23 @@ SPACED = ('"Time"  "Strain_1a" "Strain_1b"\n0   -454.0928   122.4755\n'
           '0.005   -454.2175    121.9769\n0.01    -453.9680    121.9769\n')
 
 
-def test_columns_separated_by_spaces_are_refused_as_such(write):
-    with pytest.raises(LayoutError, match="separated by runs of spaces") as caught:
-        read_table(write("dataexample.txt", SPACED))
-    assert "tab" in caught.value.hint
+def test_columns_aligned_by_spaces_are_read(write):
+    table, meta = read_table(write("dataexample.txt", SPACED), kind="tensile", strict=False,
+                             units={"time": "s", "gauges": ["1", "1"]})
+    assert meta.delimiter == " "
+    assert [column.name for column in meta.columns] == ["Time", "Strain_1a", "Strain_1b"]
+    np.testing.assert_allclose(table["time"], [0.0, 0.005, 0.01])
+    np.testing.assert_allclose(table["strain_2"], [122.4755, 121.9769, 121.9769])
+
+
+def test_names_holding_a_blank_over_columns_aligned_by_spaces(write):
+    text = ("Test 12  (preload 20 N)\nTime [s]   Force [kN]   Ext [mm]\n"
+            "  0.0   1.5   0.01\n  0.1   1.6   0.02\n\t0.2\t 1.7   0.03  \n")
+    table, meta = read_table(write("aligned.txt", text), kind="tensile")
+    assert [(column.name, column.unit) for column in meta.columns] == [
+        ("Time", "s"), ("Force", "kN"), ("Ext", "mm")]
+    np.testing.assert_allclose(table["force"], [1500.0, 1600.0, 1700.0])
+    np.testing.assert_allclose(table["gauge_1"], [1e-5, 2e-5, 3e-5])
 
 
 def test_short_row_in_the_middle(write):
