@@ -51,8 +51,10 @@ RESULTS_ROWS = 20
 #: status) from a column of numbers with a bad cell.
 TEXT_ROWS = 32
 #: Cell texts read as missing values: pyarrow's defaults, and "none" (a data logger's empty
-#: channel; Python's None written as text).
-NULL_VALUES = frozenset(pacsv.ConvertOptions().null_values) | {"None", "none"}
+#: channel; Python's None written as text); each also after the blank of a ", " delimiter
+#: (``0.50, , 0.113``).
+_NULL_TEXTS = frozenset(pacsv.ConvertOptions().null_values) | {"None", "none"}
+NULL_VALUES = _NULL_TEXTS | {" " + text for text in _NULL_TEXTS}
 #: Single-byte encodings tried when a file is not UTF-8, in order of preference on a tie.
 SINGLE_BYTE_ENCODINGS = ("latin-1", "cp1250")
 #: Japanese Windows text (Shift-JIS), chosen when the single-byte encodings give control

@@ -117,6 +117,17 @@ def test_names_holding_a_blank_over_columns_aligned_by_spaces(write):
     np.testing.assert_allclose(table["gauge_1"], [1e-5, 2e-5, 3e-5])
 
 
+def test_blank_and_missing_cells_after_a_comma_and_a_space_are_missing_values(write):
+    # a real TestResources export: ", " between the fields, an unused channel left blank
+    text = ("\n\nTime (sec), Load (N), Stress (KPa), Strain (mm), Position (mm), Cycle\n"
+            "0.000, 0.50, N/A, , 0.113, 1\n0.020, 0.61, N/A, , 0.018, 1\n"
+            "0.040, 0.70, N/A, , NaN, 1\n")
+    table, meta = read_table(write("sample 1.csv", text), kind="tensile")
+    np.testing.assert_allclose(table["force"], [0.50, 0.61, 0.70])
+    np.testing.assert_allclose(table["gauge_1"], [0.113e-3, 0.018e-3, np.nan])
+    assert "2 empty column(s) dropped: Stress, Strain" in meta.warnings
+
+
 def test_short_row_in_the_middle(write):
     with pytest.raises(LayoutError, match="2 fields where the data rows have 3") as caught:
         read_table(write("t.csv", "time [s],force [kN],gauge [mm]\n0,1,2\n0,1\n0,1,2\n"))
