@@ -15,6 +15,11 @@ ureg = pint.UnitRegistry()
 ureg.define("@alias kilogram_force = kG = KG")
 # "seg" (Spanish, Portuguese, Italian), "sek" (German, Polish, Scandinavian): seconds.
 ureg.define("@alias second = seg = sek")
+# Russian (Cyrillic) unit symbols, as Russian testing-machine software writes them.
+for _definition in ("с = second", "мс = millisecond", "мин = minute", "ч = hour",
+                    "Н = newton", "кН = kilonewton", "кгс = kilogram_force",
+                    "м = meter", "мм = millimeter", "см = centimeter", "мкм = micrometer"):
+    ureg.define(_definition)
 Q_ = ureg.Quantity
 
 #: Standard acceleration of gravity [m/s^2] (CGPM 1901); 1 kgf = 9.80665 N.

@@ -105,6 +105,16 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "gauge": ("uzama", "deplasman", "ekstansometre"),
         "cycle_count": ("çevrim", "çevrim sayısı"),
     },
+    # "деформация" (like Portuguese "deformação") is left to its unit: a strain or millimetres
+    "ru": {
+        "time": ("время", "время испытания"),
+        "force": ("усилие", "нагрузка", "сила"),
+        "gauge": ("перемещение", "удлинение", "абсолютное удлинение", "экстензометр",
+                  "траверса", "перемещение траверсы", "ход", "ход поршня"),
+        "cycle_count": ("цикл", "циклы", "число циклов", "количество циклов"),
+        "length": ("длина",),
+        "speed": ("скорость",),
+    },
     # Chinese and Japanese names are whole words: "压缩应力" (compressive stress) is not
     # "力" (force)
     "zh": {
@@ -133,13 +143,15 @@ GAUGE_KINDS: dict[str, tuple[str, ...]] = {
         "traverse", "traversenweg", "standardweg", "standardwegaufnehmer", "kolbenweg",
         "maschinenweg", "trawersa", "trawersy", "tłok", "travesaño", "actuador", "pistón",
         "carrera", "course", "vérin", "travessa", "atuador", "pistão", "traversa", "corsa",
-        "attuatore", "pistone", "横梁位移", "横梁", "行程", "ストローク", "クロスヘッド変位",
+        "attuatore", "pistone", "траверса", "перемещение траверсы", "ход поршня", "横梁位移",
+        "横梁", "行程", "ストローク", "クロスヘッド変位",
     ),
     "extensometer": (
         "extensometer", "ext", "clip gauge", "strain", "ave", "dehnung", "feindehnung",
         "ansetzdehnungsaufnehmer", "maytec", "ekstensometr", "odkształcenie", "extensómetro",
         "deformación", "dial", "czujnik", "extensomètre", "déformation", "déform",
-        "extensômetro", "estensometro", "ekstansometre", "引伸计", "应变", "伸び計",
+        "extensômetro", "estensometro", "ekstansometre", "экстензометр", "引伸计", "应变",
+        "伸び計",
     ),
 }
 

@@ -49,6 +49,9 @@ from pipeline.ingest.names import (
         ("ストローク", "gauge"),
         # ZwickRoell testXpert's English channel names
         ("Standard travel", "gauge"), ("Standard force", "force"), ("System time", "time"),
+        # a real Russian export: Время [с], Перемещение [мм], Усилие [Н]
+        ("Время", "time"), ("Перемещение", "gauge"), ("Усилие", "force"),
+        ("Нагрузка", "force"), ("Деформация", None),
         # an Arduino load-cell logger, Campbell Scientific's TOA5
         ("Timestamp", "time"), ("TIMESTAMP", "time"), ("Time stamp", "time"),
     ],

@@ -25,6 +25,10 @@ def factor(text, role):
         ("deg", "angle", 0.017453292519943295), ("rad", "angle", 1.0),
         ("Min", "time", 60.0), ("MM", "gauge", 1e-3), ("SEC", "time", 1.0),
         ("seg", "time", 1.0), ("sek", "time", 1.0),  # Portuguese and Spanish; German, Polish
+        # Russian (Cyrillic) symbols
+        ("с", "time", 1.0), ("мс", "time", 1e-3), ("мин", "time", 60.0), ("ч", "time", 3600.0),
+        ("Н", "force", 1.0), ("кН", "force", 1e3), ("кгс", "force", STANDARD_GRAVITY),
+        ("мм", "gauge", 1e-3), ("мкм", "gauge", 1e-6), ("см", "gauge", 1e-2), ("м", "gauge", 1.0),
     ],
 )
 def test_si_factor(unit, role, expected):
