@@ -64,7 +64,7 @@ def matches(head: Head, spec: TableSpec) -> bool:
     if spec.header_index is None:
         return False
     names_row = head.lines[spec.header_index]
-    return head.lines[0].startswith("MTS") or names_row in head.lines[spec.data_index:]
+    return head.lines[0].lstrip().startswith("MTS") or names_row in head.lines[spec.data_index:]
 
 
 def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTable:

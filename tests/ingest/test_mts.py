@@ -34,6 +34,12 @@ def test_blocks_are_joined(write):
     assert meta.time_gaps == 2 and "first before line 18" in meta.warnings[0]
 
 
+def test_an_indented_first_line_is_still_an_mts_export(write):
+    # a real MTS TestWorks export begins "    MTS793|MPT|ENU|..."
+    table, meta = read_table(write("specimen.dat", "    " + mts(blocks=1), "latin-1"))
+    assert meta.layout == "mts" and len(table) == 4
+
+
 def test_line_numbers_refer_to_the_file(write):
     with pytest.raises(ValueParseError) as caught:
         read_table(write("m.dat", mts(bad="0,02\tx\t-0,21\t99"), "latin-1"))
