@@ -14,10 +14,12 @@
 
 Every row holds a sample in its fourth and fifth fields, the time and the
 channel's value; the first rows also hold the scope's settings in their first
-two, which are the preamble. There is no names row: the time takes the name
-``Time`` and the unit ``Horizontal Units``; the channel the name ``Source``
-(``CH2``) and the unit ``Vertical Units``. The layout is known by its first
-row (``Record Length`` beside a sample).
+two (older scopes write each setting's unit in the third: ``"Sample
+Interval",8.0e-009,s``), which are the preamble. There is no names row: the
+time takes the name ``Time`` and the unit ``Horizontal Units`` (else the
+sample interval's); the channel the name ``Source`` (``CH2``) and the unit
+``Vertical Units``. The layout is known by its first row (``Record Length``
+beside a sample).
 """
 
 from __future__ import annotations
@@ -33,6 +35,8 @@ FIRST_SETTING = "Record Length"
 SAMPLE = (3, 4)
 #: The name of the time column.
 TIME_NAME = "Time"
+#: The setting whose unit is the time's when no ``Horizontal Units`` is given.
+INTERVAL = "Sample Interval"
 
 
 def matches(head: Head, spec: TableSpec | None = None) -> bool:
@@ -51,14 +55,21 @@ TEXT = TextLayout(LAYOUT, matches=matches, preamble=True)
 def table_spec(head: Head) -> TableSpec:
     """Where the samples of a Tektronix export sit, their names and units."""
     rows = [[cell.strip() for cell in split_fields(line, ",")] for line in head.lines]
-    settings = {row[0]: row[1] for row in rows if len(row) > 1 and row[0]}
+    settings = {row[0]: " ".join(filter(None, row[1:SAMPLE[0]])) for row in rows
+                if len(row) > 1 and row[0]}
     width = len(rows[0])
     names, units = [""] * width, [None] * width
     names[SAMPLE[0]], names[SAMPLE[1]] = TIME_NAME, settings.get("Source", "")
-    units[SAMPLE[0]] = settings.get("Horizontal Units") or None
+    units[SAMPLE[0]] = settings.get("Horizontal Units") or _unit_of(settings.get(INTERVAL))
     units[SAMPLE[1]] = settings.get("Vertical Units") or None
     return TableSpec(
         delimiter=",", decimal=".", names=names, header_index=0, units_index=None,
         data_index=0, width=width, units=units,
-        preamble=[f"{row[0]},{row[1]}" for row in rows if len(row) > 1 and row[0]],
+        preamble=[f"{key},{value}" for key, value in settings.items()],
     )
+
+
+def _unit_of(setting: str | None) -> str | None:
+    """The unit after a setting's value (``8.0e-009 s``), as older scopes write the sample
+    interval in place of ``Horizontal Units``; None without one."""
+    return (setting or "").partition(" ")[2] or None

@@ -63,3 +63,20 @@ def test_a_unit_in_the_header_wins_over_the_settings(write):
                              columns={"force": "CH1"}, units={"force": "kN"})
     np.testing.assert_allclose(table["time"], [-2e-4, -1.98e-4])
     assert not any("Horizontal Units" in warning for warning in meta.warnings)
+
+
+def test_an_older_scopes_settings_with_their_units_give_the_time_its_unit(write):
+    # a real TDS export (a Kolsky bar record): each setting's unit in the third field, no
+    # Horizontal Units
+    settings = [('"Record Length"', "50000", '"Points"'), ('"Sample Interval"', "8e-9", "s"),
+                ('"Trigger Point"', "10000", '"Samples"'), ('""', "", "")]
+    rows = [f"{key},{value},{unit},{time:.8e},{value_v:.8e}" for (key, value, unit), time, value_v
+            in zip(settings + [("", "", "")] * 36, TIME, VALUE, strict=True)]
+    table, meta = read_table(write("180303_Ch1.csv", "\n".join(rows) + "\n"),
+                             kind="engagement", columns={"force": "column 5"},
+                             units={"force": "kN"})
+    assert meta.layout == "tektronix"
+    assert [(c.name, c.unit) for c in meta.columns if c.role] == [("Time", "s"),
+                                                                  ("column 5", "kN")]
+    np.testing.assert_allclose(table["time"], TIME, rtol=1e-8)
+    assert meta.preamble["Sample Interval"] == "8e-9 s"
