@@ -222,7 +222,7 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
     """
     text = header_text(header)
     match = _BRACKETED.match(text)
-    if match is not None and match["name"]:
+    if match is not None and match["name"] and not _qualifier(match):
         unit = next(match[group] for group in ("sq", "par", "ang", "jis", "wide")
                     if match[group] is not None)
         return match["name"].strip(), unit.strip()
@@ -232,6 +232,15 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
         if name.strip() and spellings(unit):
             return name.strip(), unit.strip()
     return text, None
+
+
+def _qualifier(match: re.Match) -> bool:
+    """Whether the parentheses of `match` qualify the name rather than give its unit: set
+    against it without a blank, words that are no unit (WaveMatrix's ``Total Cycle
+    Count(Linear Waveform)`` beside ``Total Cycle Count(Rotary Waveform)``)."""
+    inside = match["par"]
+    return (inside is not None and not match.string[match.start("par") - 2].isspace()
+            and " " in inside.strip() and not spellings(inside))
 
 
 def _best_match(name: str, keywords: tuple[tuple[tuple[str, ...], str], ...]) -> str | None:

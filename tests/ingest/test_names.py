@@ -85,6 +85,10 @@ def test_every_listed_name_matches_its_own_role():
         ("DEHNRATE_SOLL <1/s>", ("DEHNRATE_SOLL", "1/s")),
         ("荷重【kN】", ("荷重", "kN")),  # Japanese and Chinese brackets
         ("位移（mm）", ("位移", "mm")),
+        # WaveMatrix qualifies a counter by its waveform: no unit, and two such columns
+        # would otherwise both be named "Total Cycle Count"
+        ("Total Cycle Count(Linear Waveform)", ("Total Cycle Count(Linear Waveform)", None)),
+        ("Force(kN)", ("Force", "kN")), ("Temp(deg C)", ("Temp", "deg C")),
     ],
 )
 def test_split_name_unit(cell, expected):
