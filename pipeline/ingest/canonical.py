@@ -67,6 +67,10 @@ REQUIRED = {"tensile": (("force",), ("gauge",)), "engagement": (("time",), ("for
 
 _SINGLE = ("time", "force", "angle", "cycle_count", "length", "speed", "segment_force_1",
            "segment_force_2", "side_force")
+#: Roles a kind of run does without (a tensile run's stiffness needs force and gauges
+#: only): when several columns could take one, none does, with a warning, rather than the
+#: run being refused (WaveMatrix logs a total and a step's time and cycle count).
+_DISPENSABLE = {"tensile": frozenset({"time", "angle", "cycle_count", "length", "speed"})}
 
 
 #: The hint for a strain column that has no unit: a ratio and a percentage cannot be told
@@ -185,7 +189,7 @@ def settle(
     _refuse_a_table_of_peaks(raw)
     problems = _Problems(strict, meta.warnings)
     sheet_units = _run_sheet_units(units, meta.file)
-    assigned = _settle_roles(raw, empty, set(sheet_units), problems)
+    assigned = _settle_roles(raw, empty, set(sheet_units), problems, kind)
     rejected: dict[str, UnitError] = {}
     factors, found_units, strains = _settle_units(raw, assigned, sheet_units, problems,
                                                   rejected)
@@ -349,12 +353,14 @@ def empty_warning(names: list[str], empty: set[int]) -> str:
             + ", ".join(display_name(names, index) for index in sorted(empty)))
 
 
-def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], problems: _Problems
-                  ) -> dict[str, list[int]]:
+def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], problems: _Problems,
+                  kind: str) -> dict[str, list[int]]:
     """The columns of each role: the candidates with values, and of a role that takes one
-    column, the only one (else an ambiguity is reported). Of several candidates matched by
-    name, those whose unit in the file is not one of the role (a stress in MPa named
-    after its load channel) are left out, with a warning, when some others fit."""
+    column, the only one (else an ambiguity is reported; for a role the `kind` of run does
+    without, :data:`_DISPENSABLE`, a warning, and no column takes it). Of several
+    candidates matched by name, those whose unit in the file is not one of the role (a
+    stress in MPa named after its load channel) are left out, with a warning, when some
+    others fit."""
     file = raw.metadata.file
     assigned: dict[str, list[int]] = {}
     for role, indexes in raw.candidates.roles.items():
@@ -376,13 +382,19 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
         if role in _SINGLE and len(live) > 1:
             shown = [display_name(raw.names, index) for index in live]
             same = len(set(shown)) == 1
-            problems.report(ColumnError(
+            ambiguity = ColumnError(
                 f"column {shown[0]!r} is duplicated" if same else
                 f"{len(live)} columns could be the {role}: " + ", ".join(map(repr, shown)),
                 file=file, row=raw.units_line, column=shown[0],
                 hint=f"say which in the run sheet, columns = {{{SHEET_KEY[role]} = \"...\"}}"
                 + (", after renaming the duplicates in the export" if same else ""),
-            ))
+            )
+            if role in _DISPENSABLE.get(kind, ()) and role not in raw.candidates.explicit:
+                raw.metadata.warnings.append(
+                    f"{ambiguity.message}: none is used as the {role}, which {kind} runs do "
+                    f"without ({ambiguity.hint})")
+                continue
+            problems.report(ambiguity)
             live = live[:1]
         if live:
             assigned[role] = live

@@ -252,11 +252,11 @@ def test_wavematrix_total_and_elapsed_counts_are_a_choice_in_either_language(wri
              for cell in WAVEMATRIX_HEADERS[language].split(";")]
     with pytest.raises(ColumnError, match=f"2 columns could be the time: {names[0]!r}, "
                                           f"{names[1]!r}"):
-        read_table(path, kind="tensile")
+        read_table(path, kind="wear")
     with pytest.raises(ColumnError, match=f"2 columns could be the cycle_count: "
                                           f"{names[2]!r}, {names[3]!r}"):
-        read_table(path, kind="tensile", columns={"time": names[0]})
-    table, _ = read_table(path, kind="tensile",
+        read_table(path, kind="wear", columns={"time": names[0]})
+    table, _ = read_table(path, kind="wear",
                           columns={"time": names[0], "cycle_count": names[2]})
     np.testing.assert_array_equal(table["cycle_count"], 992 + np.arange(9) // 3)
 
@@ -271,7 +271,7 @@ TRACKING = ('"Total Time (s)","Total Cycles","Load(8801:Load) (kN)","Stress(8801
 def test_a_candidate_whose_unit_is_not_of_its_role_makes_no_ambiguity(write):
     # a stress (MPa) is no force and an energy (J) no cycle count: each is left out with a
     # warning, instead of refusing the file for two candidates
-    table, meta = read_table(write("tracking.csv", TRACKING), kind="tensile")
+    table, meta = read_table(write("tracking.csv", TRACKING), kind="wear")
     np.testing.assert_allclose(table["force"], [4385.7, 4688.2])
     np.testing.assert_array_equal(table["cycle_count"], [1, 1])
     assert "column 'Stress(8801:Load)': unit 'MPa' is not a unit of force: column not used" \
@@ -283,7 +283,7 @@ def test_a_candidate_whose_unit_is_not_of_its_role_makes_no_ambiguity(write):
 def test_candidates_none_of_which_fits_are_still_an_ambiguity(write):
     text = TRACKING.replace("Load(8801:Load) (kN)", "Load(8801:Load) (MPa)")
     with pytest.raises(ColumnError, match="2 columns could be the force"):
-        read_table(write("tracking.csv", text), kind="tensile")
+        read_table(write("tracking.csv", text), kind="wear")
 
 
 # a real transient recorder's export (Hopkinson bar strain gauges): every header row ends
@@ -295,10 +295,29 @@ RECORDER = ("Starttime;16.08.2016 15:46:25\nSamplerate;10000000 Hz\n\n"
 
 
 def test_a_units_row_ending_with_the_delimiter_is_still_the_units_row(write):
-    table, meta = read_table(write("recorder.asd", RECORDER), kind="tensile", strict=False)
+    table, meta = read_table(write("recorder.asd", RECORDER), kind="wear", strict=False)
     np.testing.assert_allclose(table["time"], [2.2413e-3, 2.2414e-3])
     assert [(column.name, column.unit) for column in meta.columns] == [
         ("Zeit", "s"), ("Signal", "V"), ("Signal", "V")]
+
+
+@pytest.mark.parametrize("language", ["de", "en"])
+def test_wavematrix_times_and_counts_are_left_out_of_a_tensile_run_with_a_warning(write,
+                                                                                    language):
+    # a tensile run needs neither: the ambiguity is no reason to refuse its force and gauge
+    rows = "".join(f"{500 + row / 1000:.3f};{row / 1000:.3f};{992 + row // 3};{row // 3};2;"
+                   f"{17 + row / 100:.4f};{-1 - row / 10:.3f}\r\n".replace(".", ",")
+                   for row in range(9))
+    table, meta = read_table(write("stop.csv", WAVEMATRIX_HEADERS[language] + "\r\n" + rows),
+                             kind="tensile")
+    assert list(table.columns) == ["force", "gauge_1"]
+    np.testing.assert_allclose(table["force"], -1 - np.arange(9) / 10)
+    assert sum("which tensile runs do without" in warning for warning in meta.warnings) == 2
+    time_names = [cell.strip('"').rsplit(" (", 1)[0]
+                  for cell in WAVEMATRIX_HEADERS[language].split(";")][:2]
+    table, _ = read_table(write("stop.csv", WAVEMATRIX_HEADERS[language] + "\r\n" + rows),
+                          kind="tensile", columns={"time": time_names[0]})
+    np.testing.assert_allclose(table["time"], 500 + np.arange(9) / 1000)
 
 
 # a real Siglent SDS1204X-E export: 'Value' over each channel in the units row
