@@ -86,9 +86,11 @@ def _parses(spelling: str) -> bool:
 
 
 def _case_says_nothing(text: str) -> bool:
-    """All capitals (``"KN"``, ``"A"``) or a capitalised word (``"Sec"``, ``"Min"``)."""
+    """All capitals (``"KN"``, ``"A"``) or a capitalised word (``"Sec"``, ``"Min"``); not a
+    compound unit whose capital is a symbol (``"Nm/deg"``: newton metres per degree, never
+    nanometres)."""
     letters = "".join(char for char in text if char.isalpha())
-    return letters.isupper() or (len(letters) >= 3 and letters[0].isupper()
+    return letters.isupper() or (len(letters) >= 3 and text.isalpha() and letters[0].isupper()
                                  and letters[1:].islower())
 
 
