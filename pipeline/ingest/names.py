@@ -173,6 +173,9 @@ _TRANSVERSE = "transverse"
 
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^()]*)\)"
                         r"|<(?P<ang>[^<>]*)>|【(?P<jis>[^【】]*)】|（(?P<wide>[^（）]*)）)\s*$")
+#: The run label PASCO Capstone writes after a column's unit (``Force (N) Run #1``,
+#: ``Time (s) Auto``).
+_RUN_LABEL = re.compile(r"\s+(?:Run\s*#?\s*\d+|Auto)$")
 #: The channel a computed one was derived from, in trailing brackets.
 _SOURCE = re.compile(r"\((?P<source>[^()]+)\)\s*$")
 _TOKEN = re.compile(r"[^\W\d_]+|\d+")
@@ -209,7 +212,8 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
     ----------
     header : str
         A names-row cell, e.g. ``"force [kN]"``, ``"Load (N)"``, ``"KRAFT <N>"``,
-        ``"Kraft / kN"`` (ISO 80000 quantity / unit), ``"荷重【kN】"`` or ``"Time"``.
+        ``"Kraft / kN"`` (ISO 80000 quantity / unit), ``"荷重【kN】"``, ``"Force (N) Run #1"``
+        (the run label kept in the name) or ``"Time"``.
 
     Returns
     -------
@@ -221,6 +225,11 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
         a unit; None when there is none.
     """
     text = header_text(header)
+    label = _RUN_LABEL.search(text)
+    if label is not None and label.start() > 0:  # PASCO Capstone: "Force (N) Run #1"
+        name, unit = split_name_unit(text[: label.start()])
+        if unit is not None:
+            return name + label.group(), unit
     match = _BRACKETED.match(text)
     if match is not None and match["name"] and not _qualifier(match):
         unit = next(match[group] for group in ("sq", "par", "ang", "jis", "wide")
@@ -333,8 +342,10 @@ def repeats(names: list[str]) -> int:
     2
     >>> repeats(["time", "force", "gauge", "gauge"])
     1
+    >>> repeats(["Time Run 5", "Force Run 5", "Time Run 6", "Force Run 6"])  # PASCO
+    2
     """
-    folded = [fold(name.strip()) for name in names]
+    folded = [fold(_RUN_LABEL.sub("", name.strip())) for name in names]
     while folded and not folded[-1]:
         folded.pop()
     for size in range(2, len(folded) // 2 + 1):

@@ -349,6 +349,25 @@ def test_a_row_of_channel_states_between_names_and_units_is_passed_over(write):
     assert "ON" not in str(meta.preamble)
 
 
+# a real PASCO Capstone export (Norwegian locale): the run label after each unit
+PASCO = "Time (s) Auto;Force (N) Run #1\n0,000;-7,10E-15\n0,050;1,25E+00\n0,100;2,50E+00\n"
+
+
+def test_a_run_label_after_the_unit_keeps_the_unit(write):
+    table, meta = read_table(write("rakettdata.csv", PASCO), kind="engagement")
+    assert [(column.name, column.unit) for column in meta.columns] == [
+        ("Time Auto", "s"), ("Force Run #1", "N")]
+    np.testing.assert_allclose(table["force"], [-7.1e-15, 1.25, 2.5])
+
+
+def test_runs_side_by_side_are_refused_as_such(write):
+    names = ",".join(f"{name} Run {run}" for run in (5, 6)
+                     for name in ("Time (s)", "Force (N)", "Position (m)"))
+    text = names + "\n" + "0.0,0.1,0.0,0.0,0.2,0.0\n0.1,0.2,0.01,0.1,0.3,0.02\n"
+    with pytest.raises(LayoutError, match="repeat 2 times side by side"):
+        read_table(write("spring.csv", text), kind="tensile")
+
+
 # a real Mecmesin Emperor export: names, units, then a label over each specimen's columns
 EMPEROR = (
     "Force,Distance,Time,Event,,,,\n"

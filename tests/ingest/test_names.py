@@ -89,6 +89,9 @@ def test_every_listed_name_matches_its_own_role():
         # would otherwise both be named "Total Cycle Count"
         ("Total Cycle Count(Linear Waveform)", ("Total Cycle Count(Linear Waveform)", None)),
         ("Force(kN)", ("Force", "kN")), ("Temp(deg C)", ("Temp", "deg C")),
+        # PASCO Capstone writes the run after the unit
+        ("Force (N) Run #1", ("Force Run #1", "N")), ("Time (s) Auto", ("Time Auto", "s")),
+        ("Position (m) Run 5", ("Position Run 5", "m")), ("Run 5", ("Run 5", None)),
     ],
 )
 def test_split_name_unit(cell, expected):
