@@ -412,6 +412,13 @@ def detect_dialect(
             if score > best[0]:
                 best = (score, delimiter, decimal, width)
     if best[0][0] == 0:
+        if sum(is_number(line.strip(" \t;,"), ".") for line in sample) > len(sample) / 2:
+            raise LayoutError(
+                "the file holds one column of numbers: a run needs its channels side by "
+                "side (time and force, or force and gauge)",
+                file=name,
+                hint="export the test with its time (or its displacement) beside the force",
+            )
         if not any(_has_two_numbers(line) for line in sample):
             raise EmptyFileError(
                 "no data rows: the file holds only text lines",

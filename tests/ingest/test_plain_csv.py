@@ -128,6 +128,14 @@ def test_blank_and_missing_cells_after_a_comma_and_a_space_are_missing_values(wr
     assert "2 empty column(s) dropped: Stress, Strain" in meta.warnings
 
 
+def test_one_column_of_numbers_is_refused_as_such(write):
+    # a real LineScale tension meter log: key=value settings, then one force per line
+    text = "LogNo=002\nUnit=kN\nSpeed=1280\nTrig=0.70\n" + "1\n1.02\n1.05\n0.98\n" * 4
+    with pytest.raises(LayoutError, match="one column of numbers") as caught:
+        read_table(write("logfile_long1.csv", text))
+    assert "beside the force" in caught.value.hint
+
+
 def test_short_row_in_the_middle(write):
     with pytest.raises(LayoutError, match="2 fields where the data rows have 3") as caught:
         read_table(write("t.csv", "time [s],force [kN],gauge [mm]\n0,1,2\n0,1\n0,1,2\n"))
