@@ -47,6 +47,10 @@ FIND_LINES = 256
 #: The most rows a table above the data may have to be passed over as a table of results
 #: (one row per specimen of a batch) rather than read as the data.
 RESULTS_ROWS = 20
+#: First cells of the rows of a results table's statistics (Bluehill: Mean, SD, Min, Max).
+STATISTICS_LABELS = frozenset({"mean", "average", "sd", "s.d.", "std", "std dev",
+                               "standard deviation", "min", "max", "minimum", "maximum",
+                               "median", "cv", "range", "mittelwert", "standardabweichung"})
 #: Data rows of the head looked at to tell a column of text labels (a step's name, a
 #: status) from a column of numbers with a bad cell.
 TEXT_ROWS = 32
@@ -570,6 +574,15 @@ def find_table(
         names = names[:columns]
     if len(names) > columns and delimiter == BLANKS:  # names with a blank inside them
         names = _WIDE_BLANKS.split(lines[above].strip())
+    statistics = [rows[index][0].strip() for index in range(data, len(rows))
+                  if rows[index] and rows[index][0].strip().lower() in STATISTICS_LABELS]
+    if len(names) > columns and statistics:
+        raise LayoutError(
+            f"the rows under the names are statistics of a batch's results "
+            f"({', '.join(statistics[:4])}), not a test's raw data",
+            file=name, row=data + 1,
+            hint="export the raw data of each specimen (time, force, extension), not the "
+                 "results table")
     if len(names) > columns:
         raise LayoutError(
             f"the names row has {len(names)} fields but the data rows have {width}",

@@ -136,6 +136,17 @@ def test_one_column_of_numbers_is_refused_as_such(write):
     assert "beside the force" in caught.value.hint
 
 
+def test_a_results_table_with_its_statistics_is_refused_as_such(write):
+    # a real Bluehill Universal results export: one row per specimen, then the statistics
+    text = ("TensileTest-Films(V1)\nSample,Young's Modulus (MPa),Max Load (N) (N),Break (%),"
+            "Timestamp - Start ,Pellet ID\n17,539.674,11.767,5.621,2026-02-04 11:20:15,EV AB\n"
+            "Mean,539.674,11.767,5.621\nSD,0.000,0.000,0.000\nMin,539.674,11.767,5.621\n"
+            "Max,539.674,11.767,5.621\n")
+    with pytest.raises(LayoutError, match=r"statistics of a batch's results \(Mean, SD, Min, "
+                                          r"Max\), not a test's raw data"):
+        read_table(write("tensile_sample.csv", text))
+
+
 def test_short_row_in_the_middle(write):
     with pytest.raises(LayoutError, match="2 fields where the data rows have 3") as caught:
         read_table(write("t.csv", "time [s],force [kN],gauge [mm]\n0,1,2\n0,1\n0,1,2\n"))
