@@ -205,10 +205,11 @@ def text_header(
     units = _time_unit_of_the_scope(names, units, preamble, meta.warnings)
     candidates, texts = find_candidates(names, units, columns, file=head.name,
                                         header_line=names_line(spec)).without(spec.texts)
-    first = split_fields(head.lines[spec.data_index], spec.delimiter)
-    meta.warnings += [f"column {display_name(names, index)!r} holds text ({first[index].strip()!r}"
-                      f"...), not numbers: not used as the {role}"
-                      for index, role in texts.items()]
+    if texts:
+        first = split_fields(head.lines[spec.data_index], spec.delimiter)
+        meta.warnings += [f"column {display_name(names, index)!r} holds text "
+                          f"({first[index].strip()!r}...), not numbers: not used as the {role}"
+                          for index, role in texts.items()]
     clocks = time_clocks(spec, candidates, names, units, meta.warnings)
     return RawColumns(names=names, units=units, candidates=candidates, metadata=meta,
                       units_line=units_line(spec), clocks=clocks)

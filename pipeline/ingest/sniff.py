@@ -23,6 +23,7 @@ import unicodedata
 from collections import Counter
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from itertools import islice
 
 import pyarrow.csv as pacsv
 
@@ -34,10 +35,10 @@ from pipeline.ingest.unitparse import NO_UNIT_CELLS, looks_like_unit
 
 #: Bytes read to sniff a file.
 HEAD_BYTES = 1 << 16
-#: Delimiters tried, in order of preference when several fit.
-DELIMITERS = ("\t", ";", ",", "|", " ")
 #: The delimiter of columns aligned by runs of blanks (spaces or tabs; tried last).
 BLANKS = " "
+#: Delimiters tried, in order of preference when several fit.
+DELIMITERS = ("\t", ";", ",", "|", BLANKS)
 #: What separates the names of a table aligned by blanks when a name holds a blank.
 _WIDE_BLANKS = re.compile(r" {2,}|\t")
 #: Non-blank lines at the end of the head that the dialect is chosen on.
@@ -574,16 +575,16 @@ def find_table(
         names = names[:columns]
     if len(names) > columns and delimiter == BLANKS:  # names with a blank inside them
         names = _WIDE_BLANKS.split(lines[above].strip())
-    statistics = [rows[index][0].strip() for index in range(data, len(rows))
-                  if rows[index] and rows[index][0].strip().lower() in STATISTICS_LABELS]
-    if len(names) > columns and statistics:
-        raise LayoutError(
-            f"the rows under the names are statistics of a batch's results "
-            f"({', '.join(statistics[:4])}), not a test's raw data",
-            file=name, row=data + 1,
-            hint="export the raw data of each specimen (time, force, extension), not the "
-                 "results table")
     if len(names) > columns:
+        statistics = [row[0].strip() for row in rows[data:]
+                      if row and row[0].strip().lower() in STATISTICS_LABELS]
+        if statistics:
+            raise LayoutError(
+                f"the rows under the names are statistics of a batch's results "
+                f"({', '.join(statistics[:4])}), not a test's raw data",
+                file=name, row=data + 1,
+                hint="export the raw data of each specimen (time, force, extension), not "
+                     "the results table")
         raise LayoutError(
             f"the names row has {len(names)} fields but the data rows have {width}",
             file=name, row=above + 1,
@@ -624,8 +625,9 @@ def _text_columns(rows: list[list[str]], kinds: list[str], columns: int, decimal
     """The columns whose cells are text in each of the first :data:`TEXT_ROWS` data rows
     of `rows`, two at least (neither numbers, clock readings nor missing values)."""
     texts = set(range(columns))
-    data = [row for row, kind in zip(rows, kinds, strict=False) if kind == "numeric"]
-    for row in data[:TEXT_ROWS]:
+    data = list(islice((row for row, kind in zip(rows, kinds, strict=False)
+                        if kind == "numeric"), TEXT_ROWS))
+    for row in data:
         texts = {index for index in texts if index < len(row) and not (
             is_number(row[index], decimal) or is_missing(row[index])
             or looks_like_clock(row[index]))}
