@@ -406,6 +406,8 @@ def detect_dialect(
     sample = [line for line in lines if line.strip()][-DIALECT_LINES:]
     best: tuple[tuple[int, int], str, str, int] = ((0, 0), ",", ".", 0)
     for delimiter in delimiters:
+        if delimiter == BLANKS and best[0][0]:
+            break  # blanks only when no delimiter gives a table: they drop empty cells
         rows = [split_fields(line, delimiter) for line in sample]
         for decimal in ".,":
             numeric = [row for row in rows if _numeric_row(row, decimal, delimiter == BLANKS)]

@@ -5,6 +5,7 @@ import pytest
 
 from pipeline.errors import ColumnError, LayoutError, ValueParseError
 from pipeline.ingest import open_log, read_table
+from pipeline.ingest.sniff import detect_dialect
 
 PLAIN = (
     "time [s],force [kN],gauge1 [mm],gauge2 [mm]\n"
@@ -105,6 +106,14 @@ def test_columns_aligned_by_spaces_are_read(write):
     assert [column.name for column in meta.columns] == ["Time", "Strain_1a", "Strain_1b"]
     np.testing.assert_allclose(table["time"], [0.0, 0.005, 0.01])
     np.testing.assert_allclose(table["strain_2"], [122.4755, 121.9769, 121.9769])
+
+
+def test_tabs_with_empty_cells_stay_tabs_not_blanks():
+    # found by the round-trip property: read as blanks, the empty cells would vanish and
+    # shift the fields; blanks are the delimiter only when no other gives a table
+    lines = ["time\tforce\tgauge 2", "(s)\t(N)\t(mm)", "\t0.0\t0.0", "0.0\t0.0\t", "\t\t",
+             "1.5\t1.5"]
+    assert detect_dialect(lines, "valid.csv") == ("\t", ".", 3)
 
 
 def test_names_holding_a_blank_over_columns_aligned_by_spaces(write):
