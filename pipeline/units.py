@@ -15,6 +15,9 @@ ureg = pint.UnitRegistry()
 ureg.define("@alias kilogram_force = kG = KG")
 # "seg" (Spanish, Portuguese, Italian), "sek" (German, Polish, Scandinavian): seconds.
 ureg.define("@alias second = seg = sek")
+# "Ns" (an impact rig's impulse): a newton second, as written; pint alone reads it only in
+# lower case, as nanoseconds, which would make an impulse a time.
+ureg.define("newton_second = newton * second = Ns")
 # Russian (Cyrillic) unit symbols, as Russian testing-machine software writes them.
 for _definition in ("с = second", "мс = millisecond", "мин = minute", "ч = hour",
                     "Н = newton", "кН = kilonewton", "кгс = kilogram_force",

@@ -62,6 +62,7 @@ def test_unit_role(unit, role):
         "Pa", "kPa",  # nor is a stress ("pa" would be a pico-year)
         "Nm",  # a torque is not a gauge ("nm" would be)
         "Nm/deg", "Nm/rad",  # nor is a torsional stiffness (a flex tester's, "nm/deg")
+        "Ns", "kNs",  # nor is an impulse ("ns" would be a time)
         "pcs", "PC", "AU",  # parsecs and astronomical units: no machine measures in them
         "rpm", "lx",  # a rotation speed or an illuminance is not an angle
         "Mm", "Ms",  # megametres and megaseconds: refused rather than read a million-fold
