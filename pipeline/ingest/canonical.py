@@ -14,6 +14,8 @@ layout are handled once:
   name says (:func:`~pipeline.ingest.names.gauge_kind`: crosshead, extensometer
   or plain gauge), so that later stages never mix channels of different kinds;
 * NaN stretches are kept as NaN and reported with their count and longest run;
+* values a power of ten off their neighbours and back (decimal marks a spreadsheet
+  mangled: :mod:`~pipeline.ingest.decimalshift`) are reported;
 * time stepping backwards, repeated time stamps and time gaps are *reported* (warnings and
   :attr:`TableMetadata.time_monotonic` / ``time_gaps``), never repaired: the
   conditioning stage decides what to do with them.
@@ -37,6 +39,7 @@ import numpy as np
 import pandas as pd
 
 from pipeline.errors import ChainbenchError, ColumnError, LayoutError, UnitError
+from pipeline.ingest.decimalshift import decimal_shifts
 from pipeline.ingest.names import gauge_kind, peak_partner, repeats, tokens
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import SHEET_KEY, display_name, role_of_key
@@ -497,6 +500,17 @@ def _report_missing(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> 
         )
 
 
+def _report_decimal_shifts(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> None:
+    for name in table.columns:
+        count, first = decimal_shifts(table[name].to_numpy())
+        if count:
+            warnings.append(
+                f"{name}: {count} values jump tenfold (or more) from the one before and back, "
+                f"first at {raw.where(first)}, as when a spreadsheet took the decimal mark for "
+                "a thousands separator: compare the file with the machine's own export"
+            )
+
+
 def _step_extremes(time: np.ndarray, block: int = 1 << 16) -> tuple[float, float]:
     """Smallest and largest step of `time` (NaN when a step is NaN), a block at a time, so
     that no array of every step is made for a log whose steps are all in order."""
@@ -524,6 +538,7 @@ def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tupl
         Time steps longer than :data:`GAP_FACTOR` x the median step.
     """
     _report_missing(table, raw, warnings)
+    _report_decimal_shifts(table, raw, warnings)
     if "time" not in table or len(table) < 2:
         return None, 0
     time = table["time"].to_numpy()
