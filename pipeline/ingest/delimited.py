@@ -82,8 +82,9 @@ from pipeline.ingest.textbody import (
 )
 from pipeline.ingest.unitparse import spellings, unit_fits
 
-#: The preamble setting an oscilloscope gives its time axis's unit under.
-HORIZONTAL_UNITS = "Horizontal Units"
+#: The preamble settings an oscilloscope gives its time axis's unit under (Tektronix; Rohde
+#: & Schwarz's RTH writes the singular).
+HORIZONTAL_UNITS = ("Horizontal Units", "Horizontal Unit")
 #: The warning of a file whose decimal comma is also its delimiter.
 PAIRS_WARNING = "the decimal comma is also the delimiter: values were rejoined in pairs"
 
@@ -136,12 +137,13 @@ def _time_unit_of_the_scope(names: list[str], units: list[str | None],
                             preamble: dict[str, str], warnings: list[str]) -> list[str | None]:
     """`units`, a time column without one given the preamble's :data:`HORIZONTAL_UNITS`
     (a Tektronix oscilloscope's ``TIME,CH1`` under its settings), with a note."""
-    axis = preamble.get(HORIZONTAL_UNITS, "").strip()
-    if not axis:
+    key = next((key for key in HORIZONTAL_UNITS if preamble.get(key, "").strip()), None)
+    if key is None:
         return units
+    axis = preamble[key].strip()
     given = [axis if unit is None and match_role(name) == "time" else unit
              for name, unit in zip(names, units, strict=True)]
-    warnings += [f"column {name!r}: unit {axis!r} from the preamble's {HORIZONTAL_UNITS}"
+    warnings += [f"column {name!r}: unit {axis!r} from the preamble's {key}"
                  for name, unit, new in zip(names, units, given, strict=True) if unit != new]
     return given
 

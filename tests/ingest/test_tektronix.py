@@ -55,6 +55,18 @@ def test_a_newer_scopes_time_without_unit_takes_the_settings(write):
     assert "column 'TIME': unit 's' from the preamble's Horizontal Units" in meta.warnings
 
 
+def test_a_rohde_schwarz_scopes_singular_horizontal_unit_gives_the_time_its_unit(write):
+    # a real RTH1004 (Scope Rider) export: "Horizontal Unit", settings per channel above
+    text = ("Model,RTH1004\nSerialNumber,104154\n\nHorizontal Unit,s,\nSample Interval,"
+            "1.6e-05,\nProbe Setting,'10:1','10:1'\nVertical Unit,V,V\nVertical Scale,2,2\n"
+            "History Index,0,0\n,,\nTIME,CH1,CH2\n"
+            + "".join(f"{-0.2 + 1.6e-5 * i:.6f},-0.0862745,0.15686\n" for i in range(8)))
+    table, meta = read_table(write("Waveform.csv", text), kind="engagement",
+                             columns={"force": "CH1"}, units={"force": "kN"})
+    np.testing.assert_allclose(table["time"][:2], [-0.2, -0.199984])
+    assert "column 'TIME': unit 's' from the preamble's Horizontal Unit" in meta.warnings
+
+
 def test_a_unit_in_the_header_wins_over_the_settings(write):
     # a real Siglent export's settings say "us" over a units row that says Second
     text = ("Record Length,Analog:200\nHorizontal Units,us\nSource,CH1\nSecond,Volt\n"
