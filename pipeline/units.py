@@ -15,6 +15,8 @@ ureg = pint.UnitRegistry()
 ureg.define("@alias kilogram_force = kG = KG")
 # "seg" (Spanish, Portuguese, Italian), "sek" (German, Polish, Scandinavian): seconds.
 ureg.define("@alias second = seg = sek")
+# "rev": revolutions of a rotary stage (a tribometer's Rotary.Position (rev)).
+ureg.define("@alias turn = rev")
 # "Ns" (an impact rig's impulse): a newton second, as written; pint alone reads it only in
 # lower case, as nanoseconds, which would make an impulse a time.
 ureg.define("newton_second = newton * second = Ns")

@@ -45,7 +45,9 @@ from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import SHEET_KEY, display_name, role_of_key
 from pipeline.ingest.table import GAP_FACTOR, ROLES, ColumnInfo, TableMetadata
 from pipeline.ingest.unitparse import (
+    FORCE_ROLES,
     ROLE_SI_UNIT,
+    is_mass_unit,
     is_strain_unit,
     si_factor,
     unit_misfits,
@@ -479,6 +481,11 @@ def _settle_units(
                 )
             except UnitError as error:
                 problems.report(error)
+                continue
+            if role in FORCE_ROLES and is_mass_unit(text):
+                raw.metadata.warnings.append(
+                    f"column {name!r}: unit {text!r} is a mass: read as the force of its "
+                    f"weight ({text} x standard gravity, {factors[index]:.6g} N)")
         if not assigned[role]:
             del assigned[role]
     return factors, found, strains

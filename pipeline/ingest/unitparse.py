@@ -39,6 +39,10 @@ _SI_FACTOR_RANGE = {
     **dict.fromkeys(("force", "segment_force_1", "segment_force_2", "side_force"), (1e-6, 1e9)),
 }
 
+#: The roles of a force. A unit of mass in such a column is the weight of that mass
+#: (``g``: gram-force), as texture analysers and tribometers write it.
+FORCE_ROLES = frozenset({"force", "segment_force_1", "segment_force_2", "side_force"})
+
 #: Units a machine's own counter may carry; the counter is kept as counted.
 COUNTER_UNITS = frozenset(
     {"", "1", "-", "#", "n", "cycle", "cycles", "segment", "segments", "count", "counts",
@@ -50,8 +54,8 @@ COUNTER_UNITS = frozenset(
 NO_UNIT_CELLS = frozenset({"value"})
 
 #: What to tell a user whose unit is not understood.
-ACCEPTED_UNITS = ("N, kN, daN, kgf (kG), tf, lbf; mm, µm (um), m, in; s, ms, min, h; deg, rad; "
-                  "m/s")
+ACCEPTED_UNITS = ("N, kN, daN, kgf (kG), tf, lbf, g (in a force column); mm, µm (um), m, in; "
+                  "s, ms, min, h; deg, rad; m/s")
 
 
 def spellings(text: str) -> list[str]:
@@ -112,8 +116,31 @@ def _fits(spelling: str, role: str) -> bool:
     """Whether the unit `spelling` (one pint parses) is of `role`'s dimension and scale."""
     if role == "angle":
         return _role_of(spelling) == "angle"
+    spelling = _as_weight(spelling) if role in FORCE_ROLES else spelling
     return (ureg.parse_units(spelling).dimensionality == _DIMENSION.get(role)
             and _plausible(spelling, role))
+
+
+def _as_weight(spelling: str) -> str:
+    """A unit of mass as the weight of that mass (``"g"`` -> gram-force); others as given."""
+    if ureg.parse_units(spelling).dimensionality == ureg.gram.dimensionality:
+        return f"{spelling} * gravity"
+    return spelling
+
+
+def is_mass_unit(text: str | None) -> bool:
+    """True if a force column reads `text` as a unit of mass (``"g"``, ``"kg"``, ``"lb"``),
+    that is as the weight of that mass.
+
+    Examples
+    --------
+    >>> is_mass_unit("g"), is_mass_unit("gf"), is_mass_unit("KG")  # KG: kilogram-force
+    (True, False, False)
+    """
+    for spelling in spellings(text or ""):
+        if _fits(spelling, "force"):
+            return ureg.parse_units(spelling).dimensionality == ureg.gram.dimensionality
+    return False
 
 
 def unit_fits(text: str | None, role: str) -> bool:
@@ -167,7 +194,8 @@ def is_strain_unit(text: str | None) -> bool:
     (True, True, False)
     """
     found = spellings(text or "")
-    return bool(found) and ureg.parse_units(found[0]).dimensionless
+    return (bool(found) and ureg.parse_units(found[0]).dimensionless
+            and _role_of(found[0]) != "angle")
 
 
 def looks_like_unit(text: str) -> bool:
@@ -215,9 +243,10 @@ def si_factor(
             hint=f"write a unit pint understands ({ACCEPTED_UNITS})",
         )
     for spelling in found:
-        if (role == "strain" and is_strain_unit(spelling)) or (
-                role != "strain" and _fits(spelling, role)):
+        if role == "strain" and is_strain_unit(spelling):
             return float(to_si(1.0, spelling))
+        if role != "strain" and _fits(spelling, role):
+            return float(to_si(1.0, _as_weight(spelling) if role in FORCE_ROLES else spelling))
     raise UnitError(
         f"unit {text!r} in {source} is not a unit of {role} ({ROLE_SI_UNIT[role]})",
         file=file, row=row, column=column,

@@ -23,8 +23,12 @@ def factor(text, role):
         ("s", "time", 1.0), ("sec", "time", 1.0), ("Sec", "time", 1.0),
         ("(sec)", "time", 1.0), ("ms", "time", 1e-3), ("min", "time", 60.0),
         ("deg", "angle", 0.017453292519943295), ("rad", "angle", 1.0),
+        ("rev", "angle", 2 * 3.141592653589793),  # a rotary stage's revolutions
         ("Min", "time", 60.0), ("MM", "gauge", 1e-3), ("SEC", "time", 1.0),
         ("seg", "time", 1.0), ("sek", "time", 1.0),  # Portuguese and Spanish; German, Polish
+        # a mass in a force column is its weight (texture analysers, tribometers: "g")
+        ("g", "force", 1e-3 * STANDARD_GRAVITY), ("kg", "force", STANDARD_GRAVITY),
+        ("lb", "force", 4.4482216152605), ("oz", "force", 4.4482216152605 / 16),
         # Russian (Cyrillic) symbols
         ("с", "time", 1.0), ("мс", "time", 1e-3), ("мин", "time", 60.0), ("ч", "time", 3600.0),
         ("Н", "force", 1.0), ("кН", "force", 1e3), ("кгс", "force", STANDARD_GRAVITY),
@@ -66,6 +70,7 @@ def test_unit_role(unit, role):
         "pcs", "PC", "AU",  # parsecs and astronomical units: no machine measures in them
         "rpm", "lx",  # a rotation speed or an illuminance is not an angle
         "Mm", "Ms",  # megametres and megaseconds: refused rather than read a million-fold
+        "g", "kg", "lb",  # a mass makes a force only in a column named as one
     ],
 )
 def test_units_a_lab_means_otherwise_give_no_role(unit):
@@ -89,3 +94,35 @@ def test_units_row_cells(cell):
 @pytest.mark.parametrize("cell", ["Extension", "Segment ID", "Total Cycle Count"])
 def test_names_are_not_units(cell):
     assert not looks_like_unit(cell)
+
+
+def test_a_texture_analysers_force_in_grams_is_read_as_gram_force_with_a_warning():
+    from pipeline.ingest import parse_table
+
+    # Stable Micro Systems Exponent's export: a label row, names, units, a blank line
+    text = ("gel_1\tgel_1\tgel_1\t\nForce\tDistance\tTime\t\ng\tmm\tsec\t\n\n"
+            "0.0862526\t0\t0\t\n0.0988749\t0\t0.005\t\n12.5\t0.01\t0.010\t\n")
+    table, metadata = parse_table(text.encode(), name="gel.tab")
+    assert table["force"].tolist() == pytest.approx(
+        [v * 1e-3 * STANDARD_GRAVITY for v in (0.0862526, 0.0988749, 12.5)], rel=1e-12)
+    assert any("unit 'g' is a mass" in warning for warning in metadata.warnings)
+
+
+@pytest.mark.parametrize("unit", ["deg", "°", "rad", "rev"])
+def test_an_angle_is_no_strain(unit):
+    from pipeline.ingest.unitparse import is_strain_unit
+
+    # pint's angles are dimensionless, as ratios are: a rotary position is not a strain
+    assert not is_strain_unit(unit) and is_strain_unit("%")
+
+
+def test_a_position_in_degrees_is_not_read_as_a_strain():
+    from pipeline.ingest import parse_table
+
+    text = ("Time (s),Force (N),Position (deg),Stroke (mm)\n0,1,2,3\n0.1,1,2.5,3.1\n"
+            "0.2,1,3,3.2\n")
+    table, metadata = parse_table(text.encode(), name="rotary.csv", kind="engagement")
+    assert "strain_1" not in table and table["gauge_1"].tolist() == pytest.approx(
+        [3e-3, 3.1e-3, 3.2e-3])
+    assert "column 'Position': unit 'deg' is not a unit of gauge: column not used" in (
+        metadata.warnings)
