@@ -21,6 +21,11 @@ log counts from the same origin. Nothing is guessed:
 * a column whose first reading is in pyarrow's own form (two-digit hours,
   ``.``, ISO dashes) is parsed by its CSV reader; any other is read as text
   and rewritten to that form with pyarrow's string functions first;
+* a fraction of a second that counts milliseconds without zero padding, as a
+  microcontroller's logger writes ``millis() % 1000`` (``21.99`` then
+  ``21.100``: 99 ms, then 100 ms), is read as milliseconds, with a note, when the
+  head of the column shows it: within one second a fraction grows by a digit
+  while its decimal value drops, and every fraction has at most three digits;
 * a time of day that passes midnight steps back by a day: that is reported as
   a time step back (:mod:`pipeline.ingest.canonical`), not repaired. A
   date-time carries its date, so it simply goes on counting.
@@ -70,6 +75,10 @@ _ARROW_TYPES = {"time of day": pa.time64("ns"), "date and time": pa.timestamp("n
                 "minutes and seconds": pa.timestamp("ns")}
 #: Nanoseconds per second.
 _NS = 1_000_000_000
+#: A time of day or date and time split at its fraction of a second.
+_FRACTION = re.compile(r" *(?P<whole>.*\d:\d{2})[.,](?P<fraction>\d+) *")
+#: How fractions of one and two digits are zero-padded to milliseconds (RE2 rewrites).
+_PAD_MILLISECONDS = ((r"\.(\d)$", r".00\1"), (r"\.(\d\d)$", r".0\1"))
 
 
 def clock_kind(text: str) -> str | None:
@@ -109,10 +118,15 @@ class ClockColumn:
         :func:`clock_kind`).
     first : str
         The first data row's cell: the origin of the seconds.
+    unpadded : str or None
+        Where the fraction of a second is milliseconds written without zero padding,
+        the two readings that show it (``"'21.99' then '21.100' (line 81)"``): see
+        :func:`unpadded_milliseconds`.
     """
 
     kind: str
     first: str
+    unpadded: str | None = None
 
     @property
     def arrow_type(self) -> pa.DataType:
@@ -144,7 +158,7 @@ class ClockColumn:
     def _as_text(self) -> bool:
         """Whether the column is read as text and rewritten (:data:`_ARROW_FORMS`)."""
         form = _ARROW_FORMS.get(self.kind)
-        return form is None or form.fullmatch(self.first) is None
+        return form is None or form.fullmatch(self.first) is None or self.unpadded is not None
 
     def _nanoseconds(self, texts: pa.ChunkedArray) -> pa.ChunkedArray:
         """Texts as int64 nanoseconds: since midnight, since 1970 for a date and time, or
@@ -156,6 +170,9 @@ class ClockColumn:
             for old, new in _PLAIN_REWRITES:
                 column = pc.replace_substring(column, old, new)
             column = pc.replace_substring_regex(column, *_ONE_DIGIT_HOUR[self.kind])
+        if self.unpadded is not None:
+            for pattern, padded in _PAD_MILLISECONDS:
+                column = pc.replace_substring_regex(column, pattern, padded)
         if self.kind == "time of day":  # arrow casts text to a timestamp, not to a time
             column = pc.utf8_replace_slice(column, 0, 0, "1970-01-01 ")
         return pc.cast(pc.cast(column, pa.timestamp("ns")), pa.int64())
@@ -182,8 +199,48 @@ class ClockColumn:
 
     def note(self, name: str) -> str:
         """What the reader tells the user about column `name`."""
-        return (f"column {name!r} holds clock readings ({self.kind}, first "
+        note = (f"column {name!r} holds clock readings ({self.kind}, first "
                 f"{self.first.strip()!r}): read as seconds after the first row's")
+        if self.unpadded is not None:
+            note += (f"; the fraction of a second counts milliseconds without zero padding "
+                     f"({self.unpadded}): read as milliseconds")
+        return note
+
+
+def unpadded_milliseconds(cells: list[str], first_line: int) -> str | None:
+    """The two readings of `cells` (a clock column's, one per line from `first_line`) that
+    show its fraction of a second to be milliseconds without zero padding, or None.
+
+    Such a fraction grows by a digit within one second while its decimal value
+    drops (``21.99`` then ``21.100``: 99 ms, then 100 ms, read as decimals 0.99 s
+    then 0.1 s). It is taken for milliseconds only when every fraction has at most
+    three digits and, so read, no reading within a second steps back.
+
+    Examples
+    --------
+    >>> unpadded_milliseconds(["03:15:21.98", "03:15:21.99", "03:15:21.100"], 80)
+    "'03:15:21.99' then '03:15:21.100' (line 82)"
+    >>> unpadded_milliseconds(["03:15:21.5", "03:15:21.75", "03:15:22.25"], 1) is None
+    True
+    """
+    shown, previous = None, None
+    for offset, cell in enumerate(cells):
+        match = _FRACTION.fullmatch(cell)
+        if match is None:
+            previous = None
+            continue
+        whole, fraction = match["whole"], match["fraction"]
+        if len(fraction) > 3:
+            return None
+        if previous is not None and previous[0] == whole:
+            if int(fraction) < int(previous[1]):
+                return None  # a step back as milliseconds: decimals, or no clock at all
+            if (shown is None and len(fraction) > len(previous[1])
+                    and float(f"0.{fraction}") < float(f"0.{previous[1]}")):
+                shown = (f"{previous[2].strip()!r} then {cell.strip()!r} "
+                         f"(line {first_line + offset})")
+        previous = (whole, fraction, cell)
+    return shown
 
 
 def _elapsed_nanoseconds(texts: pa.ChunkedArray) -> pa.ChunkedArray:

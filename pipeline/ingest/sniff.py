@@ -28,7 +28,12 @@ from itertools import islice
 import pyarrow.csv as pacsv
 
 from pipeline.errors import EmptyFileError, EncodingError, LayoutError
-from pipeline.ingest.clock import ClockColumn, clock_kind, looks_like_clock
+from pipeline.ingest.clock import (
+    ClockColumn,
+    clock_kind,
+    looks_like_clock,
+    unpadded_milliseconds,
+)
 from pipeline.ingest.names import match_role
 from pipeline.ingest.source import Source
 from pipeline.ingest.unitparse import NO_UNIT_CELLS, looks_like_unit
@@ -596,9 +601,11 @@ def find_table(
         )
     names = names + [""] * (columns - len(names))
     units: list[str | None] = [None] * columns
-    clocks = {} if pairs else {index: ClockColumn(kind, cell)
-                               for index, cell in enumerate(rows[data][:columns])
-                               if (kind := clock_kind(cell))}
+    clocks = {} if pairs else {
+        index: ClockColumn(kind, cell, None if kind == "minutes and seconds" else
+                           unpadded_milliseconds([row[index] if index < len(row) else ""
+                                                  for row in rows[data:]], data + 1))
+        for index, cell in enumerate(rows[data][:columns]) if (kind := clock_kind(cell))}
     if units_index is not None:
         for index, cell in enumerate(rows[units_index][:columns]):
             unit = cell.strip().strip("()[]<>").strip()

@@ -114,6 +114,32 @@ def test_a_time_of_day_past_midnight_is_reported_as_a_step_back(write):
     assert "time: steps back 1 times, first at line 8" in meta.warnings
 
 
+@pytest.mark.parametrize("step_ms", [1, 7, 37])
+def test_milliseconds_without_zero_padding_are_read_as_milliseconds(write, step_ms):
+    # an ESP32 logger prints millis() % 1000 with %d: "21.99" then "21.100"; and "22.5"
+    # is 5 ms into the next second
+    stamps = np.arange(0, 2500, step_ms)
+    cells = [f"03:15:{21 + ms // 1000}.{ms % 1000}" for ms in stamps]
+    text = "time,force\n" + "".join(f"{cell},{i}\n" for i, cell in enumerate(cells))
+    table, meta = read_table(write("kite.csv", text), kind="engagement", units={"force": "N"})
+    np.testing.assert_allclose(table["time"], stamps / 1e3, rtol=0, atol=1e-9)
+    assert meta.time_monotonic
+    assert any("milliseconds without zero padding" in warning for warning in meta.warnings)
+
+
+@pytest.mark.parametrize("fractions", [
+    ["5", "75", "8"],  # decimals with their trailing zeros left out: 0.5, 0.75, 0.8
+    ["1", "2", "25", "5"],  # 0.1, 0.2, 0.25, 0.5 s: a fraction grows, its value too
+])
+def test_decimals_without_trailing_zeros_stay_decimals(write, fractions):
+    cells = [f"10:00:00.{fraction}" for fraction in fractions] + ["10:00:01.0"]
+    text = "time,force\n" + "".join(f"{cell},{i}\n" for i, cell in enumerate(cells))
+    table, meta = read_table(write("log.csv", text), kind="engagement", units={"force": "N"})
+    expected = [float(f"0.{fraction}") for fraction in fractions] + [1.0]
+    np.testing.assert_allclose(table["time"], np.subtract(expected, expected[0]), atol=1e-9)
+    assert not any("zero padding" in warning for warning in meta.warnings)
+
+
 def test_a_preamble_units_row_and_decimal_comma_around_clock_readings(write):
     rows = [time_of_day(s, 3600.0) + ";" + f"{force:.3f}".replace(".", ",")
             for s, force in zip(SECONDS, FORCE_KN, strict=True)]
