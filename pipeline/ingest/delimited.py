@@ -118,8 +118,9 @@ def _trailing_unit_words(cells: list[str]) -> list[tuple[str, str | None]] | Non
     every named cell ends in a word pint reads, each is a unit (after ``in``, which
     is left out of the name: ``in s,C1 in V``). Otherwise a last word
     is a unit only where it is a unit of the role the rest of the name gives
-    (a Japanese logger's ``荷重 kN`` beside ``名前`` and ``測定日時``): ``"Weg 1"`` or
-    ``"Channel A"`` end in a word pint reads (``1``, amperes) without being units.
+    (a Japanese logger's ``荷重 kN`` beside ``名前`` and ``測定日時``, or a script's
+    ``time_s,force_kN``): ``"Weg 1"`` or ``"Channel A"`` end in a word pint reads
+    (``1``, amperes) without being units.
     None when no cell has a unit.
     """
     split = [cell.strip().rpartition(" ") for cell in cells]
@@ -129,8 +130,15 @@ def _trailing_unit_words(cells: list[str]) -> list[tuple[str, str | None]] | Non
         return [(_without_in(name), unit or None) for name, _, unit in split]
     fitting = [(name.strip(), unit) if _unit_of_its_name(name.strip(), unit)
                else (cell.strip(), None)
-               for cell, (name, _, unit) in zip(cells, split, strict=True)]
+               for cell, (name, _, unit) in zip(cells, map(_last_word, cells), strict=True)]
     return fitting if any(unit for _, unit in fitting) else None
+
+
+def _last_word(cell: str) -> tuple[str, str, str]:
+    """`cell` split before its last word: after its last blank, or in a name without one,
+    after its last underscore (a script's ``time_s``, ``force_kN``)."""
+    text = cell.strip()
+    return text.rpartition(" " if " " in text else "_")
 
 
 def _time_unit_of_the_scope(names: list[str], units: list[str | None],

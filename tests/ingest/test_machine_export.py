@@ -81,6 +81,8 @@ def test_units_as_the_last_word_of_every_name_are_read(write):
     ("名前;荷重 kN;変位 mm", ["名前", "荷重", "変位"], [None, "kN", "mm"]),
     # a real Rohde & Schwarz oscilloscope export: the unit after "in"
     ("in s;C1 in V;C2 in V", ["column 1", "C1", "C2"], ["s", "V", "V"]),
+    # a script's units after an underscore; "gauge_1" ends in no unit of a gauge
+    ("time_s;force_kN;gauge_1", ["time", "force", "gauge_1"], ["s", "kN", None]),
 ])
 def test_a_last_word_is_a_unit_of_every_name_or_of_the_role_its_name_gives(
         write, header, names, units):
