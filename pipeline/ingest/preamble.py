@@ -2,12 +2,24 @@
 
 Lines of ``key : value``, ``key: value``, ``key = value``, ``"key","value"``
 or ``key<TAB>value`` before the names row become ``key -> value`` in
-:attr:`~pipeline.ingest.table.TableMetadata.preamble`.
+:attr:`~pipeline.ingest.table.TableMetadata.preamble`; so do a row of names
+over a row of their values (a rig's settings: ``Stop buffer (mm),Syringe
+diameter (mm)`` over ``5,20.5``).
 """
 
 from __future__ import annotations
 
-from pipeline.ingest.sniff import split_fields
+import re
+
+from pipeline.ingest.names import split_name_unit
+from pipeline.ingest.sniff import is_number, split_fields
+
+#: A colon that separates a key from its value: not one between digits (a clock time,
+#: ``14:43:46``) nor a drive letter's (``C:\``).
+_KEY_COLON = re.compile(r"(?<!\d):|(?<=\d):(?!\d)")
+_DRIVE = re.compile(r"[A-Za-z]:[\\/]")
+#: Comment marks some loggers set before each settings line (Scopy: ``;Device,M2K``).
+_COMMENT_MARKS = ";#"
 
 
 def parse_preamble(lines: list[str], delimiter: str) -> dict[str, str]:
@@ -15,35 +27,105 @@ def parse_preamble(lines: list[str], delimiter: str) -> dict[str, str]:
 
     ``Category : Name,Value`` (Bluehill) gives ``Name -> Value``; ``key: a b``
     and ``key<delimiter>a<delimiter>b`` give ``key -> "a b"``; a line that is
-    only text is kept as a key with an empty value. A repeated key is kept
-    once per occurrence, numbered (``"key (2)"``).
+    only text is kept as a key with an empty value. A row of names over a row
+    of as many values (:func:`_names_over_values`) gives each name its value. A
+    repeated key is kept once per occurrence, numbered (``"key (2)"``).
     """
     preamble: dict[str, str] = {}
-    for line in lines:
-        whole = split_fields(line, delimiter) if line.lstrip().startswith('"') else []
-        if len(whole) == 1:  # quoted whole (Deben: "Span : 10,0"): one key and one value
-            line = whole[0]
-            if not line.strip():
-                continue
-        if " : " in line:
-            category, rest = (part.strip() for part in line.split(" : ", 1))
-            fields = split_fields(rest, delimiter) if len(whole) != 1 else [rest]
-            key, values = (fields[0], fields[1:]) if len(fields) > 1 else (category, [rest])
-        else:
-            fields = [field.strip() for field in split_fields(line, delimiter) if field.strip()]
-            first = fields[0] if fields else line.strip()
-            separators = [index for index in (first.find(":"), first.find(" =")) if index >= 0]
-            if separators:
-                at = min(separators)
-                key, tail = first[:at], first[at:].lstrip(" ")[1:]
-                values = [tail, *fields[1:]]
-            else:
-                key, values = first, fields[1:]
-        key = key.strip().rstrip(":").strip() or line.strip()
-        value = " ".join(value.strip() for value in values if value.strip())
+    pairs: list[tuple[str, str]] = []
+    index = 0
+    while index < len(lines):
+        paired = _names_over_values(lines[index: index + 2], delimiter)
+        if paired:
+            pairs += paired
+            index += 2
+            continue
+        pairs.append(_key_and_value(lines[index], delimiter))
+        index += 1
+    for key, value in pairs:
+        if key is None:
+            continue
         unique, number = key, 1
         while unique in preamble:
             number += 1
             unique = f"{key} ({number})"
         preamble[unique] = value
     return preamble
+
+
+def _key_and_value(line: str, delimiter: str) -> tuple[str | None, str]:
+    """One preamble line's key and value; no key for a line quoted whole and empty."""
+    whole = split_fields(line, delimiter) if line.lstrip().startswith('"') else []
+    if len(whole) == 1:  # quoted whole (Deben: "Span : 10,0"): one key and one value
+        line = whole[0]
+        if not line.strip():
+            return None, ""
+    if " : " in line:
+        category, rest = (part.strip() for part in line.split(" : ", 1))
+        fields = split_fields(rest, delimiter) if len(whole) != 1 else [rest]
+        key, values = (fields[0], fields[1:]) if len(fields) > 1 else (category, [rest])
+    else:
+        fields = [field.strip() for field in split_fields(line, delimiter) if field.strip()]
+        first = fields[0] if fields else line.strip()
+        separators = [at for at in (_key_colon(first), first.find(" =")) if at >= 0]
+        if separators:
+            at = min(separators)
+            key, tail = first[:at], first[at:].lstrip(" ")[1:]
+            values = [tail, *fields[1:]]
+        else:
+            key, values = first, fields[1:]
+    key = _without_comment_mark(key.strip().rstrip(":").strip()) or line.strip()
+    return key, " ".join(value.strip() for value in values if value.strip())
+
+
+def _key_colon(text: str) -> int:
+    """Where the colon ending `text`'s key is (-1: none), passing over those of clock times
+    and drive letters."""
+    for match in _KEY_COLON.finditer(text):
+        if not _DRIVE.match(text, match.start() - 1):
+            return match.start()
+    return -1
+
+
+def _without_comment_mark(key: str) -> str:
+    """`key` without a comment mark set directly before it (``;Device``, ``#EndHeader``);
+    ``# of cycles`` keeps its ``#``."""
+    if len(key) > 1 and key[0] in _COMMENT_MARKS and key[1].isalnum():
+        return key[1:]
+    return key
+
+
+def _names_over_values(lines: list[str], delimiter: str) -> list[tuple[str, str]]:
+    """Each name of `lines`' first row with the value under it in the second, or [] unless
+    the two rows are names over values.
+
+    The names are distinct texts, three at least or each with its unit (``Value
+    (V)``); the values as many fields, more of them numbers than texts. So
+    ``Operator,John`` over ``Speed,10``, ``Length,26.0,mm`` over ``Width,4.1,mm``
+    and LabVIEW's ``X_Dimension,Time,Time`` over ``X0,0,0`` stay ``key,value`` lines.
+    """
+    if len(lines) < 2:
+        return []
+    names, values = (_fields(line, delimiter) for line in lines)
+    if (not names or len(names) != len(values) or len(set(names)) < len(names)
+            or any(not name or ":" in name or _is_number(name.replace(",", "").replace(".", ""))
+                   for name in names)):  # a number, grouped or not, names nothing
+        return []
+    numbers = sum(map(_is_number, values))
+    texts = sum(bool(value) and not _is_number(value) for value in values)
+    if numbers <= texts or len(names) < 3 and not all(split_name_unit(name)[1]
+                                                      for name in names):
+        return []
+    return list(zip(names, values, strict=True))
+
+
+def _is_number(text: str) -> bool:
+    return is_number(text, ".") or is_number(text, ",")
+
+
+def _fields(line: str, delimiter: str) -> list[str]:
+    """The fields of `line`, stripped, without the empty ones a trailing delimiter adds."""
+    fields = [field.strip() for field in split_fields(line, delimiter)]
+    while fields and not fields[-1]:
+        fields.pop()
+    return fields

@@ -202,6 +202,32 @@ def test_run_sheet_columns_pick_among_candidates(write):
         # a real Deben Microtest preamble: each line quoted whole, decimal commas inside
         (['"Span : 10,0"', '""', '"Test duration : 2938,19999999842s"'],
          {"Span": "10,0", "Test duration": "2938,19999999842s"}),
+        # a real CETR tribometer: colons inside a clock time and after a drive letter
+        (["Created by CETR Data Viewer ver.2.19.106 05/12/22 14:43:46",
+          "C:\\Documents and Settings\\user\\HT-2n-6-4 2_001.tst", "Started at: 12:21:58.029"],
+         {"Created by CETR Data Viewer ver.2.19.106 05/12/22 14:43:46": "",
+          "C:\\Documents and Settings\\user\\HT-2n-6-4 2_001.tst": "",
+          "Started at": "12:21:58.029"}),
+        # a real Scopy (ADALM2000) export: settings after a comment mark
+        ([";Scopy version,48fb6a9", ";Sample rate,1e+06"],
+         {"Scopy version": "48fb6a9", "Sample rate": "1e+06"}),
+        # a real syringe-pump rig: rows of names over rows of values
+        (["Value (V)", "0", "Stop buffer (mm), Syringe diameter (mm)", "5,20.5"],
+         {"Value (V)": "0", "Stop buffer (mm)": "5", "Syringe diameter (mm)": "20.5"}),
+        # a real Rtec tribometer: names over values, some of them text
+        (["Recipe,UpperSample,LowerSample,Averaging,LogFrequency,Type,Radius,",
+          "Rotary_3N_Rx,,,100,1000,Rotary,1,"],
+         {"Recipe": "Rotary_3N_Rx", "UpperSample": "", "LowerSample": "", "Averaging": "100",
+          "LogFrequency": "1000", "Type": "Rotary", "Radius": "1"}),
+        # key,value lines stay so, whatever their values
+        (["Operator,John", "Speed,10", "Material,Steel"],
+         {"Operator": "John", "Speed": "10", "Material": "Steel"}),
+        # a real Bluehill results preamble: key, value, unit
+        (['"Modulus","242,370.29658","MPa"', '"Length","26.00000","mm"'],
+         {"Modulus": "242,370.29658 MPa", "Length": "26.00000 mm"}),
+        # a real LabVIEW header: one key per line, over as many channels
+        (["X_Dimension\tTime\tTime\tTime", "X0\t0.0E+0\t0.0E+0\t0.0E+0"],
+         {"X_Dimension": "Time Time Time", "X0": "0.0E+0 0.0E+0 0.0E+0"}),
     ],
 )
 def test_parse_preamble(lines, expected):
