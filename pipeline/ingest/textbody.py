@@ -34,8 +34,13 @@ from pipeline.ingest.source import Source, contains, text_lines
 TAIL_BYTES = 1 << 16
 
 _INVALID = re.compile(r"column #(\d+).*invalid value '(.*)'", re.DOTALL)
-#: A number with thousands separators and a decimal point (``1,004.80328``).
-_THOUSANDS = re.compile(r"[+-]?\d{1,3}(?:,\d{3})+(?:\.\d*)?(?:[eE][+-]?\d+)?")
+#: A number with thousands separators, by decimal mark: ``1,004.80328`` (Bluehill's quoted
+#: forces); with decimal commas, a whole number only (``1.056`` ms: a spreadsheet's in a
+#: German locale), read so only in a column without decimals (:func:`_with_thousands`).
+_THOUSANDS = {
+    ".": re.compile(r"[+-]?\d{1,3}(?:,\d{3})+(?:\.\d*)?(?:[eE][+-]?\d+)?"),
+    ",": re.compile(r"[+-]?\d{1,3}(?:\.\d{3})+"),
+}
 #: A run of blanks between the fields of a table aligned by blanks, and blanks around a line.
 _BLANK_RUN = re.compile(rb"[ \t]+")
 _BLANKS_AROUND_A_LINE = re.compile(rb"(?m)^[ \t]+|[ \t]+(?=\r?$)")
@@ -358,11 +363,12 @@ def parse_body(
                                        parse_options=parse_options,
                                        convert_options=convert_options)
         except pa.ArrowInvalid as error:
-            if decimal != "." or as_text or not _thousands_cell(error):
+            if as_text or not _thousands_cell(error, decimal):
                 raise
             table = _with_thousands(_stream(body, delimiter), read_options, parse_options,
                                     convert_options,
-                                    [labels[index] for index in float_columns - set(clocks)])
+                                    [labels[index] for index in float_columns - set(clocks)],
+                                    decimal)
         for index, clock in clocks.items():  # readings not in pyarrow's form: read as text
             position = table.schema.get_field_index(labels[index])
             table = table.set_column(position, labels[index],
@@ -386,24 +392,27 @@ def _stream(body: Region, delimiter: str) -> pa.NativeFile:
     return pa.BufferReader(_BLANK_RUN.sub(b"\t", _BLANKS_AROUND_A_LINE.sub(b"", data)))
 
 
-def _thousands_cell(error: Exception) -> bool:
+def _thousands_cell(error: Exception, decimal: str) -> bool:
     """Whether the cell pyarrow could not read is a number with thousands separators."""
     reported = _INVALID.search(str(error))
-    return reported is not None and _THOUSANDS.fullmatch(reported.group(2)) is not None
+    return reported is not None and _THOUSANDS[decimal].fullmatch(reported.group(2)) is not None
 
 
 def _with_thousands(body: pa.NativeFile, read_options: pacsv.ReadOptions,
                     parse_options: pacsv.ParseOptions, convert_options: pacsv.ConvertOptions,
-                    labels: list[str]) -> pa.Table:
+                    labels: list[str], decimal: str) -> pa.Table:
     """The `body` stream read again, the columns `labels` as text (`convert_options` changed so),
-    their thousands separators (``"1,004.80328"``, Bluehill's quoted forces) removed,
-    then as float64.
+    their thousands separators (``"1,004.80328"``, Bluehill's quoted forces; ``1.056`` in a
+    column of whole numbers of a file of decimal commas) removed, then as float64.
 
     Raises
     ------
     pyarrow.ArrowInvalid
-        If a cell with a comma is not a number so grouped, or another cell is no number.
+        If a cell with a separator is not a number so grouped, another cell is no number, or
+        (with decimal commas) a column with grouped cells holds decimals: ``1.784`` beside
+        ``0,012`` is a decimal point among commas, not a thousand.
     """
+    separator = "," if decimal == "." else "."
     convert_options.column_types = (dict(convert_options.column_types)
                                     | dict.fromkeys(labels, pa.string()))
     with body as source:
@@ -412,12 +421,18 @@ def _with_thousands(body: pa.NativeFile, read_options: pacsv.ReadOptions,
     for label in labels:
         position = table.schema.get_field_index(label)
         text = table.column(position)
-        grouped = pc.match_substring(text, ",")
+        grouped = pc.match_substring(text, separator)
         if pc.any(pc.and_kleene(grouped, pc.invert(pc.match_substring_regex(
-                text, f"^{_THOUSANDS.pattern}$")))).as_py():
-            raise pa.ArrowInvalid(f"column {label}: a comma in a number that is not a "
+                text, f"^{_THOUSANDS[decimal].pattern}$")))).as_py():
+            raise pa.ArrowInvalid(f"column {label}: a {separator!r} in a number that is not a "
                                   "thousands separator")
-        numbers = pc.cast(pc.replace_substring(text, ",", ""), pa.float64())
+        if decimal != "." and pc.any(grouped).as_py() and pc.any(
+                pc.match_substring(text, decimal)).as_py():
+            raise pa.ArrowInvalid(f"column {label}: grouped whole numbers beside decimals")
+        ungrouped = pc.replace_substring(text, separator, "")
+        if decimal != ".":
+            ungrouped = pc.replace_substring(ungrouped, decimal, ".")
+        numbers = pc.cast(ungrouped, pa.float64())
         table = table.set_column(position, label, numbers)
     return table
 
@@ -459,7 +474,7 @@ def locate_defect(
                 if not (clocks[index].matches(cell) or is_missing(cell)):
                     return _bad_clock(region, names, number, index, cell, clocks[index])
             elif not (is_number(cell, decimal) or is_missing(cell)
-                      or decimal == "." and _THOUSANDS.fullmatch(cell.strip())):
+                      or decimal == "." and _THOUSANDS["."].fullmatch(cell.strip())):
                 return _bad_cell(region, names, number, index, cell, decimal)
     if reported is not None:
         index = int(reported.group(1))

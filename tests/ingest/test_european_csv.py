@@ -94,3 +94,33 @@ def test_complete_last_line_without_line_end_is_kept(write, text, last):
     table, meta = read_table(write("t.csv", text))
     assert len(table) == 3 and meta.warnings == []
     assert table["gauge_1"].iloc[-1] == pytest.approx(last)
+
+
+def excel_german(rows: int) -> str:
+    """A rig's log re-saved by a spreadsheet in a German locale: decimal commas, and times
+    from 1,000 ms on written with a point between the thousands (``1.056``)."""
+    lines = ["Time (ms);Force (N);Flow (ml/s);Counts"]
+    swap = str.maketrans(",.", ".,")
+    lines += [f"{91 * row:,};{-3.5 - 0.001 * row:.5f};{0.01 * row:.5f};{row - 122_443:,}"
+              .translate(swap) for row in range(rows)]
+    return "\n".join(lines) + "\n"
+
+
+@pytest.mark.parametrize("reader", ["read_table", "open_log"])
+def test_thousands_separated_by_points_in_a_file_of_decimal_commas(write, reader):
+    from pipeline.ingest import open_log
+
+    path = write("loadcell.csv", excel_german(60))
+    table = (read_table(path, kind="engagement")[0] if reader == "read_table"
+             else open_log(path, kind="engagement").read(0, 60)[0])
+    assert path.read_text().splitlines()[12].split(";")[0] == "1.001"  # row 11: 1,001 ms
+    np.testing.assert_allclose(table["time"], 0.091 * np.arange(60), rtol=1e-12)
+    np.testing.assert_allclose(table["force"], -3.5 - 0.001 * np.arange(60), rtol=1e-12)
+
+
+@pytest.mark.parametrize("cell", ["1.05", "1.001,5", "1.0045"])
+def test_a_point_that_is_no_thousands_separator_is_still_refused(write, cell):
+    # "1.001,5": a thousand with decimals in a column of whole numbers is not guessed
+    text = excel_german(60).replace("\n1.001;", f"\n{cell};")
+    with pytest.raises(ValueParseError, match=f"'{cell}' is not a number"):
+        read_table(write("loadcell.csv", text), kind="engagement")
