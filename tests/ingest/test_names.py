@@ -134,6 +134,8 @@ def test_what_a_french_displacement_channel_measures(name, kind):
     ("ストローク", "crosshead"), ("伸び計", "extensometer"), ("変位", "gauge"),
     ("Standard travel", "crosshead"), ("Crosshead travel", "crosshead"),
     ("Standard extensometer", "extensometer"),
+    # a Polish Zwick testXpert header: the standard travel; an Italian strain
+    ("Droga standardowa", "crosshead"), ("Deformazione", "extensometer"),
 ])
 def test_what_a_displacement_channel_measures_in_more_languages(name, kind):
     assert gauge_kind(name) == kind
