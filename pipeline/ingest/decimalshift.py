@@ -11,7 +11,9 @@ A column is reported when its values step by a factor within 5 % of a power of
 ten, up at least once and down at least once, where each such step is also
 far larger than the column's typical step (:data:`OUTLIER_FACTOR` x the median
 step). A real signal does not jump tenfold and back: a specimen breaking drops
-once, and noise about zero makes small steps, not outlying ones.
+once, and noise about zero makes small steps, not outlying ones. A column longer
+than a spreadsheet holds (:data:`SPREADSHEET_ROWS`) was not saved by one, and is
+not looked at: a long log costs nothing more to read.
 """
 
 from __future__ import annotations
@@ -22,6 +24,8 @@ import numpy as np
 
 #: How many times the median step a step must be to count as a jump.
 OUTLIER_FACTOR = 20.0
+#: The most rows a spreadsheet holds (Excel, LibreOffice Calc).
+SPREADSHEET_ROWS = 1_048_576
 #: How close to a power of ten the ratio of a jump's two values must be (5 %).
 _TOLERANCE = math.log10(1.05)
 
@@ -38,7 +42,8 @@ def decimal_shifts(values: np.ndarray) -> tuple[int, int]:
     -------
     count : int
         How many steps move a value by a factor within 5 % of 10, 100, ... (up or
-        down) and are outliers; 0 unless there is at least one up and one down.
+        down) and are outliers; 0 unless there is at least one up and one down, and
+        0 for a column of more than :data:`SPREADSHEET_ROWS` values.
     first : int
         The index of the value after the first such step (-1 when `count` is 0).
 
@@ -49,7 +54,7 @@ def decimal_shifts(values: np.ndarray) -> tuple[int, int]:
     >>> decimal_shifts(np.array([9.0, 9.1, 9.2, 9.3, 9.4, 0.94, 0.0, 0.01]))  # a break: down only
     (0, -1)
     """
-    if values.size < 4:
+    if not 4 <= values.size <= SPREADSHEET_ROWS:
         return 0, -1
     every = max(1, (values.size - 1) // 100_000)
     sample = np.abs(values[1::every] - values[:-1:every])  # every n-th step

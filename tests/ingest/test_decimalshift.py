@@ -6,7 +6,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from pipeline.ingest import parse_table
-from pipeline.ingest.decimalshift import decimal_shifts
+from pipeline.ingest.decimalshift import SPREADSHEET_ROWS, decimal_shifts
 
 
 def excel_mangled(value: float) -> str:
@@ -44,10 +44,14 @@ def test_a_break_drops_once_and_is_not_reported():
     assert decimal_shifts(force) == (0, -1)
 
 
-def test_a_hundredfold_shift_there_and_back_is_reported():
-    values = np.linspace(1.0, 2.0, 20)
+@pytest.mark.parametrize(("size", "found"), [(20, (2, 7)), (SPREADSHEET_ROWS, (2, 7)),
+                                             (SPREADSHEET_ROWS + 1, (0, -1))])
+def test_a_hundredfold_shift_there_and_back_is_reported_where_a_spreadsheet_could_be(
+        size, found):
+    # a log longer than a spreadsheet holds was never re-saved by one: not looked at
+    values = np.linspace(1.0, 2.0, size)
     values[7] *= 100.0
-    assert decimal_shifts(values) == (2, 7)
+    assert decimal_shifts(values) == found
 
 
 @settings(max_examples=200, deadline=None)
