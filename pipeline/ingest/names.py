@@ -165,9 +165,10 @@ TRANSVERSE_NAMES = (
 )
 #: Words of a channel that holds what the controller asked for (a setpoint, a command),
 #: not what a sensor measured: ``"Ch 1 Kraft Sollwert"``, ``"Load Command"``,
-#: ``"Valeur de consigne"``. Such a column takes no role, wherever the word stands.
-COMMAND_NAMES = ("sollwert", "soll", "setpoint", "set point", "command", "demand", "target",
-                 "consigne", "consigna", "zadana")
+#: ``"Valeur de consigne"``, a controller's ``"a1 torque cmd"``. Such a column takes no role,
+#: wherever the word stands.
+COMMAND_NAMES = ("sollwert", "soll", "setpoint", "set point", "command", "cmd", "demand",
+                 "target", "consigne", "consigna", "zadana")
 #: The label of :data:`TRANSVERSE_NAMES` among the role keywords: it wins as a role would.
 _TRANSVERSE = "transverse"
 
