@@ -30,6 +30,7 @@ File defects handled
 from __future__ import annotations
 
 import re
+from collections import Counter
 from collections.abc import Mapping
 
 from pipeline.errors import LayoutError
@@ -60,11 +61,20 @@ def _is_data(line: str) -> bool:
 
 
 def matches(head: Head, spec: TableSpec) -> bool:
-    """True for an ``MTS`` first line, or a names row repeated below the first block."""
+    """True for an ``MTS`` first line, or a names row or a line that opens a block (MTS
+    TestStar: ``Axial Counts<TAB>0`` above the names) repeated below the first block."""
     if spec.header_index is None:
         return False
-    names_row = head.lines[spec.header_index]
-    return head.lines[0].lstrip().startswith("MTS") or names_row in head.lines[spec.data_index:]
+    later = head.lines[spec.data_index:]
+    return (head.lines[0].lstrip().startswith("MTS") or head.lines[spec.header_index] in later
+            or any(line.strip() in _block_openers(head, spec) for line in later))
+
+
+def _block_openers(head: Head, spec: TableSpec) -> set[str]:
+    """The lines above the names row with a letter in them, stripped: repeated below the
+    data, each opens a block."""
+    return {line.strip() for line in head.lines[:spec.header_index]
+            if any(char.isalpha() for char in line)}
 
 
 def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTable:
@@ -98,13 +108,18 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
 
 
 def _check_blocks(head: Head, spec: TableSpec, data: bytes) -> int:
-    """Count the later blocks; raise if one names other columns than the first."""
+    """Count the later blocks (by their names rows, else by the lines that open them); raise
+    if one names other columns than the first."""
     names_row = head.lines[spec.header_index].strip()
     units_row = head.lines[spec.units_index].strip() if spec.units_index is not None else None
+    openers = _block_openers(head, spec)
     codec = head.codec if head.ascii_compatible else "utf-8"
-    later = 0
+    later, opened = 0, Counter()
     for match in _HEADER_LINE.finditer(data):
         line = match.group().decode(codec, errors="replace").strip()
+        if line in openers:
+            opened[line] += 1
+            continue
         if len(split_fields(line, spec.delimiter)) != spec.width or line == units_row:
             continue
         if line != names_row:
@@ -114,4 +129,4 @@ def _check_blocks(head: Head, spec: TableSpec, data: bytes) -> int:
                 hint="the export joins different tests: split it into one file per test",
             )
         later += 1
-    return later
+    return later or max(opened.values(), default=0)

@@ -40,6 +40,27 @@ def test_an_indented_first_line_is_still_an_mts_export(write):
     assert meta.layout == "mts" and len(table) == 4
 
 
+def mts_teststar(blocks: int, points: int) -> str:
+    """An MTS TestStar export as a real one: each block opened by "Axial Counts<TAB>0", the
+    names and units over the first block only, the points counted again in each."""
+    lines = ["C:\\Documents and Settings\\USERS\\4.TXT\t\t\t\t", "\t\t\t\t"]
+    for block in range(blocks):
+        lines.append("Axial Counts\t0\t\t\t")
+        if block == 0:
+            lines += ["Points\tElapsed Time \tDisp 1\tLoad 1 ", "      \tSec   \tmm  \tN   "]
+        lines += [f"{point + 1}\t{(block * points + point) * 0.005:g}\t{-0.001 * point:g}"
+                  f"\t{-0.5 - 0.01 * point:g}" for point in range(points)]
+    return "\r\n".join(lines) + "\r\n"
+
+
+def test_a_teststar_exports_block_lines_are_no_rows(write):
+    # read as rows, each "Axial Counts<TAB>0" put a sample at time 0 between the blocks
+    table, meta = read_table(write("4.TXT", mts_teststar(blocks=3, points=200)), kind="engagement")
+    assert meta.layout == "mts" and meta.preamble["blocks"] == "3" and len(table) == 600
+    np.testing.assert_allclose(table["time"], 0.005 * np.arange(600), atol=1e-12)
+    assert meta.time_monotonic and not any("missing" in w for w in meta.warnings)
+
+
 def test_line_numbers_refer_to_the_file(write):
     with pytest.raises(ValueParseError) as caught:
         read_table(write("m.dat", mts(bad="0,02\tx\t-0,21\t99"), "latin-1"))
