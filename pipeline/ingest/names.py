@@ -300,9 +300,18 @@ def match_role(name: str) -> str | None:
 
     Examples
     --------
+    A name ending in ``id`` names an identifier (a logger's ``actuator_a_id``), no
+    measurement.
+
+    Examples
+    --------
     >>> match_role("Total Cycle Count"), match_role("Machine_Load"), match_role("Siła")
     ('cycle_count', 'force', 'force')
+    >>> match_role("actuator_a_id") is None
+    True
     """
+    if tokens(name)[-1:] == ("id",):
+        return None
     role = _best_match(name, _KEYWORDS)
     return None if role == _TRANSVERSE or is_command(name) else role
 

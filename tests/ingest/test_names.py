@@ -115,6 +115,12 @@ def test_a_setpoint_or_command_channel_takes_no_role(name):
     assert match_role(name) is None and is_command(name)
 
 
+@pytest.mark.parametrize("name", ["actuator_a_id", "Load cell ID", "Specimen id"])
+def test_an_identifier_named_after_a_channel_takes_no_role(name):
+    # a torque-rig logger's last column: the actuator's number, not its travel
+    assert match_role(name) is None
+
+
 @pytest.mark.parametrize("name", ["Dehnung", "Strain 1", "Extension", "Weg"])
 def test_a_channel_along_the_specimen_is_not_transverse(name):
     assert match_role(name) == "gauge" and not is_transverse(name)
