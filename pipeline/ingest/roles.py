@@ -155,6 +155,8 @@ def find_candidates(
             continue
         role = match_role(name) or (None if is_transverse(name) or is_command(name)
                                           else unit_role(units[index]))
+        if role == "gauge" and unit_role(units[index]) == "angle":
+            role = "angle"  # a position in degrees is a rotary one (an encoder's)
         if role is not None and role not in explicit:
             roles.setdefault(role, []).append(index)
     return Candidates(roles, explicit)

@@ -1,5 +1,6 @@
 """Units found in files, converted with pint."""
 
+import numpy as np
 import pytest
 
 from pipeline.errors import UnitError
@@ -116,13 +117,13 @@ def test_an_angle_is_no_strain(unit):
     assert not is_strain_unit(unit) and is_strain_unit("%")
 
 
-def test_a_position_in_degrees_is_not_read_as_a_strain():
+def test_a_position_in_degrees_is_an_angle_not_a_strain():
     from pipeline.ingest import parse_table
 
-    text = ("Time (s),Force (N),Position (deg),Stroke (mm)\n0,1,2,3\n0.1,1,2.5,3.1\n"
+    # a chain wheel's encoder beside the crosshead: pint reads both deg and mm/mm as ratios
+    text = ("Time (s),Force (N),Encoder Position (deg),Stroke (mm)\n0,1,2,3\n0.1,1,2.5,3.1\n"
             "0.2,1,3,3.2\n")
-    table, metadata = parse_table(text.encode(), name="rotary.csv", kind="engagement")
+    table, _ = parse_table(text.encode(), name="rotary.csv", kind="engagement")
     assert "strain_1" not in table and table["gauge_1"].tolist() == pytest.approx(
         [3e-3, 3.1e-3, 3.2e-3])
-    assert "column 'Position': unit 'deg' is not a unit of gauge: column not used" in (
-        metadata.warnings)
+    assert table["angle"].tolist() == pytest.approx(np.radians([2.0, 2.5, 3.0]).tolist())
