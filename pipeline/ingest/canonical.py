@@ -39,7 +39,7 @@ import numpy as np
 import pandas as pd
 
 from pipeline.errors import ChainbenchError, ColumnError, LayoutError, UnitError
-from pipeline.ingest.decimalshift import decimal_shifts
+from pipeline.ingest.decimalshift import decimal_shifts, step_blocks
 from pipeline.ingest.names import gauge_kind, peak_partner, repeats, tokens
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import SHEET_KEY, display_name, role_of_key
@@ -522,11 +522,7 @@ def _step_extremes(time: np.ndarray, block: int = 1 << 16) -> tuple[float, float
     """Smallest and largest step of `time` (NaN when a step is NaN), a block at a time, so
     that no array of every step is made for a log whose steps are all in order."""
     smallest, largest = math.inf, -math.inf
-    buffer = np.empty(min(block, max(time.size - 1, 0)))
-    for start in range(0, time.size - 1, block):
-        stop = min(start + block, time.size - 1)
-        steps = np.subtract(time[start + 1: stop + 1], time[start:stop],
-                            out=buffer[: stop - start])
+    for _, steps in step_blocks(time, block):
         low, high = float(steps.min()), float(steps.max())
         if math.isnan(low):
             return math.nan, math.nan

@@ -19,6 +19,7 @@ not looked at: a long log costs nothing more to read.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 
 import numpy as np
 
@@ -73,15 +74,21 @@ def decimal_shifts(values: np.ndarray) -> tuple[int, int]:
     return int(ups + downs), int(jumps[shifted][0]) + 1
 
 
-def _steps_over(values: np.ndarray, threshold: float, block: int = 1 << 16) -> np.ndarray:
-    """The indices i where ``|values[i + 1] - values[i]| > threshold``, a block at a time, so
-    that no array of every step is made for a long log."""
+def _steps_over(values: np.ndarray, threshold: float) -> np.ndarray:
+    """The indices i where ``|values[i + 1] - values[i]| > threshold``."""
     found = []
-    buffer = np.empty(min(block, values.size - 1))
-    for start in range(0, values.size - 1, block):
-        stop = min(start + block, values.size - 1)
-        steps = np.subtract(values[start + 1: stop + 1], values[start:stop],
-                            out=buffer[: stop - start])
+    for start, steps in step_blocks(values):
         np.abs(steps, out=steps)
         found.append(np.flatnonzero(steps > threshold) + start)
-    return np.concatenate(found)
+    return np.concatenate(found) if found else np.empty(0, dtype=np.intp)
+
+
+def step_blocks(values: np.ndarray, block: int = 1 << 16) -> Iterator[tuple[int, np.ndarray]]:
+    """The steps ``values[i + 1] - values[i]`` a block at a time, each with the index of
+    its first, so that no array of every step is made for a long log. Each block is
+    written into one buffer: use it before asking for the next."""
+    buffer = np.empty(min(block, max(values.size - 1, 0)))
+    for start in range(0, values.size - 1, block):
+        stop = min(start + block, values.size - 1)
+        yield start, np.subtract(values[start + 1: stop + 1], values[start:stop],
+                                 out=buffer[: stop - start])

@@ -66,8 +66,9 @@ def matches(head: Head, spec: TableSpec) -> bool:
     if spec.header_index is None:
         return False
     later = head.lines[spec.data_index:]
+    openers = _block_openers(head, spec)
     return (head.lines[0].lstrip().startswith("MTS") or head.lines[spec.header_index] in later
-            or any(line.strip() in _block_openers(head, spec) for line in later))
+            or any(line.strip() in openers for line in later))
 
 
 def _block_openers(head: Head, spec: TableSpec) -> set[str]:

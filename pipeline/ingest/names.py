@@ -296,11 +296,8 @@ def match_role(name: str) -> str | None:
     """The role a column name suggests, or None.
 
     When several names match (``"Cycle time"``), the one ending last in the
-    name wins (the head noun in English and German compounds), then the longest.
-
-    Examples
-    --------
-    A name ending in ``id`` names an identifier (a logger's ``actuator_a_id``), no
+    name wins (the head noun in English and German compounds), then the longest. A
+    name ending in ``id`` names an identifier (a logger's ``actuator_a_id``), no
     measurement.
 
     Examples
