@@ -64,8 +64,10 @@ def decimal_shifts(values: np.ndarray) -> tuple[int, int]:
         return 0, -1
     jumps = _steps_over(values, OUTLIER_FACTOR * float(np.median(sample)))
     before, after = values[jumps], values[jumps + 1]
-    same_sign = before * after > 0
-    jumps, exponent = jumps[same_sign], np.log10(after[same_sign] / before[same_sign])
+    with np.errstate(all="ignore"):  # zeros, and ratios past float's range: no shift
+        ratio = after / before
+    usable = np.isfinite(ratio) & (ratio > 0)  # of one sign, neither zero
+    jumps, exponent = jumps[usable], np.log10(ratio[usable])
     power = np.round(exponent)
     shifted = (np.abs(exponent - power) < _TOLERANCE) & (power != 0)
     ups, downs = np.count_nonzero(shifted & (power > 0)), np.count_nonzero(shifted & (power < 0))
