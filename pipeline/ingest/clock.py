@@ -46,7 +46,7 @@ import pyarrow.compute as pc
 _FORMS = {
     "time of day": re.compile(r" *\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)? *"),
     "date and time": re.compile(
-        r" *\d{4}(?P<sep>[-/])\d{2}(?P=sep)\d{2}[T ]\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)? *"),
+        r" *\d{4}(?P<sep>[-/])\d{2}(?P=sep)\d{2}[T _-]\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)? *"),
     "minutes and seconds": re.compile(r" *(?:\d+:)?\d+:\d{2}[.,]\d+ *"),
 }
 #: The parts of an elapsed time (RE2, for pyarrow), its decimal comma made a point.
@@ -62,6 +62,9 @@ _ARROW_FORMS = {
 _PLAIN_REWRITES = (("/", "-"), (",", "."))
 _ONE_DIGIT_HOUR = {"time of day": (r"^(\d):", r"0\1:"),
                    "date and time": (r"([T ])(\d):", r"\10\2:")}
+#: A date joined to its time by "-" or "_" (a load-cell logger's ``2018-11-15-09:30:25.349``),
+#: rewritten with a blank (after :data:`_PLAIN_REWRITES`).
+_DATE_TIME_JOINT = (r"^(\d{4}-\d{2}-\d{2})[_-]", r"\1 ")
 #: Anything with hours and minutes: a clock reading, read or not.
 _CLOCK_LIKE = re.compile(r"\d{1,2}:\d{2}")
 #: The hint for a clock reading in a form that is not read.
@@ -169,6 +172,8 @@ class ClockColumn:
         if self._as_text:
             for old, new in _PLAIN_REWRITES:
                 column = pc.replace_substring(column, old, new)
+            if self.kind == "date and time":
+                column = pc.replace_substring_regex(column, *_DATE_TIME_JOINT)
             column = pc.replace_substring_regex(column, *_ONE_DIGIT_HOUR[self.kind])
         if self.unpadded is not None:
             for pattern, padded in _PAD_MILLISECONDS:

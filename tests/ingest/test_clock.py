@@ -42,6 +42,7 @@ def log(cells: list[str], header: str = "Time,Load (kN)") -> str:
     ("12/07/2018 17:16:36", None),
     ("4:03:27", "time of day"), ("14:03:27,125", "time of day"),
     ("2024-03-05 4:03:27,5", "date and time"), ("14:03", None), ("114:03:27", None),
+    ("2018-11-15-09:30:25.349", "date and time"), ("2018-11-15_09:30:25", "date and time"),
     ("05.03.2024 14:03:27", None), ("2:03:27 PM", None), ("14:03:27,", None),
     ("1.5", None), ("", None),
     ("0:00.0", "minutes and seconds"), ("75:12,3", "minutes and seconds"),
@@ -91,9 +92,11 @@ def test_a_cell_that_is_no_elapsed_time_is_named(write, cell):
     assert caught.value.message == f"{cell!r} is not a clock reading like the first row's '0:00.0'"
 
 
-@pytest.mark.parametrize("separator, date_separator", [(" ", "-"), ("T", "-"), (" ", "/")])
+@pytest.mark.parametrize("separator, date_separator", [(" ", "-"), ("T", "-"), (" ", "/"),
+                                                      ("-", "-")])
 def test_a_date_and_time_log_counts_on_past_midnight(write, separator, date_separator):
-    # the year first, the date's parts joined by "-" (ISO 8601) or by "/" (a force logger)
+    # the year first, the date's parts joined by "-" (ISO 8601) or by "/" (a force logger);
+    # a load-cell logger joins the date to the time by "-" too
     path = write("log.csv", log([date_and_time(s, separator, date_separator)
                                  for s in SECONDS]))
     table, meta = read_table(path, kind="engagement")
