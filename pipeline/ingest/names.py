@@ -18,7 +18,7 @@ from pipeline.ingest.unitparse import spellings
 COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
     "en": {
         "time": ("time", "elapsed time", "test time", "hours", "operating hours", "timestamp",
-                 "time stamp"),
+                 "time stamp", "seconds", "minutes"),
         "force": ("force", "load", "tension"),
         "gauge": (
             "extension", "displacement", "disp", "gauge", "elongation", "extensometer", "ext",
@@ -169,6 +169,15 @@ TRANSVERSE_NAMES = (
 #: wherever the word stands.
 COMMAND_NAMES = ("sollwert", "soll", "setpoint", "set point", "command", "cmd", "demand",
                  "target", "consigne", "consigna", "zadana")
+#: Names of one part of a clock reading split into columns (``Hour [h]``, ``Minute [m]``,
+#: ``Second [sec]``, as a LabVIEW logger writes them): no elapsed time, and no length
+#: whatever their unit says (``m`` is a minute there).
+CLOCK_PART_NAMES = ("hour", "minute", "second", "stunde", "sekunde", "heure", "seconde",
+                    "hora", "minuto", "segundo", "ora", "secondo")
+#: Words a logger appends to a channel's name for the statistic of each interval it writes
+#: (PicoLog's ``Force Ave. (kN)``, ``LVDT Last (mm)``): after a name of a role, a
+#: qualifier, not the German load (``Last``) or Instron's video extensometer (``AVE``).
+STATISTIC_WORDS = ("last", "ave", "avg", "mean", "min", "max")
 #: The label of :data:`TRANSVERSE_NAMES` among the role keywords: it wins as a role would.
 _TRANSVERSE = "transverse"
 
@@ -254,8 +263,13 @@ def _qualifier(match: re.Match) -> bool:
 
 
 def _best_match(name: str, keywords: tuple[tuple[tuple[str, ...], str], ...]) -> str | None:
-    """The label of the keyword ending last in `name` (then the longest), or None."""
+    """The label of the keyword ending last in `name` (then the longest), or None; a last
+    word of :data:`STATISTIC_WORDS` counts only when the words before it match none."""
     words = tokens(name)
+    if len(words) > 1 and words[-1] in STATISTIC_WORDS:
+        qualified = _best_match(name[: name.casefold().rindex(words[-1])], keywords)
+        if qualified is not None:
+            return qualified
     best: tuple[int, int, str] | None = None
     for keyword, label in keywords:
         size = len(keyword)
@@ -324,6 +338,19 @@ def is_command(name: str) -> bool:
     [True, True, False]
     """
     return _best_match(name, _COMMAND_KEYWORDS) is not None
+
+
+def is_clock_part(name: str) -> bool:
+    """Whether a column name is one part of a clock reading (:data:`CLOCK_PART_NAMES`): such
+    a column takes no role, not even from its unit.
+
+    >>> [is_clock_part(name) for name in ("Minute", "Stunde", "Minutes", "Time")]
+    [True, True, False, False]
+    """
+    return tokens(name) in _CLOCK_PARTS
+
+
+_CLOCK_PARTS = {tokens(word) for word in CLOCK_PART_NAMES}
 
 
 def is_transverse(name: str) -> bool:

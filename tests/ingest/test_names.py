@@ -6,6 +6,7 @@ from pipeline.ingest.names import (
     COLUMN_NAMES,
     fold,
     gauge_kind,
+    is_clock_part,
     is_command,
     is_transverse,
     match_role,
@@ -146,3 +147,26 @@ def test_what_a_french_displacement_channel_measures(name, kind):
 ])
 def test_what_a_displacement_channel_measures_in_more_languages(name, kind):
     assert gauge_kind(name) == kind
+
+
+@pytest.mark.parametrize(("name", "role", "kind"), [
+    # PicoLog writes each channel's statistic after its name: a qualifier
+    ("Force Ave.", "force", None), ("Load Ave.", "force", None), ("Force Min.", "force", None),
+    ("LVDT Last", "gauge", "gauge"), ("Extension Last", "gauge", "gauge"),
+    ("Crosshead Ave.", "gauge", "crosshead"),
+    # alone, or after words that name no role, the word keeps its own meaning
+    ("Last", "force", None), ("Ch 1 Last", "force", None), ("AVE", "gauge", "extensometer"),
+])
+def test_a_statistic_after_a_channels_name_is_a_qualifier(name, role, kind):
+    assert match_role(name) == role
+    assert kind is None or gauge_kind(name) == kind
+
+
+@pytest.mark.parametrize("name", ["Hour", "Minute", "Second", "Stunde", "Sekunde", "Heure"])
+def test_a_part_of_a_clock_reading_is_no_elapsed_time(name):
+    assert match_role(name) is None and is_clock_part(name)
+
+
+@pytest.mark.parametrize("name", ["Seconds", "Minutes", "Hours"])
+def test_elapsed_seconds_minutes_and_hours_are_the_time(name):
+    assert match_role(name) == "time" and not is_clock_part(name)

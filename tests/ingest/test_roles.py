@@ -21,6 +21,12 @@ def test_unit_gives_the_role_of_an_unknown_name():
     assert candidates(["A", "B"], ["s", "kN"]).roles == {"time": [0], "force": [1]}
 
 
+def test_the_parts_of_a_clock_reading_take_no_role_from_their_units():
+    # a LabVIEW logger's columns: "Minute" in m is minutes, no displacement
+    found = candidates(["Time", "Voltage", "Hour", "Minute", "Second"], ["s", "V", "h", "m", "sec"])
+    assert found.roles == {"time": [0]}
+
+
 def test_explicit_roles_exclude_their_columns_from_automatic_matching():
     found = candidates(["Load", "Load 2", "Time"], columns={"force": "load 2"})
     assert found.roles == {"force": [1], "time": [2]}
