@@ -55,7 +55,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from pipeline.errors import LayoutError
+from pipeline.errors import EmptyFileError, LayoutError
 from pipeline.ingest.delimited import TextLayout, read_contiguous
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.rowindex import code_unit
@@ -127,6 +127,10 @@ def table_spec(head: Head) -> TableSpec:
         or it holds several segments.
     """
     ends = _headers(head)
+    if len(ends) == 1 and not any(line.strip(" \t,;") for line in head.lines[ends[0] + 1:]):
+        raise EmptyFileError(
+            "the file holds its file header only: no segment, no samples", file=head.name,
+            row=ends[0] + 1, hint="LabVIEW wrote no measurements: record the test again")
     if len(ends) < 2 or ends[1] + 2 > len(head.lines):
         raise LayoutError(
             "the file header or the segment header does not end (no second "
@@ -194,6 +198,12 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
     if _without_x_column(spec) and 0 in raw.arrays:
         start, step = _axis(tags, spec.decimal, head.name)
         raw.arrays[0] = start + step * np.arange(raw.rows)
+        steps = list(dict.fromkeys(value.strip() for value in tags["Delta_X"] if value.strip()))
+        if len(steps) > 1:
+            header.metadata.warnings.append(
+                f"the time is built from the first channel's Delta_X ({steps[0]}), but the "
+                f"channels' differ ({', '.join(steps)}): they were not sampled at one rate "
+                "(name the time column in the run sheet if a channel holds the time)")
     return raw
 
 

@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from pipeline.errors import LayoutError
+from pipeline.errors import EmptyFileError, LayoutError
 from pipeline.ingest import lvm as lvm_reader
 from pipeline.ingest import open_log, read_table
 from pipeline.ingest.sniff import TableSpec, read_head
@@ -75,6 +75,17 @@ def test_no_x_column_time_from_x0_and_delta_x_with_a_decimal_comma(write, separa
     np.testing.assert_allclose(reader.read(30, 40)[0]["time"], 0.5 + TIME[30:], atol=1e-12)
 
 
+def test_a_time_built_from_channels_of_other_rates_is_questioned(write):
+    text = lvm(x_columns="No").replace("Delta_X\t0.010000\t0.010000", "Delta_X\t0.010000\t0.000606")
+    table, meta = read_table(write("log.lvm", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], 0.5 + TIME, rtol=0, atol=1e-12)  # the first's
+    assert ("the time is built from the first channel's Delta_X (0.010000), but the channels' "
+            "differ (0.010000, 0.000606): they were not sampled at one rate (name the time "
+            "column in the run sheet if a channel holds the time)") in meta.warnings
+    _, same = read_table(write("same.lvm", lvm(x_columns="No")), kind="engagement")
+    assert not any("Delta_X" in warning for warning in same.warnings)
+
+
 def test_without_unit_labels_the_run_sheet_gives_the_units(write):
     path = write("log.lvm", lvm(units=None))
     with pytest.raises(Exception, match="no unit for the force column"):
@@ -112,6 +123,14 @@ def test_a_header_that_does_not_end_is_refused(write):
     text = lvm().split("***End_of_Header***")[0]
     with pytest.raises(LayoutError, match="does not end"):
         read_table(write("log.lvm", text))
+
+
+def test_a_file_header_alone_is_an_empty_file(write):
+    # a real bioreactor logger's file: the acquisition stopped before its first segment
+    text = lvm().split("***End_of_Header***")[0] + "***End_of_Header***\t\r\n\t\r\n"
+    with pytest.raises(EmptyFileError, match="file header only") as caught:
+        read_table(write("test_1.lvm", text))
+    assert caught.value.row == 8 and "no measurements" in caught.value.hint
 
 
 def test_a_csv_that_mentions_labview_later_is_not_an_lvm(write):
