@@ -36,7 +36,7 @@ from pipeline.ingest.clock import (
 )
 from pipeline.ingest.names import match_role
 from pipeline.ingest.source import Source
-from pipeline.ingest.unitparse import NO_UNIT_CELLS, looks_like_unit
+from pipeline.ingest.unitparse import NO_UNIT_CELLS, is_sample_interval, looks_like_unit
 
 #: Bytes read to sniff a file.
 HEAD_BYTES = 1 << 16
@@ -609,7 +609,8 @@ def find_table(
     if units_index is not None:
         for index, cell in enumerate(rows[units_index][:columns]):
             unit = cell.strip().strip("()[]<>").strip()
-            units[index] = None if unit.lower() in NO_UNIT_CELLS else unit or None
+            units[index] = (None if unit.lower() in NO_UNIT_CELLS or is_sample_interval(unit)
+                            else unit or None)
     return TableSpec(
         delimiter=delimiter,
         decimal="," if pairs else decimal,

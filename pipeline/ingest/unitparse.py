@@ -7,6 +7,8 @@ rest; only the *spelling* is helped (``"Sec"`` -> ``"sec"``, ``"KN"`` -> ``"kN"`
 
 from __future__ import annotations
 
+import re
+
 from pipeline.errors import UnitError
 from pipeline.units import to_si, ureg
 
@@ -52,6 +54,21 @@ COUNTER_UNITS = frozenset(
 #: Units-row cells that stand for no unit: Siglent oscilloscopes write ``Value`` over each
 #: channel beside ``Second`` over the time.
 NO_UNIT_CELLS = frozenset({"value"})
+
+#: A units-row cell over a sample counter that gives the interval between two samples
+#: (a Shimadzu export's ``X 200msec`` over ``Number``): the counter's step, not its unit.
+_SAMPLE_INTERVAL = re.compile(r"[xX×]\s*\d+(?:[.,]\d+)?\s*(?P<unit>[^\W\d_]+)")
+
+
+def is_sample_interval(text: str) -> bool:
+    """Whether a units-row cell gives the interval of a sample counter (``X 200msec``).
+
+    >>> is_sample_interval("X 200msec"), is_sample_interval("x 0.5 s"), is_sample_interval("mm")
+    (True, True, False)
+    """
+    found = _SAMPLE_INTERVAL.fullmatch(text.strip())
+    return found is not None and unit_role(found["unit"]) == "time"
+
 
 #: What to tell a user whose unit is not understood.
 ACCEPTED_UNITS = ("N, kN, daN, kgf (kG), tf, lbf, g (in a force column); mm, µm (um), m, in; "
@@ -202,6 +219,8 @@ def looks_like_unit(text: str) -> bool:
     """True if `text` reads as a unit cell of a units row (``"(mm)"``, ``"Sec"``, ``""``)."""
     stripped = text.strip()
     if not stripped or stripped.lower() in COUNTER_UNITS | NO_UNIT_CELLS:
+        return True
+    if is_sample_interval(stripped):
         return True
     if stripped[0] + stripped[-1] in ("()", "[]"):
         return True

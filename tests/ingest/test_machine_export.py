@@ -363,6 +363,21 @@ def test_value_in_a_units_row_stands_for_no_unit(write):
     np.testing.assert_allclose(table["force"], [-44e3, -46e3])
 
 
+# a real Shimadzu export (a Spanish-locale lab): the sample counter's interval over it
+SHIMADZU = ("Specimen\t 1 \nOriginalGL\t 89,394 \tmm\tExtenso.GL\t 0 mm\n"
+            "Number\tLoad\tStroke\tElong\tWidth\nX 200msec\ttf\tmm\tmm\tmm\n"
+            " 1 \t ,075 \t 0 \t 0 \t 0 \n 2 \t ,08 \t ,032 \t 0 \t 0 \n")
+
+
+def test_a_sample_counters_interval_in_the_units_row_is_no_unit(write):
+    table, meta = read_table(write("KENNETH2.TXT", SHIMADZU), kind="tensile")
+    assert [(column.name, column.role, column.unit) for column in meta.columns] == [
+        ("Number", None, None), ("Load", "force", "tf"), ("Stroke", "gauge_1", "mm"),
+        ("Elong", "gauge_2", "mm"), ("Width", None, "mm")]
+    np.testing.assert_allclose(table["force"], [0.075 * 9806.65, 0.08 * 9806.65])
+    np.testing.assert_allclose(table["gauge_1"], [0.0, 0.032e-3])
+
+
 # a real MaCh3D export: a row of channel states between the names and the units
 MACH3D = ("+----+\n|  DATA  |\n+----+\n\nTIME;DISP;LOAD;TMP1;TMP2\n-;-;ON;ON;OFF\n"
           "(ms);(mm);(N);(deg_C);(deg_C)\n\n0;7.430;2.94;nan;0\n200;7.443;4.23;nan;0\n")
