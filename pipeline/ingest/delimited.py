@@ -64,7 +64,7 @@ import pyarrow as pa
 
 from pipeline.errors import EmptyFileError, LayoutError
 from pipeline.ingest.clock import ClockColumn, declare_seconds
-from pipeline.ingest.names import header_text, match_role, split_name_unit
+from pipeline.ingest.names import fold, header_text, match_role, split_name_unit
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import Candidates, display_name, find_candidates
@@ -85,6 +85,15 @@ from pipeline.ingest.unitparse import spellings, unit_fits
 #: The preamble settings an oscilloscope gives its time axis's unit under (Tektronix; Rohde
 #: & Schwarz's RTH writes the singular).
 HORIZONTAL_UNITS = ("Horizontal Units", "Horizontal Unit")
+#: The keys of a preamble row that gives each channel's unit, folded (a DTS SLICE export's
+#: ``Engineering Unit``).
+UNITS_ROW_KEYS = frozenset({"engineering unit", "engineering units", "unit", "units", "eu",
+                            "einheit", "einheiten", "unite", "unites", "unidad", "unidades",
+                            "unidade"})
+#: Column names that are a unit of time, folded: the column holds the time in that unit
+#: (not ``s``, which a German export gives a displacement, nor ``min``, a minimum, nor
+#: ``ms``, which a KEYENCE logger gives the milliseconds of its date-time column).
+TIME_UNIT_NAMES = frozenset({"sec", "secs", "seconds", "minutes", "mins", "hours", "hrs"})
 #: The warning of a file whose decimal comma is also its delimiter.
 PAIRS_WARNING = "the decimal comma is also the delimiter: values were rejoined in pairs"
 
@@ -156,6 +165,46 @@ def _time_unit_of_the_scope(names: list[str], units: list[str | None],
     return given
 
 
+def _time_unit_of_its_name(names: list[str], units: list[str | None],
+                           warnings: list[str]) -> list[str | None]:
+    """`units`, a column without one whose whole name is a unit of time
+    (:data:`TIME_UNIT_NAMES`: a logger's ``seconds``, an oscilloscope's ``sec`` beside
+    ``Volt1``) given that unit, with a note."""
+    given = [name.strip() if unit is None and fold(name.strip()) in TIME_UNIT_NAMES else unit
+             for name, unit in zip(names, units, strict=True)]
+    warnings += [f"column {name!r}: unit {new!r} from its name"
+                 for name, unit, new in zip(names, units, given, strict=True) if unit != new]
+    return given
+
+
+def _units_of_a_preamble_row(spec: TableSpec, names: list[str], units: list[str | None],
+                             warnings: list[str]) -> list[str | None]:
+    """`units`, with those a row of the preamble gives the channels (a DTS SLICE export's
+    ``Engineering Unit,deg/sec,g,...`` above ``Time,Chan 0,...``), with a note.
+
+    The row is a settings row: its key (:data:`UNITS_ROW_KEYS`) over the first column,
+    a unit over two channels at least, nothing but units; a single ``Units,mm`` setting
+    names no column.
+    """
+    for line in spec.preamble:
+        key, *cells = (cell.strip() for cell in split_fields(line, spec.delimiter))
+        given = [cell or None for cell in cells[: len(units) - 1]]
+        if (fold(key) not in UNITS_ROW_KEYS or len(cells) > len(units)
+                or sum(cell is not None for cell in given) < 2
+                or not all(cell is None or spellings(cell) for cell in given)):
+            continue
+        filled, changed = list(units), []
+        for index, unit in enumerate(given, start=1):
+            if filled[index] is None and unit is not None:
+                filled[index] = unit
+                changed.append(display_name(names, index))
+        if changed:
+            warnings.append(f"units of {', '.join(map(repr, changed))} from the preamble's "
+                            f"{key!r} row")
+        return filled
+    return units
+
+
 def _without_in(name: str) -> str:
     """A name without the ``in`` before its unit word (Rohde & Schwarz: ``C1 in V``)."""
     words = name.split()
@@ -213,6 +262,9 @@ def text_header(
     names, units = header_columns(spec)
     meta = metadata(head, spec, layout, preamble)
     units = _time_unit_of_the_scope(names, units, preamble, meta.warnings)
+    units = _time_unit_of_its_name(names, units, meta.warnings)
+    if spec.units_index is None:
+        units = _units_of_a_preamble_row(spec, names, units, meta.warnings)
     candidates, texts = find_candidates(names, units, columns, file=head.name,
                                         header_line=names_line(spec)).without(spec.texts)
     if texts:

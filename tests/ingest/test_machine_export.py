@@ -520,3 +520,28 @@ def test_a_comma_that_is_no_thousands_separator_is_still_refused(write, cell):
     with pytest.raises(ValueParseError, match=f"'{cell}' is not a number") as error:
         read_table(write("Specimen_RawData_1.csv", text))
     assert error.value.row == 65
+
+
+# a real DTS SLICE export (a headform impact): each channel's unit in a settings row
+DTS_SLICE = ("Headers,,,,\nTest ID,c-front-hard1,c-front-hard1,c-front-hard1,\n"
+             "Sample Rate (Hz),20000,20000,20000,\nEngineering Unit,deg/sec ,g ,kN ,\n"
+             "Data Starts Here,,,,\nTime,Chan 0:AV1,Chan 1:AC1,Chan 2:LC1,\n"
+             "-0.040050,-12.880515,0.072539,1.5\n-0.040000,-1.951593,0.090674,1.7\n")
+
+
+def test_a_preamble_row_of_units_gives_each_channel_its_unit(write):
+    table, meta = read_table(write("fh1.csv", DTS_SLICE), kind="engagement",
+                             units={"time": "s"})
+    assert [(c.name, c.unit) for c in meta.columns] == [
+        ("Time", "s"), ("Chan 0:AV1", "deg/sec"), ("Chan 1:AC1", "g"), ("Chan 2:LC1", "kN")]
+    np.testing.assert_allclose(table["force"], [1.5e3, 1.7e3])
+    assert ("units of 'Chan 0:AV1', 'Chan 1:AC1', 'Chan 2:LC1' from the preamble's "
+            "'Engineering Unit' row") in meta.warnings
+
+
+def test_a_single_units_setting_names_no_column(write):
+    text = "Units,mm\nTime,Load,Travel\n0.0,1.5,0.1\n0.1,1.7,0.2\n"
+    _, meta = read_table(write("t.csv", text), kind="tensile",
+                         units={"time": "s", "force": "kN", "gauges": "mm"})
+    assert meta.preamble == {"Units": "mm"}
+    assert not any("preamble's 'Units' row" in warning for warning in meta.warnings)

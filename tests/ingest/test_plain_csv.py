@@ -108,6 +108,19 @@ def test_columns_aligned_by_spaces_are_read(write):
     np.testing.assert_allclose(table["strain_2"], [122.4755, 121.9769, 121.9769])
 
 
+def test_a_column_named_by_a_unit_of_time_holds_the_time_in_it(write):
+    # a real oscilloscope export: the time column named by its unit
+    text = "sec,Volt1,Volt2\n-5.000000E-03,-8.054398E-03,+25.523037E-03\n" \
+           "-4.990000E-03,-8.054398E-03,+25.523037E-03\n"
+    table, meta = read_table(write("scope_0.csv", text), kind="engagement",
+                             columns={"force": "Volt1"}, units={"force": "kN"})
+    np.testing.assert_allclose(table["time"], [-5e-3, -4.99e-3])
+    assert "column 'sec': unit 'sec' from its name" in meta.warnings
+    _, other = read_table(write("t.csv", "s,Force [kN]\n0.1,1.0\n0.2,1.1\n"), kind="tensile",
+                          columns={"gauges": "s"}, units={"gauges": "mm"})
+    assert not any("from its name" in w for w in other.warnings)  # "s": a German travel
+
+
 def test_tabs_with_empty_cells_stay_tabs_not_blanks():
     # found by the round-trip property: read as blanks, the empty cells would vanish and
     # shift the fields; blanks are the delimiter only when no other gives a table
