@@ -72,6 +72,7 @@ from pipeline.ingest.sniff import Head, TableSpec, require_names, split_fields
 from pipeline.ingest.table import TableMetadata
 from pipeline.ingest.textbody import (
     Region,
+    comment_warning,
     float_arrays,
     join_comma_pairs,
     parse_body,
@@ -349,18 +350,20 @@ def body(head: Head, spec: TableSpec, warnings: list[str]) -> Region:
 
 def parse_rows(
     region: Region, spec: TableSpec, header: RawColumns
-) -> tuple[dict[int, pa.ChunkedArray], int, set[int]]:
+) -> tuple[tuple[dict[int, pa.ChunkedArray], int, set[int]], int]:
     """Parse the rows of `region` with pyarrow (values split by a decimal comma rejoined,
-    clock readings turned into seconds).
+    clock readings turned into seconds, comment lines passed over).
 
     Returns
     -------
-    tuple
+    parsed : tuple
         :func:`~pipeline.ingest.textbody.split_table` of the parsed rows.
+    comments : int
+        Comment lines passed over.
     """
     names, found = header.names, header.candidates
     try:
-        table = parse_body(
+        table, comments = parse_body(
             region,
             region,
             names=names,
@@ -382,7 +385,7 @@ def parse_rows(
         ) from error
     if spec.pairs:
         table = join_comma_pairs(table, region, names)
-    return split_table(table, found.indexes(), len(names), header.clocks)
+    return split_table(table, found.indexes(), len(names), header.clocks), comments
 
 
 def read_contiguous(head: Head, spec: TableSpec, header: RawColumns) -> RawTable:
@@ -393,7 +396,9 @@ def read_contiguous(head: Head, spec: TableSpec, header: RawColumns) -> RawTable
     """
     whole = body(head, spec, header.metadata.warnings)
     region, truncated = trim_truncated_tail(whole, spec.width, spec.delimiter, spec.decimal)
-    parsed = parse_rows(region, spec, header)
+    parsed, comments = parse_rows(region, spec, header)
+    if comments:
+        header.metadata.warnings.append(comment_warning(region, comments))
     if spec.pairs:
         header.metadata.warnings.append(PAIRS_WARNING)
     if truncated:

@@ -91,7 +91,7 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
     kept, truncated = trim_truncated_tail(Region(points, 0, points.size, 1, "utf-8"),
                                           spec.width, spec.delimiter, spec.decimal)
     region = Region(head.source, start, head.size, spec.data_index + 1, head.codec, _is_data)
-    table = parse_body(
+    table, _ = parse_body(  # comment lines are not data lines: filtered out above
         kept,
         region,
         names=header.names,

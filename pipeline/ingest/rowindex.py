@@ -10,7 +10,9 @@ the line rules pyarrow's CSV parser follows:
 
 * a line ends at LF, or at CR not followed by LF (LF, CRLF and CR files);
 * a data row starts at the first byte after a line end that is not itself
-  CR or LF: blank lines are not rows;
+  CR or LF: blank lines are not rows; nor are comment lines, which start with
+  :data:`~pipeline.ingest.sniff.COMMENT_MARK` (the body parser passes over
+  them);
 * UTF-16 text is scanned in 2-byte code units (little- or big-endian), every
   other codec the readers know in bytes (its CR and LF are never part of
   another character).
@@ -23,12 +25,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from pipeline.ingest.sniff import COMMENT_MARK
 from pipeline.ingest.source import BLOCK, Source
 
 #: Data rows between two indexed rows.
 EVERY = 65_536
 
-_LF, _CR = 10, 13
+_LF, _CR, _COMMENT = 10, 13, ord(COMMENT_MARK)
 _UNITS = {"utf-16-le": "<u2", "utf-16-be": ">u2"}
 
 
@@ -49,6 +52,8 @@ class RowIndex:
         Data rows between them.
     lines : int
         Line ends between them.
+    comments : int
+        Comment lines between them.
     every : int
         Rows from one indexed row to the next.
     offsets : numpy.ndarray
@@ -63,6 +68,7 @@ class RowIndex:
     end: int
     rows: int
     lines: int
+    comments: int
     every: int
     offsets: np.ndarray
     line_ends: np.ndarray
@@ -93,11 +99,11 @@ class RowIndex:
         if skip == 0:
             return offset, lines
         blocks = _scan(source, offset, self.end, self.unit, BLOCK)
-        begin, starts, ends = next(blocks)
+        begin, starts, ends, _ = next(blocks)
         while skip > starts.size:
             skip -= starts.size
             lines += ends.size
-            begin, starts, ends = next(blocks)
+            begin, starts, ends, _ = next(blocks)
         found = int(starts[skip - 1])
         return begin + found * self.unit.itemsize, lines + int(np.searchsorted(ends, found))
 
@@ -126,14 +132,16 @@ def index_rows(
     """
     unit = code_unit(codec)
     offsets, line_ends = [np.array([start])], [np.array([0])]
-    rows, lines = int(start < end), 0
-    for begin, starts, ends in _scan(source, start, end, unit, block):
+    rows, lines, comments = int(start < end), 0, 0
+    for begin, starts, ends, passed in _scan(source, start, end, unit, block):
         picked = starts[(-rows) % every :: every]
         offsets.append(begin + picked * unit.itemsize)
         line_ends.append(lines + np.searchsorted(ends, picked))
         rows += starts.size
         lines += ends.size
-    return RowIndex(start, end, rows, lines, every, np.concatenate(offsets).astype(np.int64),
+        comments += passed
+    return RowIndex(start, end, rows, lines, comments, every,
+                    np.concatenate(offsets).astype(np.int64),
                     np.concatenate(line_ends).astype(np.int64), unit)
 
 
@@ -151,6 +159,8 @@ def _scan(
         starts (the row may start at the block's end), in order.
     ends : numpy.ndarray
         Code units from `begin` to each line end in the block, in order.
+    comments : int
+        Comment lines the block's line ends start (not among `starts`).
     """
     size = unit.itemsize
     block -= block % size
@@ -169,6 +179,7 @@ def _scan(
         starts = np.flatnonzero(breaks[:-1] > breaks[1:]) + 1
         if last:
             starts = starts[starts < count]
+        comment = units[starts] == _COMMENT
         ends = np.flatnonzero(line_feed[:-1] | (carriage[:-1] > line_feed[1:]))
-        yield begin, starts, ends
+        yield begin, starts[~comment], ends, int(np.count_nonzero(comment))
         begin = stop

@@ -83,6 +83,9 @@ _LINE = re.compile(r"([^\r\n]*)(\r\n|\r|\n|$)")
 _NON_ASCII = re.compile(r"[^\x00-\x7f]")
 #: Row kinds that belong to the table body (see :func:`row_kind`).
 _DATA_KINDS = ("numeric", "partial", "missing")
+#: The first character of a logger's comment line among its rows (``# missing reply``,
+#: ``# Skipped 1 cycles``).
+COMMENT_MARK = "#"
 _SPECIALS = r"|[+-]?inf(?:inity)?"  # NaN is a missing value (NULL_VALUES), not a number
 _NUMBER = {
     mark: re.compile(
@@ -172,6 +175,8 @@ class TableSpec:
     texts : frozenset of int
         The columns whose every cell in the head's first data rows is text (a label of
         the step, a status): they hold no numbers to read.
+    notes : tuple of str
+        What the reader should say of how the header was read.
     """
 
     delimiter: str
@@ -187,14 +192,17 @@ class TableSpec:
     clocks: dict[int, ClockColumn] = field(default_factory=dict)
     results: tuple[int, int] | None = None
     texts: frozenset[int] = frozenset()
+    notes: tuple[str, ...] = ()
 
     def results_warning(self) -> list[str]:
-        """The warning of the results tables passed over, if any."""
+        """The warnings of the header's reading: the results tables passed over, the
+        :attr:`notes`."""
         if self.results is None:
-            return []
+            return list(self.notes)
         first, stop = self.results
         return [f"lines {first + 1}-{stop}: a table above the data (of results or settings) "
-                f"was passed over; the data are the table from line {self.data_index + 1}"]
+                f"was passed over; the data are the table from line {self.data_index + 1}",
+                *self.notes]
 
 
 def split_fields(line: str, delimiter: str) -> list[str]:
@@ -513,6 +521,15 @@ def row_kind(row: list[str], line: str, decimal: str, blanks: bool = False) -> s
     return "text"
 
 
+def is_comment(line: str, delimiter: str, width: int) -> bool:
+    """Whether a line is a comment among rows of `width` fields: it starts with
+    :data:`COMMENT_MARK` and, without the mark, has another field count (a names row
+    written as a comment, ``# time,force`` or numpy's ``# time(s)  force(N)``, has the
+    data's)."""
+    return line.startswith(COMMENT_MARK) and len(
+        split_fields(line[len(COMMENT_MARK):], delimiter)) != width
+
+
 def find_table(
     lines: list[str], name: str, delimiter: str, decimal: str, width: int
 ) -> TableSpec:
@@ -520,7 +537,8 @@ def find_table(
 
     Rows with numbers just below the header count as data even with a bad
     cell, only missing values or a wrong field count, so that the body parser
-    reports or keeps them.
+    reports or keeps them. Comment lines (:func:`is_comment`) count as blank
+    lines: the body parser passes over them too.
 
     Raises
     ------
@@ -534,7 +552,8 @@ def find_table(
     limit = FIND_LINES
     while True:
         rows = [split_fields(line, delimiter) for line in lines[:limit]]
-        kinds = [row_kind(row, line, decimal, delimiter == BLANKS)
+        kinds = ["blank" if is_comment(line, delimiter, width) else
+                 row_kind(row, line, decimal, delimiter == BLANKS)
                  for row, line in zip(rows, lines, strict=False)]
         complete = limit >= len(lines)
         data = _first_data_row(rows, kinds, width, complete=complete)
@@ -575,13 +594,28 @@ def find_table(
             above -= 1  # a row of channel states between the names and the units (MaCh3D)
     if above >= 0 and kinds[above] != "text" and units_index is None:
         raise _no_names_row(name, data, delimiter)
-    names = rows[above] if above >= 0 else [""] * width
+    names_line = lines[above] if above >= 0 else ""
+    if names_line.startswith(COMMENT_MARK):  # a names row written as a comment
+        names_line = names_line[len(COMMENT_MARK):]
+    names = split_fields(names_line, delimiter) if above >= 0 else [""] * width
+    if delimiter == BLANKS:  # a script's names kept apart by a delimiter and blanks
+        names = [name.rstrip(",;") for name in names]
     pairs = delimiter == "," and decimal == "." and 2 * len(names) == width
     columns = width // 2 if pairs else width
     if len(names) > columns and not any(cell.strip() for cell in names[columns:]):
         names = names[:columns]
+    notes: tuple[str, ...] = ()
     if len(names) > columns and delimiter == BLANKS:  # names with a blank inside them
-        names = _WIDE_BLANKS.split(lines[above].strip())
+        names = _WIDE_BLANKS.split(names_line.strip())
+        if len(names) < columns and (grouped := _names_by_roles(names_line, columns)):
+            names = grouped
+            notes = (f"the names row, its names apart by single blanks, was split after "
+                     f"each word that names a role: {', '.join(map(repr, names))}",)
+        elif len(names) < columns:
+            notes = (f"the names row {names_line.strip()[:60]!r} does not split into the "
+                     f"{columns} columns (in a table aligned by blanks, names need two blanks "
+                     "or a tab between them): the columns are named by their place",)
+            names = [""] * columns
     if len(names) > columns:
         statistics = [row[0].strip() for row in rows[data:]
                       if row and row[0].strip().lower() in STATISTICS_LABELS]
@@ -627,7 +661,22 @@ def find_table(
         results=results,
         texts=frozenset() if pairs else _text_columns(rows[data:], kinds[data:], columns,
                                                       decimal),
+        notes=notes,
     )
+
+
+def _names_by_roles(line: str, columns: int) -> list[str]:
+    """The names of a row whose names are apart by single blanks, as blanks also stand
+    within them (MTS TestWare's ``Ch 1 Displacement Ch 1 Force Time``): each ends with
+    a word that names a role. Empty unless that gives `columns` names and leaves no
+    word over."""
+    names, words = [], []
+    for word in line.split():
+        words.append(word)
+        if match_role(word) is not None:
+            names.append(" ".join(words))
+            words = []
+    return names if len(names) == columns and not words else []
 
 
 def _text_columns(rows: list[list[str]], kinds: list[str], columns: int, decimal: str

@@ -51,7 +51,12 @@ from pipeline.ingest.rowindex import EVERY, RowIndex, index_rows
 from pipeline.ingest.sniff import TableSpec
 from pipeline.ingest.source import FileSource, Source, opened
 from pipeline.ingest.table import TableMetadata
-from pipeline.ingest.textbody import Region, trim_truncated_tail, truncated_warning
+from pipeline.ingest.textbody import (
+    Region,
+    comment_warning,
+    trim_truncated_tail,
+    truncated_warning,
+)
 
 #: Rows read at a time at open, after the first :data:`~pipeline.ingest.rowindex.EVERY`, while
 #: a column that takes a role has shown no value.
@@ -101,7 +106,7 @@ class _TextRows:
         first, lines = self.index.locate(source, start)
         end = self.index.locate(source, stop)[0]
         region = Region(source, first, end, self.spec.data_index + 1 + lines, self.codec)
-        parsed = delimited.parse_rows(region, self.spec, self.header)
+        parsed, _ = delimited.parse_rows(region, self.spec, self.header)  # said at open
         return delimited.raw_table(parsed, region, self.header, first_row=start), []
 
 
@@ -115,6 +120,8 @@ def _text_rows(
     region, truncated = trim_truncated_tail(whole, spec.width, spec.delimiter, spec.decimal)
     index = index_rows(source, region.start, region.end, head.codec)
     delimited.require_rows(index.rows, region)
+    if index.comments:
+        header.metadata.warnings.append(comment_warning(region, index.comments))
     if spec.pairs:
         header.metadata.warnings.append(delimited.PAIRS_WARNING)
     if truncated:

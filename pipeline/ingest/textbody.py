@@ -9,6 +9,7 @@ wrong) and to turn a row number into a line number for a warning.
 from __future__ import annotations
 
 import re
+import threading
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, replace
 from functools import cached_property
@@ -20,9 +21,12 @@ import pyarrow.csv as pacsv
 
 from pipeline.errors import LayoutError, ValueParseError
 from pipeline.ingest.clock import UNREAD_FORM_HINT, ClockColumn, looks_like_clock
+from pipeline.ingest.roles import display_name
 from pipeline.ingest.sniff import (
     BLANKS,
+    COMMENT_MARK,
     NULL_VALUES,
+    is_comment,
     is_missing,
     is_number,
     row_kind,
@@ -34,6 +38,7 @@ from pipeline.ingest.source import Source, contains, text_lines
 TAIL_BYTES = 1 << 16
 
 _INVALID = re.compile(r"column #(\d+).*invalid value '(.*)'", re.DOTALL)
+_WRONG_WIDTH = re.compile(r"Expected \d+ columns, got \d+: (.*)", re.DOTALL)
 #: A number with thousands separators, by decimal mark: ``1,004.80328`` (Bluehill's quoted
 #: forces); with decimal commas, a whole number only (``1.056`` ms: a spreadsheet's in a
 #: German locale), read so only in a column without decimals (:func:`_with_thousands`).
@@ -72,7 +77,8 @@ class Region:
         Codec of the text.
     is_data : callable, optional
         Tells a data line from a line pyarrow does not see (blank lines by
-        default; block headers for layouts that filter them out).
+        default; block headers for layouts that filter them out). Comment lines
+        (:data:`~pipeline.ingest.sniff.COMMENT_MARK` first) are never rows.
     """
 
     source: Source
@@ -105,15 +111,17 @@ class Region:
 
     def line_of(self, row: int) -> int | None:
         """1-based line number of table row `row` (0-based), or None if past the end."""
-        if self.is_data is None and not self._has_blank_lines:
+        if self.is_data is None and not self._has_skipped_lines:
             return self.first_line + row
-        for index, (number, _) in enumerate(self.lines()):
+        rows = (number for number, line in self.lines() if not line.startswith(COMMENT_MARK))
+        for index, number in enumerate(rows):
             if index == row:
                 return number
         return None
 
     @cached_property
-    def _has_blank_lines(self) -> bool:
+    def _has_skipped_lines(self) -> bool:
+        """Whether the region holds blank or comment lines (not rows to pyarrow)."""
         end = self.end
         while end > self.start:
             tail = self.read(max(self.start, end - TAIL_BYTES), end)
@@ -121,7 +129,8 @@ class Region:
             end -= len(tail) - len(kept)
             if kept:
                 break
-        patterns = tuple(pattern.encode(self.codec) for pattern in ("\n\n", "\r\n\r\n", "\r\r"))
+        patterns = tuple(pattern.encode(self.codec) for pattern in (
+            "\n\n", "\r\n\r\n", "\r\r", "\n" + COMMENT_MARK, "\r" + COMMENT_MARK))
         return contains(self.source, patterns, self.start, end)
 
 
@@ -301,7 +310,7 @@ def parse_body(
     float_columns: set[int],
     clocks: Mapping[int, ClockColumn] | None = None,
     as_text: bool = False,
-) -> pa.Table:
+) -> tuple[pa.Table, int]:
     """Parse the rows of `source` with pyarrow.
 
     Parameters
@@ -327,8 +336,10 @@ def parse_body(
 
     Returns
     -------
-    pyarrow.Table
+    table : pyarrow.Table
         Columns named by :func:`column_label`.
+    comments : int
+        Comment lines passed over (:class:`CommentLines`).
 
     Raises
     ------
@@ -355,29 +366,77 @@ def parse_body(
         null_values=sorted(NULL_VALUES),
         strings_can_be_null=True,
     )
-    parse_options = pacsv.ParseOptions(delimiter="\t" if delimiter == BLANKS else delimiter)
+    skip_comments, thousands = False, None
     try:
-        try:
-            with _stream(body, delimiter) as source:
-                table = pacsv.read_csv(source, read_options=read_options,
-                                       parse_options=parse_options,
-                                       convert_options=convert_options)
-        except pa.ArrowInvalid as error:
-            if as_text or not _thousands_cell(error, decimal):
-                raise
-            table = _with_thousands(_stream(body, delimiter), read_options, parse_options,
-                                    convert_options,
-                                    [labels[index] for index in float_columns - set(clocks)],
-                                    decimal)
+        while True:  # a retry passes over comment lines, or reads thousands separators
+            comments = CommentLines() if skip_comments else None
+            try:
+                table = _read(body, delimiter, decimal, read_options, convert_options,
+                              comments, thousands)
+                break
+            except pa.ArrowInvalid as error:
+                if not skip_comments and _comment_row(error):
+                    skip_comments = True
+                elif thousands is None and not as_text and _thousands_cell(error, decimal):
+                    thousands = [labels[index] for index in float_columns - set(clocks)]
+                else:
+                    raise
         for index, clock in clocks.items():  # readings not in pyarrow's form: read as text
             position = table.schema.get_field_index(labels[index])
             table = table.set_column(position, labels[index],
                                      clock.readings(table.column(position)))
-        return table
+        return table, 0 if comments is None else comments.count
     except (pa.ArrowException, UnicodeDecodeError) as error:
         raise locate_defect(
             region, names, width, delimiter, decimal, float_columns, error, clocks
         ) from error
+
+
+class CommentLines:
+    """pyarrow's handler of the rows whose field count is not the table's: a comment line
+    (:func:`~pipeline.ingest.sniff.is_comment`) is passed over and counted, any other
+    row is an error."""
+
+    def __init__(self) -> None:
+        self.count = 0
+        self._lock = threading.Lock()  # pyarrow's parsing threads call it
+
+    def __call__(self, row: pacsv.InvalidRow) -> str:
+        if not row.text.startswith(COMMENT_MARK):
+            return "error"
+        with self._lock:
+            self.count += 1
+        return "skip"
+
+
+def _read(body: Region, delimiter: str, decimal: str, read_options: pacsv.ReadOptions,
+          convert_options: pacsv.ConvertOptions, comments: CommentLines | None,
+          thousands: list[str] | None) -> pa.Table:
+    """One pyarrow read of `body`, passing over comment lines if `comments` counts them,
+    with the columns `thousands` read as numbers with thousands separators."""
+    parse_options = pacsv.ParseOptions(delimiter="\t" if delimiter == BLANKS else delimiter,
+                                       invalid_row_handler=comments)
+    if thousands is not None:
+        return _with_thousands(_stream(body, delimiter), read_options, parse_options,
+                               convert_options, thousands, decimal)
+    with _stream(body, delimiter) as source:
+        return pacsv.read_csv(source, read_options=read_options, parse_options=parse_options,
+                              convert_options=convert_options)
+
+
+def _comment_row(error: Exception) -> bool:
+    """Whether pyarrow stopped at a row of another field count that is a comment line (it
+    quotes the row: ``Expected 3 columns, got 1: # missing reply``)."""
+    found = _WRONG_WIDTH.search(str(error))
+    return found is not None and found.group(1).startswith(COMMENT_MARK)
+
+
+def comment_warning(region: Region, count: int) -> str:
+    """What to say of the `count` comment lines passed over among the rows of `region`."""
+    first = next(((number, line) for number, line in region.lines()
+                  if line.startswith(COMMENT_MARK)), None)
+    where = f", the first at line {first[0]}: {first[1].strip()[:60]!r}" if first else ""
+    return f"{count} comment line(s) among the data rows passed over{where}"
 
 
 def _stream(body: Region, delimiter: str) -> pa.NativeFile:
@@ -452,6 +511,8 @@ def locate_defect(
     reported = _INVALID.search(str(error))
     for number, line in region.lines():
         fields = split_fields(line, delimiter)
+        if is_comment(line, delimiter, width):
+            continue
         names_row = _names_row(fields, decimal)
         if names_row and (len(fields) != width or any(
                 not is_number(fields[index], decimal) for index in float_columns)):
@@ -510,7 +571,7 @@ def _bad_cell(
     )
     return ValueParseError(
         f"{cell.strip()[:40]!r} is not a number",
-        file=region.name, row=line, column=names[index] or f"#{index + 1}", hint=hint,
+        file=region.name, row=line, column=display_name(names, index), hint=hint,
     )
 
 
@@ -518,7 +579,7 @@ def _bad_clock(
     region: Region, names: list[str], line: int, index: int, cell: str, clock: ClockColumn
 ) -> ValueParseError:
     return ValueParseError(
-        clock.mismatch(cell), file=region.name, row=line, column=names[index] or f"#{index + 1}",
+        clock.mismatch(cell), file=region.name, row=line, column=display_name(names, index),
         hint="fix or delete the cell (missing values may be left empty or written NaN)",
     )
 

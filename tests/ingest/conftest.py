@@ -2,7 +2,7 @@
 
 The corpus (:func:`corpus`) holds an engagement log (time, force, angle) in
 every delimited layout, dialect, encoding and line end, with the defects the
-readers handle (blank lines, quoted cells and a trailing delimiter, a sentinel,
+readers handle (blank lines, comment lines, quoted cells and a trailing delimiter, a sentinel,
 a NaN run, a time gap, a truncated last line, a decimal comma that is also the
 delimiter), an MTS export, a workbook and a TDMS file; the buffer and row-range
 tests compare each reader with ``read_table`` on all of them.
@@ -59,18 +59,25 @@ def _delimited(
     quote: bool = False,
     row_end: str = "",
     blank_every: int = 0,
+    comment_every: int = 0,
     gaps: bool = True,
     tail: str = "",
 ) -> str:
     """An engagement log in one delimited dialect: `above` are the lines above the names
     row, `units_row` the line below it, `row_end` ends each data row (a trailing
-    delimiter), `tail` follows the last line."""
+    delimiter), `tail` follows the last line; a blank line or a logger's comment line
+    follows every `blank_every`-th or `comment_every`-th row (and a comment opens the
+    rows)."""
     lines = [*above, delimiter.join(names), *([units_row] if units_row is not None else [])]
+    if comment_every:
+        lines.append("# missing reply")
     for row, cells in enumerate(_cells(ROWS, gaps)):
         cells = [cell.replace(".", decimal) for cell in cells]
         lines.append(delimiter.join(f'"{cell}"' if quote else cell for cell in cells) + row_end)
         if blank_every and row % blank_every == blank_every - 1:
             lines.append("")
+        if comment_every and row % comment_every == comment_every - 1:
+            lines.append("# Skipped 1 cycles")
     return newline.join(lines) + newline + tail
 
 
@@ -99,6 +106,9 @@ TEXT_LOGS = {
     "utf16_be_blank_lines.txt": (_delimited(delimiter=";", decimal=",", blank_every=5),
                                  "utf-16-be"),
     "bom.csv": (_delimited(delimiter=";", decimal=","), "utf-8-sig"),
+    "comment_lines.csv": (_delimited(comment_every=5, blank_every=7), "utf-8"),
+    "utf16_comment_lines.txt": (_delimited(delimiter="\t", decimal=",", newline="\r\n",
+                                           comment_every=3), "utf-16-le"),
     "comma_pairs.csv": (_delimited(decimal=",", gaps=False), "utf-8"),
     "machine_export.csv": (_delimited(above=('Machine : Rig 2,"E-7"', ""),
                                       names=("Time", "Load", "Angle", ""),

@@ -61,6 +61,25 @@ def test_blank_lines_inside_the_table_and_line_numbers(write):
     assert len(table) == 2 and "from line 4" in meta.warnings[0]
 
 
+def test_a_loggers_comment_lines_are_passed_over_with_a_warning(write):
+    text = ("# ./logger --rate 1000\ntime [s],force [kN],gauge [mm]\n# missing reply\n"
+            "0.0,1,0\n# missing reply\n0.1,2,0\n\n# Skipped 1 cycles\n0.2,3,0\n")
+    table, meta = read_table(write("t.csv", text))
+    np.testing.assert_allclose(table["force"], [1e3, 2e3, 3e3])
+    assert meta.warnings == ["2 comment line(s) among the data rows passed over, the first "
+                             "at line 5: '# missing reply'"]
+    assert meta.first_data_line == 4
+    with pytest.raises(ValueParseError) as caught:  # line numbers count the comment lines
+        read_table(write("t.csv", text.replace("0.2,3,0", "0.2,x,0")))
+    assert (caught.value.row, caught.value.column) == (9, "force")
+
+
+def test_a_names_row_written_as_a_comment_is_the_names_row(write):
+    table, meta = read_table(write("t.csv", "#time [s],force [kN],gauge [mm]\n0.0,1,0\n0.1,2,0\n"))
+    np.testing.assert_allclose(table["force"], [1e3, 2e3])
+    assert [column.name for column in meta.columns] == ["time", "force", "gauge"]
+
+
 def test_text_column_is_kept_out(write):
     text = "date,force [kN],gauge [mm]\n2021-01-01,1.5,0.1\n2021-01-02,1.6,0.2\n"
     table, meta = read_table(write("t.csv", text))
@@ -106,6 +125,37 @@ def test_columns_aligned_by_spaces_are_read(write):
     assert [column.name for column in meta.columns] == ["Time", "Strain_1a", "Strain_1b"]
     np.testing.assert_allclose(table["time"], [0.0, 0.005, 0.01])
     np.testing.assert_allclose(table["strain_2"], [122.4755, 121.9769, 121.9769])
+
+
+# a real MTS 793 TestWare export (three-point bending): names apart by single blanks
+TESTWARE = ("Ch 1 Displacement Ch 1 Force Time\nmm        kN        Sec\n"
+            "0.00015497208 -1.6205013e-05 0.034179688\n0.0012874603 0.0040941238 0.13378906\n")
+
+
+def test_names_apart_by_single_blanks_are_split_after_each_role_word(write):
+    table, meta = read_table(write("1_3D850_s1.dat", TESTWARE), kind="tensile")
+    assert [(c.name, c.role, c.unit) for c in meta.columns] == [
+        ("Ch 1 Displacement", "gauge_1", "mm"), ("Ch 1 Force", "force", "kN"),
+        ("Time", "time", "Sec")]
+    np.testing.assert_allclose(table["force"], [-1.6205013e-02, 4.0941238])
+    assert any("split after each word that names a role" in w for w in meta.warnings)
+
+
+def test_names_that_do_not_split_into_the_columns_are_none(write):
+    text = TESTWARE.replace("Ch 1 Force", "Ch 1 Status")  # the words give two names, not 3
+    _, meta = read_table(write("t.dat", text), kind="tensile")
+    assert [(c.name, c.role) for c in meta.columns] == [
+        ("column 1", "gauge_1"), ("column 2", "force"), ("column 3", "time")]  # by unit
+    assert any("does not split into the 3 columns" in w for w in meta.warnings)
+
+
+def test_a_names_row_written_as_numpys_comment_over_columns_aligned_by_blanks(write):
+    # a real impact-rig export written by numpy.savetxt: "# " before the names
+    text = ("# time(s), \t \tacceleration(g)\n0.000000000000000000e+00 6.280757999999999619e+00\n"
+            "2.000277970813059281e-05 6.519219999999999793e+00\n")
+    table, meta = read_table(write("acc_base_a0.txt", text), kind="engagement", strict=False)
+    assert [(c.name, c.unit) for c in meta.columns] == [("time", "s"), ("acceleration", "g")]
+    np.testing.assert_allclose(table["time"], [0.0, 2.000277970813059281e-05])
 
 
 def test_a_column_named_by_a_unit_of_time_holds_the_time_in_it(write):
@@ -213,6 +263,11 @@ def test_a_file_without_names_is_read_by_the_run_sheets_positions(write):
         ("column 1", "time"), ("column 2", "force"), ("column 3", "gauge_1")]
     reader = open_log(path, kind="tensile", format="csv", **HEADERLESS_SHEET)
     np.testing.assert_array_equal(reader.read(1, 4)[0]["force"], table["force"][1:4])
+    # a bad cell is in the column the run sheet calls it
+    with pytest.raises(ValueParseError) as caught:
+        read_table(write("bad.lvm", HEADERLESS.replace("-8,921337", "x")), kind="tensile",
+                   format="csv", **HEADERLESS_SHEET)
+    assert (caught.value.row, caught.value.column) == (4, "column 2")
 
 
 def test_a_file_without_names_gets_no_role_from_a_position(write):

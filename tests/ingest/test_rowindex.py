@@ -7,35 +7,40 @@ from pipeline.ingest import rowindex
 from pipeline.ingest.rowindex import index_rows
 from pipeline.ingest.source import BufferSource
 
-#: Pieces of text: cells (one with a letter that is two bytes in UTF-8), and every line end.
-PIECES = st.lists(st.sampled_from(["1,5", "ab", "ł", "x;y", "\n", "\r\n", "\r", "\n\n",
+#: Pieces of text: cells (one with a letter that is two bytes in UTF-8), a comment mark, and
+#: every line end.
+PIECES = st.lists(st.sampled_from(["1,5", "ab", "ł", "x;y", "# c", "\n", "\r\n", "\r", "\n\n",
                                    "\r\n\r\n", "\r\r"]), min_size=1, max_size=60)
 CODECS = ["utf-8", "cp1250", "utf-16-le", "utf-16-be"]
 
 
-def expected(text: str) -> tuple[list[int], list[int]]:
-    """Characters to each data row (a non-empty line) and to each line end, one by one."""
-    starts, ends = [], []
+def expected(text: str) -> tuple[list[int], list[int], int]:
+    """Characters to each data row (a non-empty line not opened by ``#``) and to each line
+    end, one by one, and the count of comment lines."""
+    starts, ends, comments = [], [], 0
     for position, char in enumerate(text):
         follows = text[position + 1 : position + 2]
         if char == "\n" or (char == "\r" and follows != "\n"):
             ends.append(position)
         if char not in "\r\n" and (position == 0 or text[position - 1] in "\r\n"):
-            starts.append(position)
-    return starts, ends
+            if char == "#":
+                comments += 1
+            else:
+                starts.append(position)
+    return starts, ends, comments
 
 
 @settings(max_examples=300, deadline=None)
 @given(pieces=PIECES, codec=st.sampled_from(CODECS), every=st.integers(1, 5),
        block=st.sampled_from([2, 4, 6, 64]))
 def test_rows_lines_and_offsets(pieces, codec, every, block):
-    text = "".join(pieces).lstrip("\r\n") or "x"
+    text = "".join(pieces).lstrip("\r\n#") or "x"  # the first line is a data row
     content = b"##" + text.encode(codec)  # rows start after a 2-byte head
     source = BufferSource(content, "t")
-    starts, ends = expected(text)
+    starts, ends, comments = expected(text)
     offset = [2 + len(text[:start].encode(codec)) for start in starts]
     index = index_rows(source, 2, len(content), codec, every=every, block=block)
-    assert (index.rows, index.lines) == (len(starts), len(ends))
+    assert (index.rows, index.lines, index.comments) == (len(starts), len(ends), comments)
     assert index.offsets.tolist() == offset[::every]
     assert index.line_ends.tolist() == [sum(end < start for end in ends)
                                         for start in starts[::every]]

@@ -93,6 +93,8 @@ def test_whole_file_warnings_are_known_at_open(corpus):
         "comma_pairs.csv": ["the decimal comma is also the delimiter: values were rejoined "
                             "in pairs"],
         "plain_crlf.csv": [],
+        "comment_lines.csv": ["7 comment line(s) among the data rows passed over, the first "
+                              "at line 8: '# Skipped 1 cycles'"],
     }
     for name, warnings in expected.items():
         assert open_log(files[name]).metadata.warnings == warnings, name

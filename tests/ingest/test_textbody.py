@@ -67,8 +67,9 @@ def test_trailing_empty_column_without_line_end_is_kept(write):
 def test_join_comma_pairs(write):
     path = write("p.csv", "h,h\n1,5,-2,25\n3,0,4,75\n")
     region = region_of(path)
-    table = parse_body(region, region, names=["a", "b"], width=4, delimiter=",",
-                       decimal=".", float_columns=set(), as_text=True)
+    table, comments = parse_body(region, region, names=["a", "b"], width=4, delimiter=",",
+                                 decimal=".", float_columns=set(), as_text=True)
+    assert comments == 0
     joined = join_comma_pairs(table, region, ["a", "b"])
     assert joined.to_pydict() == {"c0": [1.5, 3.0], "c1": [-2.25, 4.75]}
     bad = pa.table({f"c{i}": pa.array(values) for i, values in
