@@ -54,7 +54,7 @@ def parse_preamble(lines: list[str], delimiter: str) -> dict[str, str]:
 
 
 def _key_and_value(line: str, delimiter: str) -> tuple[str | None, str]:
-    """One preamble line's key and value; no key for a line quoted whole and empty."""
+    """One preamble line's key and value; no key for a line of empty fields."""
     whole = split_fields(line, delimiter) if line.lstrip().startswith('"') else []
     if len(whole) == 1:  # quoted whole (Deben: "Span : 10,0"): one key and one value
         line = whole[0]
@@ -66,7 +66,9 @@ def _key_and_value(line: str, delimiter: str) -> tuple[str | None, str]:
         key, values = (fields[0], fields[1:]) if len(fields) > 1 else (category, [rest])
     else:
         fields = [field.strip() for field in split_fields(line, delimiter) if field.strip()]
-        first = fields[0] if fields else line.strip()
+        if not fields:  # a blank row padded with delimiters (a spreadsheet's ",,,,")
+            return None, ""
+        first = fields[0]
         separators = [at for at in (_key_colon(first), first.find(" =")) if at >= 0]
         if separators:
             at = min(separators)

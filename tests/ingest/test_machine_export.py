@@ -228,6 +228,10 @@ def test_run_sheet_columns_pick_among_candidates(write):
         # a real LabVIEW header: one key per line, over as many channels
         (["X_Dimension\tTime\tTime\tTime", "X0\t0.0E+0\t0.0E+0\t0.0E+0"],
          {"X_Dimension": "Time Time Time", "X0": "0.0E+0 0.0E+0 0.0E+0"}),
+        # a real force-sensor logger's: a blank row padded with delimiters is no key
+        (["Data Collection Duration (s):,1,,,,,,", "Force Sensor Sample rate (Hz):,1000,,,,,,",
+          ",,,,,,,"],
+         {"Data Collection Duration (s)": "1", "Force Sensor Sample rate (Hz)": "1000"}),
     ],
 )
 def test_parse_preamble(lines, expected):
