@@ -178,6 +178,12 @@ CLOCK_PART_NAMES = ("hour", "minute", "second", "stunde", "sekunde", "heure", "s
 #: (PicoLog's ``Force Ave. (kN)``, ``LVDT Last (mm)``): after a name of a role, a
 #: qualifier, not the German load (``Last``) or Instron's video extensometer (``AVE``).
 STATISTIC_WORDS = ("last", "ave", "avg", "mean", "min", "max")
+#: Words in parentheses after a name that say how its values were worked, not their unit
+#: (a dyno's ``Power (uncorrected)``, ``Ashcroft (Relative)``, a rig's ``Force (filtered)``).
+QUALIFIER_WORDS = frozenset({"uncorrected", "corrected", "filtered", "unfiltered", "raw",
+                             "relative", "absolute", "smoothed", "averaged", "calculated",
+                             "computed", "measured", "nominal", "gefiltert", "ungefiltert",
+                             "korrigiert", "unkorrigiert", "roh"})
 #: The label of :data:`TRANSVERSE_NAMES` among the role keywords: it wins as a role would.
 _TRANSVERSE = "transverse"
 
@@ -248,16 +254,28 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
     separator = " / " if " / " in text else "/" if text.count("/") == 1 else None
     if separator:
         name, _, unit = text.rpartition(separator)
-        if name.strip() and spellings(unit):
+        if name.strip() and spellings(unit) and not (
+                separator == "/" and _ends_in_unit_over(name, unit)):
             return name.strip(), unit.strip()
     return text, None
+
+
+def _ends_in_unit_over(name: str, unit: str) -> bool:
+    """Whether `name` ends in a word that makes a unit over `unit`: the ``/`` is then inside
+    a compound unit (a dyno's ``TCP RX kB/s``, ``Drehzahl U/min``), not after a name."""
+    words = name.split()
+    return (len(words) > 1 and words[-1][0].isalpha()
+            and bool(spellings(f"{words[-1]}/{unit.strip()}")))
 
 
 def _qualifier(match: re.Match) -> bool:
     """Whether the parentheses of `match` qualify the name rather than give its unit: set
     against it without a blank, words that are no unit (WaveMatrix's ``Total Cycle
-    Count(Linear Waveform)`` beside ``Total Cycle Count(Rotary Waveform)``)."""
+    Count(Linear Waveform)`` beside ``Total Cycle Count(Rotary Waveform)``); or one of
+    :data:`QUALIFIER_WORDS` (a dyno's ``Power (uncorrected)`` beside ``Power``)."""
     inside = match["par"]
+    if inside is not None and fold(inside.strip()) in QUALIFIER_WORDS:
+        return True
     return (inside is not None and not match.string[match.start("par") - 2].isspace()
             and " " in inside.strip() and not spellings(inside))
 

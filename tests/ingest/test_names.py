@@ -93,6 +93,13 @@ def test_every_listed_name_matches_its_own_role():
         # PASCO Capstone writes the run after the unit
         ("Force (N) Run #1", ("Force Run #1", "N")), ("Time (s) Auto", ("Time Auto", "s")),
         ("Position (m) Run 5", ("Position Run 5", "m")), ("Run 5", ("Run 5", None)),
+        # a "/" inside a compound unit after a word (a Dynojet export's rates) is no
+        # name-unit separator: "TCP RX kB" in s would be a time
+        ("(DWRT CPU) TCP RX kB/s", ("(DWRT CPU) TCP RX kB/s", None)),
+        ("Drehzahl U/min", ("Drehzahl U/min", None)), ("Weg 1/mm", ("Weg 1", "mm")),
+        # a word in parentheses that says how the values were worked is no unit
+        ("(DWRT CPU) Power (uncorrected)", ("(DWRT CPU) Power (uncorrected)", None)),
+        ("Chain force (filtered)", ("Chain force (filtered)", None)),
     ],
 )
 def test_split_name_unit(cell, expected):
