@@ -565,7 +565,8 @@ def find_table(
             raise LayoutError("no data rows of the table's width", file=name,
                               hint="check the file's delimiter and decimal mark")
         limit *= 4
-    while data > 0 and kinds[data - 1] in _DATA_KINDS:
+    while (data > 0 and kinds[data - 1] in _DATA_KINDS
+           and _units_beside_numbers(rows[data - 1], decimal) is None):
         data -= 1
     above = _above(kinds, data)
     labels = _specimen_labels(rows, kinds, above)
@@ -580,15 +581,22 @@ def find_table(
         )
     if labels:  # one specimen's label between the header and the data
         above = _above(kinds, above)
-    units_index = None
+    units_index, units_cells, notes = None, [], ()
+    if above >= 1 and kinds[above] == "partial":  # numbers typed beside the units
+        units_cells = _units_beside_numbers(rows[above], decimal) or []
+    elif above >= 1 and kinds[above] == "text":
+        units_cells = rows[above]
     if (
-        above >= 1
-        and kinds[above] == "text"
+        units_cells
         and any(not (is_number(cell, decimal) or is_missing(cell)) for cell in rows[above - 1])
-        and _filled_width(rows[above]) <= width  # a trailing delimiter adds a blank field
-        and _units_row(rows[above], rows[data])
+        and _filled_width(units_cells) <= width  # a trailing delimiter adds a blank field
+        and _units_row(units_cells, rows[data])
     ):  # numbers among the names over a units row (sensors named by serial number, an
         # oscilloscope's channels 1 and 2: "x-axis,1,2") do not make the names row data
+        if units_cells is not rows[above]:
+            typed = [cell.strip() for cell in rows[above] if is_number(cell, decimal)]
+            notes = (f"line {above + 1}: the numbers beside the units ({', '.join(typed)}) "
+                     "were passed over",)
         units_index, above = above, above - 1
         if above >= 1 and _channel_states(rows[above]) and kinds[above - 1] == "text":
             above -= 1  # a row of channel states between the names and the units (MaCh3D)
@@ -604,17 +612,16 @@ def find_table(
     columns = width // 2 if pairs else width
     if len(names) > columns and not any(cell.strip() for cell in names[columns:]):
         names = names[:columns]
-    notes: tuple[str, ...] = ()
     if len(names) > columns and delimiter == BLANKS:  # names with a blank inside them
         names = _WIDE_BLANKS.split(names_line.strip())
         if len(names) < columns and (grouped := _names_by_roles(names_line, columns)):
             names = grouped
-            notes = (f"the names row, its names apart by single blanks, was split after "
-                     f"each word that names a role: {', '.join(map(repr, names))}",)
+            notes += (f"the names row, its names apart by single blanks, was split after "
+                      f"each word that names a role: {', '.join(map(repr, names))}",)
         elif len(names) < columns:
-            notes = (f"the names row {names_line.strip()[:60]!r} does not split into the "
-                     f"{columns} columns (in a table aligned by blanks, names need two blanks "
-                     "or a tab between them): the columns are named by their place",)
+            notes += (f"the names row {names_line.strip()[:60]!r} does not split into the "
+                      f"{columns} columns (in a table aligned by blanks, names need two "
+                      "blanks or a tab between them): the columns are named by their place",)
             names = [""] * columns
     if len(names) > columns:
         statistics = [row[0].strip() for row in rows[data:]
@@ -641,7 +648,7 @@ def find_table(
                                                   for row in rows[data:]], data + 1))
         for index, cell in enumerate(rows[data][:columns]) if (kind := clock_kind(cell))}
     if units_index is not None:
-        for index, cell in enumerate(rows[units_index][:columns]):
+        for index, cell in enumerate(units_cells[:columns]):
             unit = cell.strip().strip("()[]<>").strip()
             units[index] = (None if unit.lower() in NO_UNIT_CELLS or is_sample_interval(unit)
                             else unit or None)
@@ -663,6 +670,19 @@ def find_table(
                                                       decimal),
         notes=notes,
     )
+
+
+def _units_beside_numbers(row: list[str], decimal: str) -> list[str] | None:
+    """A units row with numbers typed after its last unit (an export re-saved through a
+    spreadsheet, ``Sec  mm  N  -0.081  -5.86``): the row with those numbers blank; None
+    for any other row (two units at least, every text a unit, no number among them)."""
+    texts = [index for index, cell in enumerate(row)
+             if cell.strip() and not is_number(cell, decimal)]
+    numbers = [index for index, cell in enumerate(row) if is_number(cell, decimal)]
+    if (len(texts) < 2 or not numbers or min(numbers) < max(texts)
+            or not all(looks_like_unit(row[index]) for index in texts)):
+        return None
+    return [cell if index < min(numbers) else "" for index, cell in enumerate(row)]
 
 
 def _names_by_roles(line: str, columns: int) -> list[str]:

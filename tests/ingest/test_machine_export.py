@@ -549,3 +549,22 @@ def test_a_single_units_setting_names_no_column(write):
                          units={"time": "s", "force": "kN", "gauges": "mm"})
     assert meta.preamble == {"Units": "mm"}
     assert not any("preamble's 'Units' row" in warning for warning in meta.warnings)
+
+
+# a real ElectroForce WinTest export re-saved through a spreadsheet: two numbers typed
+# beside the units row, and in the first data row
+WINTEST_RESAVED = ("Axial Counts\t0\t\t\t\t\t\n"
+                   "Points\tElapsed Time \tDisp 1\tLoad 1 \t\t\t\n"
+                   "      \tSec          \tmm    \tN      \t\t-0.081\t-5.86\n"
+                   "1\t0\t0\t-0.55\t\t-0.056\t-12.11\n2\t0.005\t0\t-0.55\t\t\t\n"
+                   "3\t0.01\t0.002\t-0.56\t\t\t\n")
+
+
+def test_numbers_typed_beside_the_units_row_are_passed_over(write):
+    table, meta = read_table(write("1.TXT", WINTEST_RESAVED), kind="tensile")
+    assert [(c.name, c.role, c.unit) for c in meta.columns][1:4] == [
+        ("Elapsed Time", "time", "Sec"), ("Disp 1", "gauge_1", "mm"), ("Load 1", "force", "N")]
+    np.testing.assert_allclose(table["force"], [-0.55, -0.55, -0.56])
+    assert meta.first_data_line == 4
+    assert "line 3: the numbers beside the units (-0.081, -5.86) were passed over" in (
+        meta.warnings)
