@@ -285,9 +285,15 @@ def _best_match(name: str, keywords: tuple[tuple[tuple[str, ...], str], ...]) ->
     word of :data:`STATISTIC_WORDS` counts only when the words before it match none."""
     words = tokens(name)
     if len(words) > 1 and words[-1] in STATISTIC_WORDS:
-        qualified = _best_match(name[: name.casefold().rindex(words[-1])], keywords)
+        qualified = _best_of(words[:-1], keywords)
         if qualified is not None:
             return qualified
+    return _best_of(words, keywords)
+
+
+def _best_of(words: tuple[str, ...], keywords: tuple[tuple[tuple[str, ...], str], ...]
+             ) -> str | None:
+    """The label of the keyword ending last among `words` (then the longest), or None."""
     best: tuple[int, int, str] | None = None
     for keyword, label in keywords:
         size = len(keyword)
