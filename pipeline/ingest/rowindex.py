@@ -54,6 +54,9 @@ class RowIndex:
         Line ends between them.
     comments : int
         Comment lines between them.
+    first_comment : tuple of int, or None
+        Byte offset of the first comment line and the line ends before it
+        (:func:`first_comment`).
     every : int
         Rows from one indexed row to the next.
     offsets : numpy.ndarray
@@ -69,6 +72,7 @@ class RowIndex:
     rows: int
     lines: int
     comments: int
+    first_comment: tuple[int, int] | None
     every: int
     offsets: np.ndarray
     line_ends: np.ndarray
@@ -132,22 +136,52 @@ def index_rows(
     """
     unit = code_unit(codec)
     offsets, line_ends = [np.array([start])], [np.array([0])]
-    rows, lines, comments = int(start < end), 0, 0
+    rows, lines, comments, first = int(start < end), 0, 0, None
     for begin, starts, ends, passed in _scan(source, start, end, unit, block):
         picked = starts[(-rows) % every :: every]
         offsets.append(begin + picked * unit.itemsize)
         line_ends.append(lines + np.searchsorted(ends, picked))
+        if first is None and passed.size:
+            first = _located(begin, int(passed[0]), ends, lines, unit)
         rows += starts.size
         lines += ends.size
-        comments += passed
-    return RowIndex(start, end, rows, lines, comments, every,
+        comments += passed.size
+    return RowIndex(start, end, rows, lines, comments, first, every,
                     np.concatenate(offsets).astype(np.int64),
                     np.concatenate(line_ends).astype(np.int64), unit)
 
 
+def first_comment(
+    source: Source, start: int, end: int, codec: str, block: int = BLOCK
+) -> tuple[int, int] | None:
+    """Where the first comment line between two offsets starts, scanning no further.
+
+    The parameters are those of :func:`index_rows`.
+
+    Returns
+    -------
+    tuple of int, or None
+        The comment line's byte offset and the line ends between `start` and
+        it; None when no line there is a comment.
+    """
+    unit, lines = code_unit(codec), 0
+    for begin, _, ends, passed in _scan(source, start, end, unit, block):
+        if passed.size:
+            return _located(begin, int(passed[0]), ends, lines, unit)
+        lines += ends.size
+    return None
+
+
+def _located(begin: int, position: int, ends: np.ndarray, lines: int, unit: np.dtype
+             ) -> tuple[int, int]:
+    """Byte offset and line ends before a line `position` code units into a block at `begin`,
+    `lines` line ends before the block, `ends` those in it."""
+    return begin + position * unit.itemsize, lines + int(np.searchsorted(ends, position))
+
+
 def _scan(
     source: Source, start: int, end: int, unit: np.dtype, block: int
-) -> Iterator[tuple[int, np.ndarray, np.ndarray]]:
+) -> Iterator[tuple[int, np.ndarray, np.ndarray, np.ndarray]]:
     """Data-row starts and line ends, block by block, from `start` (a row start) to `end`.
 
     Yields
@@ -159,8 +193,9 @@ def _scan(
         starts (the row may start at the block's end), in order.
     ends : numpy.ndarray
         Code units from `begin` to each line end in the block, in order.
-    comments : int
-        Comment lines the block's line ends start (not among `starts`).
+    comments : numpy.ndarray
+        Code units from `begin` to each comment line a line end in the block
+        starts (not among `starts`), in order.
     """
     size = unit.itemsize
     block -= block % size
@@ -181,5 +216,5 @@ def _scan(
             starts = starts[starts < count]
         comment = units[starts] == _COMMENT
         ends = np.flatnonzero(line_feed[:-1] | (carriage[:-1] > line_feed[1:]))
-        yield begin, starts[~comment], ends, int(np.count_nonzero(comment))
+        yield begin, starts[~comment], ends, starts[comment]
         begin = stop

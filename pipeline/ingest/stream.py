@@ -121,7 +121,8 @@ def _text_rows(
     index = index_rows(source, region.start, region.end, head.codec)
     delimited.require_rows(index.rows, region)
     if index.comments:
-        header.metadata.warnings.append(comment_warning(region, index.comments))
+        header.metadata.warnings.append(
+            comment_warning(region, index.comments, index.first_comment))
     if spec.pairs:
         header.metadata.warnings.append(delimited.PAIRS_WARNING)
     if truncated:

@@ -22,6 +22,7 @@ import pyarrow.csv as pacsv
 from pipeline.errors import LayoutError, ValueParseError
 from pipeline.ingest.clock import UNREAD_FORM_HINT, ClockColumn, looks_like_clock
 from pipeline.ingest.roles import display_name
+from pipeline.ingest.rowindex import first_comment
 from pipeline.ingest.sniff import (
     BLANKS,
     COMMENT_MARK,
@@ -36,6 +37,8 @@ from pipeline.ingest.source import Source, contains, text_lines
 
 #: Bytes of the file's end searched for a truncated last line.
 TAIL_BYTES = 1 << 16
+#: Bytes read to quote a comment line in a warning (its first 60 characters are quoted).
+_QUOTED_BYTES = 512
 
 _INVALID = re.compile(r"column #(\d+).*invalid value '(.*)'", re.DOTALL)
 _WRONG_WIDTH = re.compile(r"Expected \d+ columns, got \d+: (.*)", re.DOTALL)
@@ -431,12 +434,22 @@ def _comment_row(error: Exception) -> bool:
     return found is not None and found.group(1).startswith(COMMENT_MARK)
 
 
-def comment_warning(region: Region, count: int) -> str:
-    """What to say of the `count` comment lines passed over among the rows of `region`."""
-    first = next(((number, line) for number, line in region.lines()
-                  if line.startswith(COMMENT_MARK)), None)
-    where = f", the first at line {first[0]}: {first[1].strip()[:60]!r}" if first else ""
-    return f"{count} comment line(s) among the data rows passed over{where}"
+def comment_warning(region: Region, count: int,
+                    first: tuple[int, int] | None = None) -> str:
+    """What to say of the `count` comment lines passed over among the rows of `region`.
+
+    `first` is where the first of them starts, as :func:`~pipeline.ingest.rowindex.
+    first_comment` gives it (looked for when not given).
+    """
+    first = first or first_comment(region.source, region.start, region.end, region.codec)
+    if first is None:
+        return f"{count} comment line(s) among the data rows passed over"
+    offset, line_ends = first
+    text = region.read(offset, min(offset + _QUOTED_BYTES, region.end)).decode(
+        region.codec, errors="replace")
+    quoted = re.split(r"[\r\n]", text, maxsplit=1)[0].strip()[:60]
+    return (f"{count} comment line(s) among the data rows passed over, the first at line "
+            f"{region.first_line + line_ends}: {quoted!r}")
 
 
 def _stream(body: Region, delimiter: str) -> pa.NativeFile:

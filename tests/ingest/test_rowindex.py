@@ -4,7 +4,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from pipeline.ingest import rowindex
-from pipeline.ingest.rowindex import index_rows
+from pipeline.ingest.rowindex import first_comment, index_rows
 from pipeline.ingest.source import BufferSource
 
 #: Pieces of text: cells (one with a letter that is two bytes in UTF-8), a comment mark, and
@@ -14,17 +14,17 @@ PIECES = st.lists(st.sampled_from(["1,5", "ab", "ł", "x;y", "# c", "\n", "\r\n"
 CODECS = ["utf-8", "cp1250", "utf-16-le", "utf-16-be"]
 
 
-def expected(text: str) -> tuple[list[int], list[int], int]:
-    """Characters to each data row (a non-empty line not opened by ``#``) and to each line
-    end, one by one, and the count of comment lines."""
-    starts, ends, comments = [], [], 0
+def expected(text: str) -> tuple[list[int], list[int], list[int]]:
+    """Characters to each data row (a non-empty line not opened by ``#``), to each line
+    end and to each comment line, one by one."""
+    starts, ends, comments = [], [], []
     for position, char in enumerate(text):
         follows = text[position + 1 : position + 2]
         if char == "\n" or (char == "\r" and follows != "\n"):
             ends.append(position)
         if char not in "\r\n" and (position == 0 or text[position - 1] in "\r\n"):
             if char == "#":
-                comments += 1
+                comments.append(position)
             else:
                 starts.append(position)
     return starts, ends, comments
@@ -40,7 +40,12 @@ def test_rows_lines_and_offsets(pieces, codec, every, block):
     starts, ends, comments = expected(text)
     offset = [2 + len(text[:start].encode(codec)) for start in starts]
     index = index_rows(source, 2, len(content), codec, every=every, block=block)
-    assert (index.rows, index.lines, index.comments) == (len(starts), len(ends), comments)
+    assert (index.rows, index.lines, index.comments) == (len(starts), len(ends),
+                                                         len(comments))
+    first = comments and (2 + len(text[:comments[0]].encode(codec)),
+                          sum(end < comments[0] for end in ends))
+    assert index.first_comment == (first or None)
+    assert first_comment(source, 2, len(content), codec, block=block) == (first or None)
     assert index.offsets.tolist() == offset[::every]
     assert index.line_ends.tolist() == [sum(end < start for end in ends)
                                         for start in starts[::every]]
