@@ -57,6 +57,11 @@ RESULTS_ROWS = 20
 STATISTICS_LABELS = frozenset({"mean", "average", "sd", "s.d.", "std", "std dev",
                                "standard deviation", "min", "max", "minimum", "maximum",
                                "median", "cv", "range", "mittelwert", "standardabweichung"})
+#: How a Campbell Scientific logger worked a column's values over its output interval, as
+#: its TOA5 files say in the row under the units, folded: a sample, an average, an extreme,
+#: a total, a standard deviation, a median, a vector average, the time of an extreme.
+PROCESSING_WORDS = frozenset({"smp", "avg", "max", "min", "tot", "std", "med", "mom", "wvc",
+                              "tmx", "tmn"})
 #: Data rows of the head looked at to tell a column of text labels (a step's name, a
 #: status) from a column of numbers with a bad cell.
 TEXT_ROWS = 32
@@ -581,6 +586,8 @@ def find_table(
         )
     if labels:  # one specimen's label between the header and the data
         above = _above(kinds, above)
+    elif _processing_row(rows, kinds, above):  # a Campbell logger's row under the units
+        above = _above(kinds, above)
     units_index, units_cells, notes = None, [], ()
     if above >= 1 and kinds[above] == "partial":  # numbers typed beside the units
         units_cells = _units_beside_numbers(rows[above], decimal) or []
@@ -816,6 +823,16 @@ def _no_names_row(file: str, data: int, delimiter: str) -> LayoutError:
              + ", or name them in the run sheet by position, with their units: columns = "
                '{time = "column 1", force = "column 2"}, units = {time = "s", force = "kN"}',
     )
+
+
+def _processing_row(rows: list[list[str]], kinds: list[str], index: int) -> bool:
+    """Whether row `index` tells how a logger worked each column's values over its interval
+    (:data:`PROCESSING_WORDS`, blank over a time stamp or a record number), under a units
+    row: a Campbell Scientific TOA5 file's fourth row (``"","","Smp","Avg","Max"``)."""
+    if index < 1 or kinds[index] != "text" or kinds[_above(kinds, index)] != "text":
+        return False
+    cells = {cell.strip().lower() for cell in rows[index]}
+    return bool(cells - {""}) and cells <= PROCESSING_WORDS | {""}
 
 
 def _channel_states(row: list[str]) -> bool:

@@ -396,6 +396,34 @@ def test_a_row_of_channel_states_between_names_and_units_is_passed_over(write):
     assert "ON" not in str(meta.preamble)
 
 
+
+# a real Campbell Scientific CR1000 TOA5 file: file line, names, units, then how each value
+# was worked over the interval (sample, average, extreme), then the data
+TOA5 = (
+    '"TOA5","RF407_CR1000","CR1000","69096","CR1000.Std.27.04","CPU:SkiSF_Met_Apr2024.CR1",'
+    '"46595","SkiSF_Met"\n'
+    '"TIMESTAMP","RECORD","AirTF_Max","AirTF_Min","AirTF_Avg","WC_F_Avg","WS_mph_Max",'
+    '"WS_mph_Min","WS_mph_Avg","WindDir","RH","DP_F_Avg","BP_inHg_Avg","BattV","PanelTemp_F"\n'
+    '"TS","RN","°F","°F","°F","°F","miles/hour","miles/hour","miles/hour","Degrees","%","°F",'
+    '"inHg","Volts","°F"\n'
+    '"","","Max","Min","Avg","Avg","Max","Min","Avg","Smp","Smp","Avg","Avg","Smp","Smp"\n'
+    '"2024-04-06 13:30:00",0,10.87,10.74,10.78,0.553,12.09,0,7.875,302.5,88.1,7.958,28.69,'
+    '14.15,-10.47\n'
+    '"2024-04-06 13:45:00",0,10.01,9.76,9.86,-7.825,29.08,0,20.19,287.7,87.4,6.911,29.26,'
+    '14.15,-10.42\n'
+)
+
+
+def test_a_campbell_row_of_processing_words_under_the_units_is_passed_over(write):
+    table, meta = read_table(write("SkiSF_MetData.dat", TOA5.encode()), kind="engagement",
+                             strict=False)  # a weather station's: no force
+    named = {column.name: (column.role, column.unit) for column in meta.columns}
+    assert named["TIMESTAMP"] == ("time", "s") and named["RECORD"] == (None, None)
+    assert named["AirTF_Max"] == (None, "°F") and named["WindDir"] == ("angle", "Degrees")
+    np.testing.assert_allclose(table["time"], [0.0, 900.0])
+    np.testing.assert_allclose(table["angle"], np.radians([302.5, 287.7]))
+
+
 # a real PASCO Capstone export (Norwegian locale): the run label after each unit
 PASCO = "Time (s) Auto;Force (N) Run #1\n0,000;-7,10E-15\n0,050;1,25E+00\n0,100;2,50E+00\n"
 
