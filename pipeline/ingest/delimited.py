@@ -57,6 +57,7 @@ File defects handled in every layout
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
@@ -95,6 +96,8 @@ UNITS_ROW_KEYS = frozenset({"engineering unit", "engineering units", "unit", "un
 #: (not ``s``, which a German export gives a displacement, nor ``min``, a minimum, nor
 #: ``ms``, which a KEYENCE logger gives the milliseconds of its date-time column).
 TIME_UNIT_NAMES = frozenset({"sec", "secs", "seconds", "minutes", "mins", "hours", "hrs"})
+#: Units of time a name gives beside ``elapsed`` only (``elapsed_ms``, ``s_elapsed``).
+ELAPSED_UNITS = frozenset({"ms", "s", "min", "h"})
 #: The warning of a file whose decimal comma is also its delimiter.
 PAIRS_WARNING = "the decimal comma is also the delimiter: values were rejoined in pairs"
 
@@ -168,14 +171,32 @@ def _time_unit_of_the_scope(names: list[str], units: list[str | None],
 
 def _time_unit_of_its_name(names: list[str], units: list[str | None],
                            warnings: list[str]) -> list[str | None]:
-    """`units`, a column without one whose whole name is a unit of time
-    (:data:`TIME_UNIT_NAMES`: a logger's ``seconds``, an oscilloscope's ``sec`` beside
-    ``Volt1``) given that unit, with a note."""
-    given = [name.strip() if unit is None and fold(name.strip()) in TIME_UNIT_NAMES else unit
+    """`units`, a column without one whose name is a unit of time (:data:`TIME_UNIT_NAMES`: a
+    logger's ``seconds``, an oscilloscope's ``sec`` beside ``Volt1``), alone or with
+    ``elapsed`` (a phone logger's ``seconds_elapsed``), given that unit, with a note."""
+    given = [time_unit_named(name) if unit is None else unit
              for name, unit in zip(names, units, strict=True)]
     warnings += [f"column {name!r}: unit {new!r} from its name"
                  for name, unit, new in zip(names, units, given, strict=True) if unit != new]
     return given
+
+
+def time_unit_named(name: str) -> str | None:
+    """The unit of time `name` names, as written, or None.
+
+    A name that is a unit of time (:data:`TIME_UNIT_NAMES`), alone or beside
+    ``elapsed`` (a phone logger's ``seconds_elapsed``; beside ``elapsed``, ``ms``,
+    ``s``, ``min`` and ``h`` are units too): the column holds the time in it.
+
+    >>> time_unit_named("seconds_elapsed"), time_unit_named("elapsed_ms"), time_unit_named("ms")
+    ('seconds', 'ms', None)
+    """
+    words = re.findall(r"[^\W_]+", name)
+    unit = [word for word in words if fold(word) != "elapsed"]
+    units = TIME_UNIT_NAMES | (ELAPSED_UNITS if len(unit) < len(words) else frozenset())
+    if len(unit) == 1 and fold(unit[0]) in units and len(words) <= 2:
+        return unit[0]
+    return None
 
 
 def _units_of_a_preamble_row(spec: TableSpec, names: list[str], units: list[str | None],

@@ -5,6 +5,7 @@ import pytest
 
 from pipeline.errors import ColumnError, LayoutError, ValueParseError
 from pipeline.ingest import open_log, read_table
+from pipeline.ingest.delimited import time_unit_named
 from pipeline.ingest.sniff import detect_dialect
 
 PLAIN = (
@@ -170,6 +171,24 @@ def test_a_column_named_by_a_unit_of_time_holds_the_time_in_it(write):
                           columns={"gauges": "s"}, units={"gauges": "mm"})
     assert not any("from its name" in w for w in other.warnings)  # "s": a German travel
 
+
+
+def test_a_unit_of_time_beside_elapsed_in_a_name(write):
+    # a real phone-logger export (Sensor Logger): epoch nanoseconds beside seconds elapsed
+    text = ("time,seconds_elapsed,z,y,x\n"
+            "1727317818379557400,0.026557373046875,-0.0611,0.00027,0.0125\n"
+            "1727317818389611300,0.036611328125,-0.0601,0.0155,0.0001\n")
+    table, meta = read_table(write("Accelerometer.csv", text), kind="engagement",
+                             columns={"time": "seconds_elapsed", "force": "z"},
+                             units={"force": "N"})
+    np.testing.assert_allclose(table["time"], [0.026557373046875, 0.036611328125])
+    assert "column 'seconds_elapsed': unit 'seconds' from its name" in meta.warnings
+    named = {name: time_unit_named(name) for name in (
+        "Elapsed Seconds", "elapsed_ms", "ms_elapsed", "elapsed", "ms", "s", "Elapsed Time",
+        "seconds elapsed total")}
+    assert named == {"Elapsed Seconds": "Seconds", "elapsed_ms": "ms", "ms_elapsed": "ms",
+                     "elapsed": None, "ms": None, "s": None, "Elapsed Time": None,
+                     "seconds elapsed total": None}
 
 def test_tabs_with_empty_cells_stay_tabs_not_blanks():
     # found by the round-trip property: read as blanks, the empty cells would vanish and
