@@ -175,8 +175,9 @@ COMMAND_NAMES = ("sollwert", "soll", "setpoint", "set point", "command", "cmd", 
 CLOCK_PART_NAMES = ("hour", "minute", "second", "stunde", "sekunde", "heure", "seconde",
                     "hora", "minuto", "segundo", "ora", "secondo")
 #: Words a logger appends to a channel's name for the statistic of each interval it writes
-#: (PicoLog's ``Force Ave. (kN)``, ``LVDT Last (mm)``): after a name of a role, a
-#: qualifier, not the German load (``Last``) or Instron's video extensometer (``AVE``).
+#: (PicoLog's ``Force Ave. (kN)``, ``LVDT Last (mm)``, ``Differential 13 - 14 Last (V)``):
+#: after other words, a qualifier, not the German load (``Last``) or Instron's video
+#: extensometer (``AVE``).
 STATISTIC_WORDS = ("last", "ave", "avg", "mean", "min", "max")
 #: Words in parentheses after a name that say how its values were worked, not their unit
 #: (a dyno's ``Power (uncorrected)``, ``Ashcroft (Relative)``, a rig's ``Force (filtered)``).
@@ -282,12 +283,11 @@ def _qualifier(match: re.Match) -> bool:
 
 def _best_match(name: str, keywords: tuple[tuple[tuple[str, ...], str], ...]) -> str | None:
     """The label of the keyword ending last in `name` (then the longest), or None; a last
-    word of :data:`STATISTIC_WORDS` counts only when the words before it match none."""
+    word of :data:`STATISTIC_WORDS` after others never counts (PicoLog's ``Differential
+    13 - 14 Last``: the last reading of a channel not named, not a load)."""
     words = tokens(name)
     if len(words) > 1 and words[-1] in STATISTIC_WORDS:
-        qualified = _best_of(words[:-1], keywords)
-        if qualified is not None:
-            return qualified
+        words = words[:-1]
     return _best_of(words, keywords)
 
 

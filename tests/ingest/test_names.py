@@ -161,8 +161,11 @@ def test_what_a_displacement_channel_measures_in_more_languages(name, kind):
     ("Force Ave.", "force", None), ("Load Ave.", "force", None), ("Force Min.", "force", None),
     ("LVDT Last", "gauge", "gauge"), ("Extension Last", "gauge", "gauge"),
     ("Crosshead Ave.", "gauge", "crosshead"),
-    # alone, or after words that name no role, the word keeps its own meaning
-    ("Last", "force", None), ("Ch 1 Last", "force", None), ("AVE", "gauge", "extensometer"),
+    # alone, the word keeps its own meaning
+    ("Last", "force", None), ("AVE", "gauge", "extensometer"),
+    # after words that name no role (PicoLog's default channel names), it names none
+    ("Ch 1 Last", None, None), ("Differential 13 - 14 Last", None, None),
+    ("Single-ended 12 Ave.", None, "gauge"),
 ])
 def test_a_statistic_after_a_channels_name_is_a_qualifier(name, role, kind):
     assert match_role(name) == role
