@@ -294,9 +294,24 @@ def text_header(
         meta.warnings += [f"column {display_name(names, index)!r} holds text "
                           f"({first[index].strip()!r}...), not numbers: not used as the {role}"
                           for index, role in texts.items()]
+    candidates = _unnamed_clock_as_time(spec, names, candidates, meta.warnings)
     clocks = time_clocks(spec, candidates, names, units, meta.warnings)
     return RawColumns(names=names, units=units, candidates=candidates, metadata=meta,
                       units_line=units_line(spec), clocks=clocks)
+
+
+def _unnamed_clock_as_time(spec: TableSpec, names: list[str], candidates: Candidates,
+                           warnings: list[str]) -> Candidates:
+    """`candidates`, and where no column may be the time, the one column without a name
+    whose cells are clock readings as the time (PicoLog writes ``""`` over its time
+    stamps), with a note."""
+    unnamed = [index for index in spec.clocks if not names[index].strip()
+               and index not in candidates.indexes()]
+    if "time" in candidates.roles or "time" in candidates.explicit or len(unnamed) != 1:
+        return candidates
+    warnings.append(f"column {display_name(names, unnamed[0])!r}, which has no name, holds "
+                    "clock readings: taken as the time")
+    return Candidates(candidates.roles | {"time": unnamed}, candidates.explicit)
 
 
 def time_clocks(spec: TableSpec, candidates: Candidates, names: list[str],

@@ -190,6 +190,29 @@ def test_a_unit_of_time_beside_elapsed_in_a_name(write):
                      "elapsed": None, "ms": None, "s": None, "Elapsed Time": None,
                      "seconds elapsed total": None}
 
+
+# a real PicoLog ADC-24 export (its first six columns): no name over the time stamps, each
+# statistic of a channel after its default name
+PICOLOG = (
+    '"","Single-ended 12 Ave. (V)","Differential 13 - 14 Last (V)","Differential 13 - 14 Ave. '
+    '(V)","Differential 13 - 14 Min. (V)","Differential 13 - 14 Max. (V)"\n'
+    '"00:00:00","0.029847","-0.000016","-0.000016","-0.000016","-0.000016"\n'
+    '"00:00:01","0.029847","-0.000015","-0.000015","-0.000015","-0.000015"\n'
+    '"00:00:02","0.029847","-0.000017","-0.000017","-0.000017","-0.000017"\n'
+)
+
+
+def test_an_unnamed_column_of_clock_readings_is_the_time(write):
+    table, meta = read_table(write("sample_June3.csv", PICOLOG), kind="engagement",
+                             columns={"force": "Differential 13 - 14 Last"},
+                             units={"force": "kN"})
+    np.testing.assert_allclose(table["time"], [0.0, 1.0, 2.0])
+    np.testing.assert_allclose(table["force"], [-0.016, -0.015, -0.017])
+    assert ("column 'column 1', which has no name, holds clock readings: taken as the time"
+            in meta.warnings)
+    roles = {column.name: column.role for column in meta.columns}
+    assert roles["Single-ended 12 Ave."] is None  # a statistic, not Instron's extensometer
+
 def test_tabs_with_empty_cells_stay_tabs_not_blanks():
     # found by the round-trip property: read as blanks, the empty cells would vanish and
     # shift the fields; blanks are the delimiter only when no other gives a table
