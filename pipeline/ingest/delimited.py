@@ -289,11 +289,12 @@ def text_header(
         units = _units_of_a_preamble_row(spec, names, units, meta.warnings)
     candidates, texts = find_candidates(names, units, columns, file=head.name,
                                         header_line=names_line(spec)).without(spec.texts)
-    if texts:
-        first = split_fields(head.lines[spec.data_index], spec.delimiter)
-        meta.warnings += [f"column {display_name(names, index)!r} holds text "
-                          f"({first[index].strip()!r}...), not numbers: not used as the {role}"
-                          for index, role in texts.items()]
+    candidates, stamps = candidates.without(frozenset(spec.clocks), but="time")
+    first = split_fields(head.lines[spec.data_index], spec.delimiter)
+    meta.warnings += [f"column {display_name(names, index)!r} holds {what} "
+                      f"({first[index].strip()!r}...), not numbers: not used as the {role}"
+                      for found, what in ((texts, "text"), (stamps, "clock readings"))
+                      for index, role in found.items()]
     candidates = _unnamed_clock_as_time(spec, names, candidates, meta.warnings)
     clocks = time_clocks(spec, candidates, names, units, meta.warnings)
     return RawColumns(names=names, units=units, candidates=candidates, metadata=meta,

@@ -58,11 +58,14 @@ class Candidates:
         """Every candidate column."""
         return {index for indexes in self.roles.values() for index in indexes}
 
-    def without(self, columns: frozenset[int]) -> tuple[Candidates, dict[int, str]]:
-        """These candidates but `columns`, where the run sheet does not name them; and the
-        role each column left out was a candidate for."""
+    def without(self, columns: frozenset[int], but: str | None = None
+                ) -> tuple[Candidates, dict[int, str]]:
+        """These candidates but `columns`, where the run sheet does not name them nor are
+        they candidates for role `but`; and the role each column left out was a candidate
+        for."""
         left_out = {index: role for role, indexes in self.roles.items()
-                    if role not in self.explicit for index in indexes if index in columns}
+                    if role not in self.explicit and role != but
+                    for index in indexes if index in columns}
         roles = {role: kept for role, indexes in self.roles.items()
                  if (kept := [index for index in indexes if index not in left_out])}
         return Candidates(roles, self.explicit), left_out

@@ -588,6 +588,8 @@ def find_table(
         above = _above(kinds, above)
     elif _processing_row(rows, kinds, above):  # a Campbell logger's row under the units
         above = _above(kinds, above)
+    elif _section_mark(rows, kinds, above, width):  # "***end of header***" under the names
+        above = _above(kinds, above)
     units_index, units_cells, notes = None, [], ()
     if above >= 1 and kinds[above] == "partial":  # numbers typed beside the units
         units_cells = _units_beside_numbers(rows[above], decimal) or []
@@ -833,6 +835,15 @@ def _processing_row(rows: list[list[str]], kinds: list[str], index: int) -> bool
         return False
     cells = {cell.strip().lower() for cell in rows[index]}
     return bool(cells - {""}) and cells <= PROCESSING_WORDS | {""}
+
+
+def _section_mark(rows: list[list[str]], kinds: list[str], index: int, width: int) -> bool:
+    """Whether row `index`, one text field over a table of three columns or more, closes a
+    header whose row above names every column (a GRIMM dust monitor's ``***end of
+    header***`` under its names)."""
+    above = _above(kinds, index)
+    return (width >= 3 and above >= 0 and kinds[index] == kinds[above] == "text"
+            and _filled_width(rows[index]) == 1 and _filled_width(rows[above]) == width)
 
 
 def _channel_states(row: list[str]) -> bool:

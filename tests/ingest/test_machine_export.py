@@ -424,6 +424,27 @@ def test_a_campbell_row_of_processing_words_under_the_units_is_passed_over(write
     np.testing.assert_allclose(table["angle"], np.radians([302.5, 287.7]))
 
 
+# a real GRIMM EDM80 dust-monitor log (three of its 42 columns, and its last): the header
+# closed by a line of its own under the names
+EDM80 = (
+    "***begin of header***\n"
+    "date&time [local time];serial-no;PM10 [ug/m3];last calibration [local time]\n"
+    "***end of header***\n\n"
+    "2019-07-07 00:00:48;SN19011;0,82;2019-06-11 14:16:04\n"
+    "2019-07-07 00:01:48;SN19011;1,70;2019-06-11 14:16:04\n"
+)
+
+
+def test_a_line_closing_the_header_under_the_names_is_passed_over(write):
+    table, meta = read_table(write("SN19011-measure.dat", EDM80), kind="engagement",
+                             strict=False)  # a dust monitor's: no force
+    assert [column.name for column in meta.columns] == [
+        "date&time", "serial-no", "PM10", "last calibration"]
+    np.testing.assert_allclose(table["time"], [0.0, 60.0])
+    assert ("column 'last calibration' holds clock readings ('2019-06-11 14:16:04'...), "
+            "not numbers: not used as the force") in meta.warnings
+
+
 # a real PASCO Capstone export (Norwegian locale): the run label after each unit
 PASCO = "Time (s) Auto;Force (N) Run #1\n0,000;-7,10E-15\n0,050;1,25E+00\n0,100;2,50E+00\n"
 
