@@ -101,7 +101,7 @@ from pipeline.store.netcdf import (
     write_atomic,
     write_text_atomic,
 )
-from pipeline.tasks import Mapped
+from pipeline.tasks import Mapped, submit
 from pipeline.units import to_si
 from pipeline.wear_summary import wear_row, wear_summary
 
@@ -355,7 +355,7 @@ def _execute(sheet: RunSheet, plans: list[_Plan], output: Path, progress: Progre
     from distributed import as_completed
 
     shared = client.scatter(sheet, broadcast=True, hash=False) if plans else None
-    task = partial(client.submit, sheet=shared, output=output, pure=False)
+    task = partial(submit, client, sheet=shared, output=output)
     futures = {task(_process, plan, split=True): plan
                for plan in sorted(plans, key=lambda plan: plan.raw_bytes, reverse=True)}
     queue = as_completed(futures, loop=client.loop)  # the client need not be the default

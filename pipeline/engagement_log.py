@@ -68,6 +68,7 @@ from pipeline.fit.impact import (
     impact_result,
     plan_extraction,
 )
+from pipeline.tasks import submit as submit_task
 
 if TYPE_CHECKING:
     from distributed import Client, Future
@@ -355,7 +356,7 @@ def submit_analysis(job: LogJob, client: Client, priority: int = 0) -> Future:
     distributed.Future
         Of the :class:`LogAnalysis`.
     """
-    submit = partial(client.submit, priority=priority, pure=False)
+    submit = partial(submit_task, client, priority=priority)
     shared = client.scatter(job, hash=False)
     detection = submit(detect_step, shared, [submit(scan_step, shared, chunk)
                                              for chunk in job.chunks])

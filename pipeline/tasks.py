@@ -14,11 +14,12 @@ other works through its share.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 from uuid import uuid4
 
 if TYPE_CHECKING:
-    from distributed import Client
+    from distributed import Client, Future
 
 
 class Mapped:
@@ -49,9 +50,8 @@ class Mapped:
         self._client, self._futures = client, None
         if client is not None and self._items:
             bundle = client.scatter([shared], broadcast=True, hash=False)[0]
-            keys = [f"{function.__name__}-{uuid4().hex}" for _ in self._items]
-            self._futures = client.map(_call, self._items, function=function, shared=bundle,
-                                       key=keys)
+            self._futures = [_submit(client, _call, (item, function, bundle), {},
+                                     label=function.__name__) for item in self._items]
 
     def results(self) -> list:
         """The results, in the items' order (the first task's error is raised)."""
@@ -63,6 +63,84 @@ class Mapped:
 def _call(item: Any, function: Callable, shared: dict[str, Any]) -> Any:
     """``function(item, **shared)``: one task of :class:`Mapped` on a worker."""
     return function(item, **shared)
+
+
+@dataclass(frozen=True)
+class _Input:
+    """Where the result of another task goes in a pickled call: the `index`-th future
+    handed to dask beside it."""
+
+    index: int
+
+
+def submit(client: Client, function: Callable, *args: Any, priority: int = 0,
+           **kwargs: Any) -> Future:
+    """``client.submit(function, *args, **kwargs)``, the call pickled here, as bytes.
+
+    Futures among the arguments (alone, or in a list) stay dask's: the task waits
+    for them and gets their results in their place. A task's key is its function's
+    name and a unique suffix, and it is never taken for another with the same
+    arguments (``pure=False``).
+
+    Parameters
+    ----------
+    client : distributed.Client
+        The cluster to run the task on.
+    function : callable
+        A module-level function (the workers import its module).
+    *args, **kwargs
+        Its arguments.
+    priority : int
+        dask's priority of the task (higher first).
+
+    Examples
+    --------
+    >>> from distributed import Client
+    >>> with Client(processes=False, n_workers=1, dashboard_address=None) as client:
+    ...     total = submit(client, sum, [submit(client, abs, -2), 3])
+    ...     total.result()
+    5
+    """
+    return _submit(client, function, args, kwargs, priority=priority)
+
+
+def _submit(client: Client, function: Callable, args: Sequence, kwargs: dict[str, Any],
+            priority: int = 0, label: str | None = None) -> Future:
+    """:func:`submit`, the task's key named `label` (default: the function's name)."""
+    from distributed import Future
+    from distributed.protocol.pickle import dumps
+
+    inputs: list[Future] = []
+
+    def placed(value: Any) -> Any:
+        if isinstance(value, Future):
+            inputs.append(value)
+            return _Input(len(inputs) - 1)
+        if isinstance(value, list):
+            return [placed(item) for item in value]
+        return value
+
+    call = (function, [placed(value) for value in args],
+            {name: placed(value) for name, value in kwargs.items()})
+    return client.submit(_pickled_call, dumps(call), inputs, priority=priority, pure=False,
+                         key=f"{label or function.__name__}-{uuid4().hex}")
+
+
+def _pickled_call(call: bytes, results: list[Any]) -> Any:
+    """A task of :func:`submit` on a worker: the call unpickled, with `results` (those of
+    the futures it named) in their places."""
+
+    def filled(value: Any) -> Any:
+        if isinstance(value, _Input):
+            return results[value.index]
+        if isinstance(value, list):
+            return [filled(item) for item in value]
+        return value
+
+    from distributed.protocol.pickle import loads
+
+    function, args, kwargs = loads(call)
+    return function(*map(filled, args), **{name: filled(value) for name, value in kwargs.items()})
 
 
 def map_tasks(function: Callable, items: Sequence, client: Client | None = None) -> list:

@@ -11,7 +11,9 @@ from pipeline.runsheet import load_run_sheet
 
 PACKAGE = Path(__file__).parents[1] / "pipeline"
 
-#: Calls that would execute or unpickle data; none may appear in the package.
+#: Calls that would execute or unpickle data; none may appear in the package. (Tasks that
+#: the package's own processes send one another on a dask cluster are pickled by dask's
+#: serializer, :mod:`pipeline.tasks` too: bytes made by the package, never read from a file.)
 FORBIDDEN_CALLS = {"eval", "exec", "compile", "__import__"}
 FORBIDDEN_MODULES = {"pickle", "marshal", "shelve", "dill", "cloudpickle", "yaml"}
 

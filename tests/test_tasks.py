@@ -7,7 +7,7 @@ import time
 
 import pytest
 
-from pipeline.tasks import Mapped, map_tasks
+from pipeline.tasks import Mapped, map_tasks, submit
 
 distributed = pytest.importorskip("distributed")
 
@@ -85,3 +85,43 @@ def test_on_a_cluster_the_tasks_wait_on_the_scheduler_for_a_free_worker():
         finally:
             _RELEASE.set()
         assert mapped.results() == [value + 10 for value in range(20)]
+
+
+def _difference(first: int, second: int, *, scale: int = 1) -> int:
+    return (first - second) * scale
+
+
+def _scheduler_calls(dask_scheduler) -> list[tuple[str, list[type]]]:
+    """The function of every task the scheduler holds, and the types of its arguments."""
+    return [(task.run_spec.func.__name__, [type(argument) for argument in task.run_spec.args])
+            for task in dask_scheduler.tasks.values() if task.run_spec is not None]
+
+
+def test_submit_passes_results_of_other_tasks_in_their_places():
+    with distributed.Client(processes=False, n_workers=2, threads_per_worker=1,
+                            dashboard_address=None, set_as_default=False) as client:
+        seven, two = submit(client, abs, -7), submit(client, abs, 2)
+        assert submit(client, _difference, seven, 3, scale=two).result() == 8  # (7 - 3) * 2
+        assert submit(client, sum, [seven, two, 1]).result() == 10
+        assert submit(client, _difference, 5, second=seven, priority=3).result() == -2
+
+
+def test_the_scheduler_is_sent_bytes_not_the_functions_and_values_of_a_task():
+    # The scheduler unpickles what it is sent: a task naming the stages' functions would
+    # make it import them; a pickled call is only bytes and a list of other tasks.
+    with distributed.Client(processes=False, n_workers=1, threads_per_worker=1,
+                            dashboard_address=None, set_as_default=False) as client:
+        first = submit(client, _difference, 4, 1)
+        second = submit(client, _difference, first, 1)
+        assert second.result() == 2
+        calls = client.run_on_scheduler(_scheduler_calls)
+    assert len(calls) == 2
+    assert all(function == "_pickled_call" and arguments[0] is bytes
+               for function, arguments in calls)
+
+
+def test_submit_keeps_a_tasks_error():
+    with distributed.Client(processes=False, n_workers=1, threads_per_worker=1,
+                            dashboard_address=None, set_as_default=False) as client:
+        with pytest.raises(ZeroDivisionError):
+            submit(client, _inverse, 0).result()
