@@ -27,7 +27,7 @@ from typer.testing import CliRunner
 
 from pipeline.campaign import process_campaign
 from pipeline.cli import app
-from pipeline.cli.run import _dask_client
+from pipeline.cli._cluster import dask_client
 from pipeline.report.build import build_report
 from pipeline.store.netcdf import read_dataset
 
@@ -59,7 +59,7 @@ def client() -> Iterator:
     with pytest.MonkeyPatch.context() as patch:
         # an earlier cluster of the session leaves dask's defaults in os.environ
         patch.delenv("MALLOC_TRIM_THRESHOLD_", raising=False)
-        with _dask_client(1, None) as client:
+        with dask_client(1, None) as client:
             client.wait_for_workers(1)
             yield client
 
@@ -236,7 +236,7 @@ def test_a_dashboard_already_on_port_8787_gives_no_warning(recwarn):
     try:
         with pytest.MonkeyPatch.context() as patch:
             patch.delenv("MALLOC_TRIM_THRESHOLD_", raising=False)
-            with _dask_client(1, None) as client:
+            with dask_client(1, None) as client:
                 assert client.submit(sum, [1, 2]).result() == 3
     finally:
         busy.close()

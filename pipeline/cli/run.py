@@ -20,9 +20,11 @@ from typing import TYPE_CHECKING, Annotated
 import typer
 from rich.console import Console
 from rich.markup import escape
-from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
+from rich.text import Text
 
+from pipeline.cli._cluster import dask_client, drive_on_cluster
 from pipeline.cli._output import console, say
 from pipeline.cli._stages import load_stages
 from pipeline.errors import ChainbenchError
@@ -125,25 +127,56 @@ def _output_folder(sheet: RunSheet, output_root: Path | None) -> Path | None:
     return None if output_root is None else Path(output_root) / sheet.campaign.id
 
 
+class _Progress:
+    """Where a campaign's progress goes: a rich bar on a terminal, plain lines otherwise.
+
+    The processing calls :meth:`runs` once, then :meth:`step` at each stage of each
+    run; on a cluster, the driver's calls arrive here as dask events
+    (:func:`pipeline.cli._cluster.drive_on_cluster`).
+    """
+
+    def __init__(self, bar: Progress | None) -> None:
+        self._bar, self._seen = bar, set()
+        self._task = bar.add_task("processing", total=None) if bar is not None else None
+
+    def runs(self, total: int) -> None:
+        """The campaign has `total` runs."""
+        if self._bar is not None:
+            self._bar.update(self._task, total=total)
+
+    def step(self, run_id: str, stage: str) -> None:
+        """Run `run_id` reached `stage`."""
+        if self._bar is None:
+            print(f"  {run_id}: {stage}", flush=True)
+            return
+        if run_id not in self._seen and self._seen:
+            self._bar.advance(self._task)
+        self._seen.add(run_id)
+        self._bar.update(self._task, description=escape(f"{run_id}: {stage}"))
+
+
+class _Silent:
+    """No progress shown (``--json``)."""
+
+    def runs(self, total: int) -> None:
+        """Nothing to show."""
+
+    def step(self, run_id: str, stage: str) -> None:
+        """Nothing to show."""
+
+
 @contextmanager
-def _progress_reporter(total_runs: int):
-    """A ``progress(run_id, stage)`` callback: a rich bar on a terminal, plain lines otherwise."""
-    if not console.is_terminal:
-        yield lambda run_id, stage: print(f"  {run_id}: {stage}", flush=True)
-        return
-    columns = (TextColumn("{task.description}"), BarColumn(), TextColumn("{task.completed}/"
-               "{task.total} runs"), TimeElapsedColumn())
-    with Progress(*columns, console=console, transient=True) as bar:
-        task = bar.add_task("processing", total=total_runs)
-        seen: set[str] = set()
-
-        def step(run_id: str, stage: str) -> None:
-            if run_id not in seen and seen:
-                bar.advance(task)
-            seen.add(run_id)
-            bar.update(task, description=escape(f"{run_id}: {stage}"))
-
-        yield step
+def _progress_reporter(shown: bool = True):
+    """A :class:`_Progress` for this console (or :class:`_Silent` when not `shown`)."""
+    if not shown:
+        yield _Silent()
+    elif not console.is_terminal:
+        yield _Progress(None)
+    else:
+        columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
+                   TextColumn("runs"), TimeElapsedColumn())
+        with Progress(*columns, console=console, transient=True) as bar:
+            yield _Progress(bar)
 
 
 def _fmt(value: float, scale: float = 1.0, digits: int = 4) -> str:
@@ -426,60 +459,6 @@ def _result_json(result: CampaignResult) -> dict:
     }
 
 
-#: The environment of a local cluster's worker processes, set before each one starts (as
-#: dask's ``distributed.nanny.pre-spawn-environ``): one thread for the numerical libraries
-#: (BLAS, OpenMP, pyarrow), the workers being the parallelism, and no
-#: ``MALLOC_TRIM_THRESHOLD_``: dask's default sets it, which turns off glibc's adaptive
-#: mmap threshold, so that every array over 128 KiB is mapped and zeroed afresh, and a run
-#: takes twice its serial time (docs/quality.md, scale-out).
-WORKER_ENVIRONMENT = {"OMP_NUM_THREADS": 1, "OPENBLAS_NUM_THREADS": 1, "MKL_NUM_THREADS": 1}
-#: dask settings of a local cluster: its workers' environment (above), and no statistical
-#: profiler in the workers (it samples every running task's stack every 10 ms, 3 to 4 % of
-#: a run's CPU time, for a dashboard the command line does not serve).
-CLUSTER_CONFIG = {"distributed.nanny.pre-spawn-environ": WORKER_ENVIRONMENT,
-                  "distributed.worker.profile.enabled": False}
-#: What each worker sets as it starts: a dask computation inside a task runs in the task's
-#: thread. xarray writing a run file then takes this process's netCDF lock, as in a serial
-#: run, and not a lock on the cluster (two round trips to the scheduler per variable).
-WORKER_SETTINGS = {"DASK_SCHEDULER": "synchronous"}
-#: What each worker of a local cluster imports once, as it starts: the stages of a run,
-#: moved out of the garbage collector's scans (:mod:`pipeline.cli._worker`).
-WORKER_PRELOAD = ["pipeline.cli._worker"]
-
-
-@contextmanager
-def _dask_client(workers: int | None, scheduler: str | None):
-    """A dask.distributed client: a local cluster of `workers` processes, or `scheduler`'s.
-
-    The local cluster's workers start in the background, importing the stages
-    (:data:`WORKER_PRELOAD`), while this process loads its own and plans the
-    runs; the runs submitted meanwhile wait for them. The client is not made
-    dask's default, so that xarray in this process writes the summary under
-    this process's lock, not under a lock on the cluster.
-    """
-    if workers is None and scheduler is None:
-        yield None
-        return
-    if workers is not None and scheduler is not None:
-        raise typer.BadParameter("give --workers or --scheduler, not both")
-    import dask
-    from distributed import Client, LocalCluster
-
-    if scheduler is not None:
-        with Client(scheduler, set_as_default=False) as client:
-            yield client
-        return
-    with (dask.config.set(CLUSTER_CONFIG),
-          LocalCluster(n_workers=0, threads_per_worker=1, processes=True,
-                       # no dashboard; the scheduler's own HTTP server on a free port, so
-                       # that a dask dashboard already on 8787 gives no warning
-                       dashboard_address=":0", scheduler_kwargs={"dashboard": False},
-                       preload=WORKER_PRELOAD, env=WORKER_SETTINGS) as cluster,
-          Client(cluster, set_as_default=False) as client):
-        cluster.scale(workers)  # returns at once: the workers start in the background
-        yield client
-
-
 def run_command(
     campaigns: CampaignArgs = None,
     output_root: OutputRoot = None,
@@ -516,9 +495,9 @@ def run_command(
                     _print_rerun(rerun)
                 continue
             if not started:  # the cluster starts when a campaign has something to compute
-                client, started = stack.enter_context(_dask_client(workers, scheduler)), True
+                client, started = stack.enter_context(dask_client(workers, scheduler)), True
             try:
-                result = _process(folder, output_root, force, rehash, debug, client, as_json)
+                outcome = _process(folder, output_root, force, rehash, debug, client, as_json)
             except ChainbenchError as error:
                 if debug:
                     raise
@@ -526,36 +505,92 @@ def run_command(
                 say("error", "red", str(error), stderr=as_json)
                 documents.append({"campaign": str(folder), "error": str(error)})
                 continue
-            all_ok &= result.ok
+            all_ok &= outcome.ok
             if as_json:
-                documents.append(_result_json(result))
+                documents.append(outcome.document)
             else:
-                _print_result(result)
+                console.print(Text.from_ansi(outcome.text), soft_wrap=True, end="")
     if as_json:
         print(json.dumps(documents, indent=2))
     raise typer.Exit(0 if all_ok else 1)
 
 
+@dataclasses.dataclass(frozen=True)
+class _Screen:
+    """What the driver of a campaign needs to know of this command's console to render
+    the text it prints: its width, its encoding, and whether it shows colours."""
+
+    width: int
+    encoding: str
+    coloured: bool
+
+    @classmethod
+    def of(cls, target: Console) -> _Screen:
+        return cls(target.width, target.encoding, target.is_terminal)
+
+    def recorder(self) -> Console:
+        """A console that keeps what is printed to it, rendered as for this screen."""
+        return Console(file=_Recording(self.encoding), width=self.width,
+                       color_system="truecolor" if self.coloured else None,
+                       force_terminal=self.coloured, legacy_windows=False)
+
+
+class _Recording(io.StringIO):
+    """Text kept in memory, as if written to a stream of `encoding` (rich draws a
+    table's lines in ASCII for a stream that cannot show others)."""
+
+    def __init__(self, encoding: str) -> None:
+        super().__init__()
+        self._encoding = encoding
+
+    @property
+    def encoding(self) -> str:
+        return self._encoding
+
+
+@dataclasses.dataclass(frozen=True)
+class _Outcome:
+    """A processed campaign, as the command reports it."""
+
+    ok: bool
+    text: str  #: what it prints (ANSI colours for a terminal)
+    document: dict  #: its ``--json`` document
+
+
 def _process(folder: Path, output_root: Path | None, force: bool, rehash: bool, debug: bool,
-             client, as_json: bool) -> CampaignResult:
-    """Process one campaign; then record what a re-run with nothing changed prints."""
+             client, as_json: bool) -> _Outcome:
+    """Process one campaign here, or on `client`'s cluster as a task
+    (:func:`pipeline.cli._cluster.drive_on_cluster`), showing its progress here."""
+    arguments = (folder, output_root, force, rehash, debug, _Screen.of(console))
+    with _progress_reporter(shown=not as_json) as progress:
+        if client is None:
+            return _processed(*arguments, listener=progress)
+        return drive_on_cluster(client, _processed, *arguments, listener=progress)
+
+
+def _processed(folder: Path, output_root: Path | None, force: bool, rehash: bool, debug: bool,
+               screen: _Screen, *, listener, client=None) -> _Outcome:
+    """Process one campaign, telling `listener` its progress; record what a re-run with
+    nothing changed prints; what to report, rendered for `screen`."""
     process_campaign = load_stages().process_campaign  # before the run sheet's imports
     from pipeline.runsheet import load_run_sheet
 
     sheet = load_run_sheet(folder)
-    with _progress_reporter(len(sheet.runs)) as progress:
-        result = process_campaign(
-            folder, _output_folder(sheet, output_root), progress=None if as_json else progress,
-            debug=debug, force=force, client=client, rehash=rehash)
+    listener.runs(len(sheet.runs))
+    result = process_campaign(folder, _output_folder(sheet, output_root),
+                              progress=listener.step, debug=debug, force=force, client=client,
+                              rehash=rehash)
     if not result.failures and result.report is not None:
         again = dataclasses.replace(result, redone=[], reused=list(result.run_files),
                                     removed=[])
-        recorder = Console(file=io.StringIO(), width=console.width, color_system=None,
+        recorder = Console(file=io.StringIO(), width=screen.width, color_system=None,
                            force_terminal=False, highlight=False)
         _print_result(again, out=recorder)
         write_rerun(result.output, sheet.path, result.inputs, recorder.file.getvalue(),
                     _result_json(again), 0 if again.ok else 1)
-    return result
+    shown = screen.recorder()
+    _print_result(result, out=shown)
+    return _Outcome(result.ok, shown.file.getvalue(), _result_json(result))
 
 
 def _print_rerun(rerun: Rerun) -> None:
@@ -584,8 +619,9 @@ def _validate_campaign(folder: Path, output_root: Path | None) -> bool:
 
     try:
         sheet = load_run_sheet(folder)
-        with _progress_reporter(len(sheet.runs)) as progress:
-            result = check_campaign(folder, _output_folder(sheet, output_root), progress)
+        with _progress_reporter() as progress:
+            progress.runs(len(sheet.runs))
+            result = check_campaign(folder, _output_folder(sheet, output_root), progress.step)
     except ChainbenchError as error:
         say("error", "red", str(error))
         return False
