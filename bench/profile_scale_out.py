@@ -1,39 +1,35 @@
 """Profile: where the wall time of ``chainbench run --workers N`` goes, against a serial run.
 
-Each mode runs ``process_campaign`` with ``force=True`` into a fresh output
-folder, in a fresh process, the modes interleaved round by round (so that load
-from other processes hits them alike), and is cut into phases:
+Each mode processes the campaign as the command does (:func:`pipeline.cli.run._process`,
+``--force``) into a fresh output folder, in a fresh process, the modes interleaved
+round by round (so that load from other processes hits them alike), and is cut
+into phases:
 
-cluster
-    starting the CLI's local cluster (:func:`pipeline.cli.run._dask_client`, the
-    same settings) up to a connected client, its workers starting in the
-    background;
-imports
-    the stages (:mod:`pipeline.campaign`), loaded as ``chainbench run`` loads
-    them (:func:`pipeline.cli._stages.load_stages`), after the cluster's start
-    as there, so that they compete with the workers' start-up as there;
-plan
-    ``process_campaign`` up to the runs: run sheet, raw-file hashes, input keys;
+start
+    the command's process up to a connected client of its local cluster
+    (:func:`pipeline.cli._cluster.dask_client`, the same settings), the workers
+    starting in the background; for ``serial``, nothing;
+ready
+    until the driver task starts on the first worker up (its imports done); for
+    ``serial``, the stages' import in this process;
 runs
-    the runs (``_execute``), with, on a cluster, when the first task started
-    computing, the tasks' compute time per worker and their sum;
-tail
-    after the last run: read-back, summary and tables (``summary``), then the
-    report (``report``);
+    from then until the last run's task ends (the driver plans and submits them);
+report
+    the summary, the report's tasks and the printed text, until the driver ends;
 close
     shutting the cluster down;
 
-and the CPU time (user, system) of the process and of its worker processes, with
-the share of the machine's cores they kept busy over the whole run.
-A mode is ``serial`` (no cluster) or a number of workers; ``ENV=VALUE,...``
-after a colon runs it with those environment variables (e.g. the workers'
-environment for a serial baseline with the same settings, or ``PYTHONPATH`` of
-another copy of the package to compare versions); ``--workers 2`` is compared
-with ``--workers 1`` of the same settings::
+with, on a cluster, each worker's seconds spent in tasks other than the driver
+and the share of the machine's cores the whole run kept busy (CPU time of this
+process and of its workers), and whether this process loaded the stages (it
+must not: the scheduler lives here, and the workers need both cores). A mode is
+``serial`` (no cluster) or a number of workers; ``ENV=VALUE,...`` after a colon
+runs it with those environment variables (e.g. ``PYTHONPATH`` of another copy
+of the package, to compare versions)::
 
     .venv/bin/python bench/profile_scale_out.py /tmp/large/bench-engagement
     .venv/bin/python bench/profile_scale_out.py /tmp/large/bench-engagement --repeat 3 \\
-        --modes serial serial:OMP_NUM_THREADS=1,MALLOC_TRIM_THRESHOLD_=65536 1 2
+        --modes 1 2 1:PYTHONPATH=/tmp/before 2:PYTHONPATH=/tmp/before
 """
 
 from __future__ import annotations
@@ -45,83 +41,83 @@ import subprocess
 import sys
 import tempfile
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-#: The environment variables of a worker that the profile reports.
-WORKER_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS",
-                    "MALLOC_TRIM_THRESHOLD_")
 #: Phases printed, in order.
-PHASES = ("cluster", "imports", "plan", "runs", "summary", "report", "close", "total")
+PHASES = ("start", "ready", "runs", "report", "close", "total")
+#: Modules whose presence in the command's process says it loaded the stages.
+STAGE_MODULES = ("pipeline.campaign", "pandas", "scipy", "xarray", "matplotlib")
+#: Tasks that process runs (the rest, after them, are the report's).
+RUN_TASKS = ("_process-", "_finish_long_log-", "scan_step-", "detect_step-",
+             "ringing_step-", "fit_step-", "finish_step-")
 
 
-def _timed(function: Callable[..., Any], record: dict[str, float]) -> Callable[..., Any]:
-    """`function`, recording the perf_counter at its start and end in `record`."""
+class _Quiet:
+    """A listener that shows nothing."""
 
-    def timed(*args: Any, **kwargs: Any) -> Any:
-        record["start"] = time.perf_counter()
-        try:
-            return function(*args, **kwargs)
-        finally:
-            record["end"] = time.perf_counter()
+    def runs(self, total: int) -> None:
+        """Nothing."""
 
-    return timed
+    def step(self, run_id: str, stage: str) -> None:
+        """Nothing."""
 
 
-def _worker_environment() -> dict[str, str | None]:
-    """The variables of :data:`WORKER_VARIABLES` in this process (run on a worker)."""
-    return {name: os.environ.get(name) for name in WORKER_VARIABLES}
-
-
-def _tasks(stream: list[dict[str, Any]], origin: float) -> dict[str, Any]:
-    """First compute start [s after `origin`, wall clock] and compute seconds per worker."""
-    computes = [(task["worker"], part) for task in stream for part in task["startstops"]
-                if part["action"] == "compute"]
-    per_worker: dict[str, float] = {}
-    for worker, part in computes:
-        per_worker[worker] = per_worker.get(worker, 0.0) + part["stop"] - part["start"]
-    return {"first_task": min(part["start"] for _, part in computes) - origin,
-            "compute": sorted(per_worker.values(), reverse=True), "tasks": len(stream)}
+def _cluster_phases(stream: list[dict[str, Any]], origin: float) -> dict[str, Any]:
+    """From dask's task stream: when the driver started and ended, when the last run task
+    ended [s after `origin`, wall clock], and each worker's seconds in other tasks."""
+    computes = [(str(task["key"]), task["worker"], part) for task in stream
+                for part in task["startstops"] if part["action"] == "compute"]
+    driver = next(part for key, _, part in computes if key.startswith("_processed-"))
+    runs_end = max(part["stop"] for key, _, part in computes if key.startswith(RUN_TASKS))
+    busy: dict[str, float] = {}
+    for key, worker, part in computes:
+        if not key.startswith("_processed-"):
+            busy[worker] = busy.get(worker, 0.0) + part["stop"] - part["start"]
+    return {"driver_start": driver["start"] - origin, "runs_end": runs_end - origin,
+            "driver_end": driver["stop"] - origin, "busy": sorted(busy.values(), reverse=True)}
 
 
 def profile(mode: str, campaign: str, output: str) -> dict[str, Any]:
     """Process `campaign` into `output` as `mode` (``serial`` or workers), phases timed."""
-    start = time.perf_counter()
-    from pipeline.cli._stages import load_stages
-    from pipeline.cli.run import _dask_client
+    start, wall = time.perf_counter(), time.time()
+    from pipeline.cli._cluster import dask_client
+    from pipeline.cli.run import _process
 
-    execute: dict[str, float] = {}
-    report: dict[str, float] = {}
     figures: dict[str, Any] = {}
-    with _dask_client(None if mode == "serial" else int(mode), None) as client:
-        phases = {"cluster": time.perf_counter() - start}
-        flow = load_stages()
-        phases["imports"] = time.perf_counter() - start - phases["cluster"]
-        flow._execute = _timed(flow._execute, execute)
-        flow.build_report = _timed(flow.build_report, report)
-        if client is not None:
+    with dask_client(None if mode == "serial" else int(mode), None) as client:
+        began = time.perf_counter() - start
+        if client is None:
+            from pipeline.cli._stages import load_stages
+
+            load_stages()
+            ready = time.perf_counter() - start
+            outcome = _process(Path(campaign), Path(output), True, False, False, None, True)
+            ended = time.perf_counter() - start
+            phases = {"start": began, "ready": ready - began, "runs": float("nan"),
+                      "report": float("nan")}
+        else:
             from distributed import get_task_stream
 
+            loaded = [name for name in STAGE_MODULES if name in sys.modules]
             with get_task_stream(client) as stream:
-                began, wall = time.perf_counter(), time.time()
-                result = flow.process_campaign(campaign, output, force=True, client=client)
-            figures = _tasks(stream.data, wall + execute["start"] - began)
-            figures["worker_env"] = next(iter(client.run(_worker_environment).values()))
-        else:
-            began = time.perf_counter()
-            result = flow.process_campaign(campaign, output, force=True)
-        finished = time.perf_counter()
-    phases.update(plan=execute["start"] - began, runs=execute["end"] - execute["start"],
-                  summary=report["start"] - execute["end"],
-                  report=report["end"] - report["start"], close=time.perf_counter() - finished,
-                  total=time.perf_counter() - start)
+                outcome = _process(Path(campaign), Path(output), True, False, False, client,
+                                   True)
+            ended = time.perf_counter() - start
+            figures = _cluster_phases(stream.data, wall)
+            phases = {"start": began, "ready": figures["driver_start"] - began,
+                      "runs": figures["runs_end"] - figures["driver_start"],
+                      "report": figures["driver_end"] - figures["runs_end"]}
+            figures["loaded"] = loaded + [name for name in STAGE_MODULES
+                                          if name in sys.modules and name not in loaded]
+    phases.update(close=time.perf_counter() - start - ended, total=time.perf_counter() - start)
     own = os.times()
     cpu = {"user": own.user, "sys": own.system, "workers_user": own.children_user,
            "workers_sys": own.children_system}
+    document = outcome.document
     return {"mode": mode, "phases": phases, "cpu": cpu, **figures,
-            "runs_done": len(result.redone), "failures": len(result.failures),
-            "report_error": result.report_error}
+            "failures": document["failed"], "report": document["report"]}
 
 
 def _environment(mode: str) -> tuple[str, dict[str, str]]:
@@ -150,12 +146,11 @@ def describe(figures: dict[str, Any]) -> str:
     line = (f"{figures['mode']:>12}: {phases} | cpu user {cpu['user']:.1f} sys "
             f"{cpu['sys']:.1f}, workers user {cpu['workers_user']:.1f} sys "
             f"{cpu['workers_sys']:.1f}, cores busy {busy:.0%}")
-    if "compute" in figures:
-        line += (f" | first task at {figures['first_task']:.2f} s, compute per worker "
-                 + " ".join(f"{seconds:.1f}" for seconds in figures["compute"])
-                 + f", worker env {figures['worker_env']}")
-    if figures["failures"] or figures["report_error"]:
-        line += f" | {figures['failures']} runs FAILED, report: {figures['report_error']}"
+    if "busy" in figures:
+        line += (" | in tasks per worker " + " ".join(f"{s:.2f}" for s in figures["busy"])
+                 + f" s; stages in this process: {', '.join(figures['loaded']) or 'none'}")
+    if figures["failures"] or figures["report"] is None:
+        line += f" | {figures['failures']} runs FAILED, report: {figures['report']}"
     return line
 
 
@@ -197,7 +192,8 @@ def main() -> None:
         if name == "2" and one is not None:
             print(f"--workers 2 against --workers 1 {settings} (fastest of each): total "
                   f"{one['phases']['total'] / best[mode]['phases']['total']:.2f}x, runs "
-                  f"{one['phases']['runs'] / best[mode]['phases']['runs']:.2f}x")
+                  f"{one['phases']['runs'] / best[mode]['phases']['runs']:.2f}x, report "
+                  f"{one['phases']['report'] / best[mode]['phases']['report']:.2f}x")
 
 
 if __name__ == "__main__":
