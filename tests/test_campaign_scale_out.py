@@ -28,8 +28,10 @@ from typer.testing import CliRunner
 from pipeline.campaign import process_campaign
 from pipeline.cli import app
 from pipeline.cli._cluster import dask_client
+from pipeline.errors import EmptyFileError
 from pipeline.report.build import build_report
 from pipeline.store.netcdf import read_dataset
+from pipeline.tasks import submit
 
 #: The environment variables the workers are started with, and their expected values.
 WORKER_ENVIRONMENT = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1",
@@ -81,6 +83,20 @@ def test_workers_start_with_one_thread_and_the_stages_loaded(client):
     assert stages_loaded
     assert frozen > 100_000  # the stages' objects, out of the collector's passes
     assert profiling is False
+
+
+def _unreadable(path: str) -> None:
+    raise EmptyFileError("no data rows", file=path, hint="export the test again")
+
+
+def test_a_failed_task_is_the_commands_to_report_not_the_workers_to_log(client):
+    # The command reports a run's or a campaign's error on its own line; the worker's own
+    # record of the failure (its traceback) would otherwise be printed over the output.
+    with pytest.raises(EmptyFileError):
+        submit(client, _unreadable, "W16-A.csv").result()
+    logged = [message for records in client.get_worker_logs().values()
+              for _, message in records]
+    assert not [message for message in logged if "Compute Failed" in message]
 
 
 @pytest.fixture(scope="module")
