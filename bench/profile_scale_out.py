@@ -54,16 +54,6 @@ RUN_TASKS = ("_process-", "_finish_long_log-", "scan_step-", "detect_step-",
              "ringing_step-", "fit_step-", "finish_step-")
 
 
-class _Quiet:
-    """A listener that shows nothing."""
-
-    def runs(self, total: int) -> None:
-        """Nothing."""
-
-    def step(self, run_id: str, stage: str) -> None:
-        """Nothing."""
-
-
 def _cluster_phases(stream: list[dict[str, Any]], origin: float) -> dict[str, Any]:
     """From dask's task stream: when the driver started and ended, when the last run task
     ended [s after `origin`, wall clock], and each worker's seconds in other tasks."""

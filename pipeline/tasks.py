@@ -50,8 +50,10 @@ class Mapped:
         self._client, self._futures = client, None
         if client is not None and self._items:
             bundle = client.scatter([shared], broadcast=True, hash=False)[0]
-            self._futures = [_submit(client, _call, (item, function, bundle), {},
-                                     label=function.__name__) for item in self._items]
+            calls = [_pickled(_call, (item, function, bundle), {}) for item in self._items]
+            self._futures = client.map(
+                _pickled_call, [call for call, _ in calls], [inputs for _, inputs in calls],
+                key=[f"{function.__name__}-{uuid4().hex}" for _ in calls], pure=False)
 
     def results(self) -> list:
         """The results, in the items' order (the first task's error is raised)."""
@@ -101,12 +103,15 @@ def submit(client: Client, function: Callable, *args: Any, priority: int = 0,
     ...     total.result()
     5
     """
-    return _submit(client, function, args, kwargs, priority=priority)
+    call, inputs = _pickled(function, args, kwargs)
+    return client.submit(_pickled_call, call, inputs, priority=priority, pure=False,
+                         key=f"{function.__name__}-{uuid4().hex}")
 
 
-def _submit(client: Client, function: Callable, args: Sequence, kwargs: dict[str, Any],
-            priority: int = 0, label: str | None = None) -> Future:
-    """:func:`submit`, the task's key named `label` (default: the function's name)."""
+def _pickled(function: Callable, args: Sequence, kwargs: dict[str, Any]
+             ) -> tuple[bytes, list[Future]]:
+    """``function(*args, **kwargs)`` pickled, each future among the arguments (alone, or in
+    a list) replaced by its place in the list of futures returned beside it."""
     from distributed import Future
     from distributed.protocol.pickle import dumps
 
@@ -122,8 +127,7 @@ def _submit(client: Client, function: Callable, args: Sequence, kwargs: dict[str
 
     call = (function, [placed(value) for value in args],
             {name: placed(value) for name, value in kwargs.items()})
-    return client.submit(_pickled_call, dumps(call), inputs, priority=priority, pure=False,
-                         key=f"{label or function.__name__}-{uuid4().hex}")
+    return dumps(call), inputs
 
 
 def _pickled_call(call: bytes, results: list[Any]) -> Any:
