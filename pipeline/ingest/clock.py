@@ -26,6 +26,11 @@ log counts from the same origin. Nothing is guessed:
   ``21.100``: 99 ms, then 100 ms), is read as milliseconds, with a note, when the
   head of the column shows it: within one second a fraction grows by a digit
   while its decimal value drops, and every fraction has at most three digits;
+* a clock reading in whole seconds followed by a column named ``ms`` or ``us``
+  that counts the milliseconds or microseconds within the second (a Graphtec
+  midi logger's ``Date&Time,ms`` or ``Time,us``) has that count added, with a
+  note (:func:`fraction_column`): only when every count in the head is a whole
+  number below one second;
 * a time of day that passes midnight steps back by a day: that is reported as
   a time step back (:mod:`pipeline.ingest.canonical`), not repaired. A
   date-time carries its date, so it simply goes on counting.
@@ -36,6 +41,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from functools import cached_property
+from typing import NamedTuple
 
 import numpy as np
 import pyarrow as pa
@@ -78,6 +84,10 @@ _ARROW_TYPES = {"time of day": pa.time64("ns"), "date and time": pa.timestamp("n
                 "minutes and seconds": pa.timestamp("ns")}
 #: Nanoseconds per second.
 _NS = 1_000_000_000
+#: Names of a column counting the fraction of a second beside a clock column, and the
+#: seconds one count stands for.
+_FRACTION_NAMES = {"ms": 1e-3, "msec": 1e-3, "us": 1e-6, "usec": 1e-6, "µs": 1e-6, "μs": 1e-6}
+_WHOLE_COUNT = re.compile(r" *\+?\d+(?:\.0+)? *")  # "250.0": a spreadsheet's number
 #: A time of day or date and time split at its fraction of a second.
 _FRACTION = re.compile(r" *(?P<whole>.*\d:\d{2})[.,](?P<fraction>\d+) *")
 #: How fractions of one and two digits are zero-padded to milliseconds (RE2 rewrites).
@@ -110,6 +120,15 @@ def looks_like_clock(text: str) -> bool:
     return _CLOCK_LIKE.search(text) is not None
 
 
+class Fraction(NamedTuple):
+    """A column counting the fraction of a second of the clock column before it."""
+
+    column: int  # its index among the table's fields
+    seconds: float  # seconds per count (1e-3 for milliseconds)
+    first: float  # the first data row's count: the origin, with the clock's first reading
+    name: str  # the column's name, for the note
+
+
 @dataclass(frozen=True)
 class ClockColumn:
     """A column of clock readings: their kind and the first data row's reading.
@@ -125,11 +144,15 @@ class ClockColumn:
         Where the fraction of a second is milliseconds written without zero padding,
         the two readings that show it (``"'21.99' then '21.100' (line 81)"``): see
         :func:`unpadded_milliseconds`.
+    fraction : Fraction or None
+        The column beside it that counts the fraction of a second, if the readings are
+        whole seconds (see :func:`fraction_column`).
     """
 
     kind: str
     first: str
     unpadded: str | None = None
+    fraction: Fraction | None = None
 
     @property
     def arrow_type(self) -> pa.DataType:
@@ -150,6 +173,15 @@ class ClockColumn:
         :attr:`first`."""
         return self._after_first(pc.cast(pc.cast(readings, _ARROW_TYPES[self.kind]),
                                          pa.int64()))
+
+    def with_fraction(self, seconds: pa.ChunkedArray, counts: pa.ChunkedArray | None
+                      ) -> pa.ChunkedArray:
+        """`seconds` (:meth:`seconds`) plus the fraction of a second in `counts`, the cells
+        of :attr:`fraction`'s column, after the first row's (unchanged without one)."""
+        if self.fraction is None or counts is None:
+            return seconds
+        fraction = pc.subtract(pc.cast(counts, pa.float64()), self.fraction.first)
+        return pc.add(seconds, pc.multiply(fraction, self.fraction.seconds))
 
     def seconds_of_texts(self, texts: list[str | None]) -> np.ndarray:
         """Cells written as text (a spreadsheet's), as float64 seconds after :attr:`first`;
@@ -209,7 +241,42 @@ class ClockColumn:
         if self.unpadded is not None:
             note += (f"; the fraction of a second counts milliseconds without zero padding "
                      f"({self.unpadded}): read as milliseconds")
+        if self.fraction is not None:
+            unit = "milliseconds" if self.fraction.seconds == 1e-3 else "microseconds"
+            note += (f", plus the {unit} within the second that column "
+                     f"{self.fraction.name!r} counts")
         return note
+
+
+def fraction_column(first: str, index: int, names: list[str], rows: list[list[str]]
+                    ) -> Fraction | None:
+    """The column after clock column `index` that counts its fraction of a second, or None.
+
+    A logger that stamps its rows to the whole second may count the milliseconds
+    (or microseconds) within the second in the next column (Graphtec's
+    ``Date&Time,ms``; ``Time,us``). That column is taken as the fraction only when
+    its name says so (:data:`_FRACTION_NAMES`), the clock's first reading `first`
+    has no fraction of its own and every count in `rows` (the head's data rows)
+    is a whole number below one second.
+
+    Examples
+    --------
+    >>> rows = [["1", "2024/03/05 14:03:27", "0"], ["2", "2024/03/05 14:03:27", "500"]]
+    >>> fraction_column(rows[0][1], 1, ["No.", "Date&Time", "ms"], rows)
+    Fraction(column=2, seconds=0.001, first=0.0, name='ms')
+    >>> fraction_column(rows[0][1], 1, ["No.", "Date&Time", "force"], rows) is None
+    True
+    """
+    column = index + 1
+    if column >= len(names) or _FRACTION.fullmatch(first) is not None:
+        return None
+    seconds = _FRACTION_NAMES.get(names[column].strip().lower())
+    counts = [row[column] if column < len(row) else "" for row in rows]
+    if (seconds is None or not counts or not counts[0].strip()
+            or not all(_WHOLE_COUNT.fullmatch(count) and float(count) * seconds < 1
+                       for count in counts if count.strip())):
+        return None
+    return Fraction(column, seconds, float(counts[0]), names[column].strip())
 
 
 def unpadded_milliseconds(cells: list[str], first_line: int) -> str | None:

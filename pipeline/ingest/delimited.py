@@ -290,6 +290,7 @@ def text_header(
     candidates, texts = find_candidates(names, units, columns, file=head.name,
                                         header_line=names_line(spec)).without(spec.texts)
     candidates, stamps = candidates.without(frozenset(spec.clocks), but="time")
+    candidates, _ = candidates.without(spec.fractions)
     first = split_fields(head.lines[spec.data_index], spec.delimiter)
     meta.warnings += [f"column {display_name(names, index)!r} holds {what} "
                       f"({first[index].strip()!r}...), not numbers: not used as the {role}"

@@ -31,6 +31,7 @@ from pipeline.errors import EmptyFileError, EncodingError, LayoutError
 from pipeline.ingest.clock import (
     ClockColumn,
     clock_kind,
+    fraction_column,
     looks_like_clock,
     unpadded_milliseconds,
 )
@@ -198,6 +199,13 @@ class TableSpec:
     results: tuple[int, int] | None = None
     texts: frozenset[int] = frozenset()
     notes: tuple[str, ...] = ()
+
+    @property
+    def fractions(self) -> frozenset[int]:
+        """The columns counting the fraction of a second of a clock column (:attr:`clocks`):
+        part of the time, not a quantity of their own."""
+        return frozenset(clock.fraction.column for clock in self.clocks.values()
+                         if clock.fraction is not None)
 
     def results_warning(self) -> list[str]:
         """The warnings of the header's reading: the results tables passed over, the
@@ -562,7 +570,8 @@ def find_table(
                  for row, line in zip(rows, lines, strict=False)]
         complete = limit >= len(lines)
         data = _first_data_row(rows, kinds, width, complete=complete)
-        found = None if data is None else _past_results(rows, kinds, width, data, complete)
+        found = (None if data is None
+                 else _past_results(rows, kinds, width, data, complete, decimal))
         if found is not None:
             data, results = found
             break
@@ -599,7 +608,7 @@ def find_table(
         units_cells
         and any(not (is_number(cell, decimal) or is_missing(cell)) for cell in rows[above - 1])
         and _filled_width(units_cells) <= width  # a trailing delimiter adds a blank field
-        and _units_row(units_cells, rows[data])
+        and _units_row(units_cells, rows[data], decimal)
     ):  # numbers among the names over a units row (sensors named by serial number, an
         # oscilloscope's channels 1 and 2: "x-axis,1,2") do not make the names row data
         if units_cells is not rows[above]:
@@ -654,13 +663,14 @@ def find_table(
     clocks = {} if pairs else {
         index: ClockColumn(kind, cell, None if kind == "minutes and seconds" else
                            unpadded_milliseconds([row[index] if index < len(row) else ""
-                                                  for row in rows[data:]], data + 1))
+                                                  for row in rows[data:]], data + 1),
+                           fraction_column(cell, index, names, rows[data:]))
         for index, cell in enumerate(rows[data][:columns]) if (kind := clock_kind(cell))}
     if units_index is not None:
         for index, cell in enumerate(units_cells[:columns]):
             unit = cell.strip().strip("()[]<>").strip()
             units[index] = (None if unit.lower() in NO_UNIT_CELLS or is_sample_interval(unit)
-                            else unit or None)
+                            or _over_text(rows[data], index, decimal) else unit or None)
     return TableSpec(
         delimiter=delimiter,
         decimal="," if pairs else decimal,
@@ -723,7 +733,7 @@ def _text_columns(rows: list[list[str]], kinds: list[str], columns: int, decimal
 
 
 def _past_results(rows: list[list[str]], kinds: list[str], width: int, data: int,
-                  complete: bool) -> tuple[int, tuple[int, int] | None] | None:
+                  complete: bool, decimal: str) -> tuple[int, tuple[int, int] | None] | None:
     """The first data row past any results tables above the data, and the rows (first,
     past the last) of those tables; None when the rows so far do not tell.
 
@@ -750,19 +760,20 @@ def _past_results(rows: list[list[str]], kinds: list[str], width: int, data: int
                     len(kinds))
         longer = (stop == len(kinds) and not complete
                   or sum(kind != "blank" for kind in kinds[later:stop]) > count)
-        if not longer or rows[_header_top(rows, kinds, later)] == rows[_header_top(
-                rows, kinds, data)]:
+        if not longer or (rows[_header_top(rows, kinds, later, decimal)]
+                          == rows[_header_top(rows, kinds, data, decimal)]):
             break  # a shorter table below (a trailer), or the same names (blocks of one log)
         if first is None:
-            first = _header_top(rows, kinds, data)
+            first = _header_top(rows, kinds, data, decimal)
         data = later
-    return data, (None if first is None else (first, _header_top(rows, kinds, data)))
+    return data, (None if first is None else (first, _header_top(rows, kinds, data, decimal)))
 
 
-def _header_top(rows: list[list[str]], kinds: list[str], data: int) -> int:
+def _header_top(rows: list[list[str]], kinds: list[str], data: int, decimal: str) -> int:
     """The first row of the names (and units) rows over the data row `data`."""
     above = _above(kinds, data)
-    if above >= 1 and kinds[above] == "text" and _units_row(rows[above], rows[data]):
+    if (above >= 1 and kinds[above] == "text"
+            and _units_row(rows[above], rows[data], decimal)):
         above = _above(kinds, above)
     return max(above, 0)
 
@@ -861,14 +872,23 @@ def _filled_width(row: list[str]) -> int:
     return width
 
 
-def _units_row(row: list[str], first_data: list[str]) -> bool:
-    """Whether `row` is a units row: a unit (or nothing) over every column of the data.
+def _units_row(row: list[str], first_data: list[str], decimal: str) -> bool:
+    """Whether `row` is a units row: a unit (or nothing) over every column of numbers.
 
     Cells over columns the first data row leaves empty are notes beside the
-    table (Bluehill: ``"20 N preload"`` under ``"10 mm/min"``), not units.
+    table (Bluehill: ``"20 N preload"`` under ``"10 mm/min"``), not units; cells
+    over text or clock readings are whatever the logger writes there (Graphtec:
+    ``Time`` over its date and time, ``A1234567890`` over its alarms' states).
     """
     return all(looks_like_unit(cell) for index, cell in enumerate(row)
-               if index >= len(first_data) or not is_missing(first_data[index]))
+               if index >= len(first_data)
+               or not (is_missing(first_data[index]) or _over_text(first_data, index, decimal)))
+
+
+def _over_text(first_data: list[str], index: int, decimal: str) -> bool:
+    """Whether column `index` of the first data row holds text or a clock reading."""
+    cell = first_data[index] if index < len(first_data) else ""
+    return not (is_missing(cell) or is_number(cell, decimal))
 
 
 def _first_data_row(rows: list[list[str]], kinds: list[str], width: int,

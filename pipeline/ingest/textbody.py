@@ -332,7 +332,8 @@ def parse_body(
         Fields parsed as float64; the others are left to pyarrow's inference.
     clocks : mapping of int -> ClockColumn, optional
         Fields among `float_columns` written as clock readings, parsed as
-        their :attr:`~pipeline.ingest.clock.ClockColumn.arrow_type` instead.
+        their :attr:`~pipeline.ingest.clock.ClockColumn.arrow_type` instead; the
+        fields counting their fractions of a second are parsed as float64.
     as_text : bool
         Read every field as a string (a decimal comma that is also the delimiter;
         see :mod:`pipeline.ingest.delimited`).
@@ -360,10 +361,11 @@ def parse_body(
         encoding=(region.codec if region.codec.startswith("utf-16") and delimiter != BLANKS
                   else "utf8"),
     )
+    fractions = {clock.fraction.column for clock in clocks.values() if clock.fraction}
     convert_options = pacsv.ConvertOptions(
         column_types={
             labels[index]: clocks[index].arrow_type if index in clocks else kind
-            for index in (range(width) if as_text else float_columns)
+            for index in (range(width) if as_text else float_columns | fractions)
         },
         decimal_point=decimal,
         null_values=sorted(NULL_VALUES),
@@ -391,7 +393,7 @@ def parse_body(
         return table, 0 if comments is None else comments.count
     except (pa.ArrowException, UnicodeDecodeError) as error:
         raise locate_defect(
-            region, names, width, delimiter, decimal, float_columns, error, clocks
+            region, names, width, delimiter, decimal, float_columns | fractions, error, clocks
         ) from error
 
 
@@ -604,12 +606,15 @@ def split_table(
     """The float columns of a parsed body, its row count and its other empty fields.
 
     Clock columns (`clocks`, among `floats`) become seconds after their first
-    reading. The caller drops its reference to `table` next, so that
-    :func:`float_arrays` can free each column as it converts it.
+    reading, with the fraction of a second of a column beside them added
+    (:attr:`ClockColumn.fraction`). The caller drops its reference to `table`
+    next, so that :func:`float_arrays` can free each column as it converts it.
     """
     chunks = {index: table.column(column_label(index)) for index in floats}
     for index, clock in (clocks or {}).items():
-        chunks[index] = clock.seconds(chunks[index])
+        counts = (None if clock.fraction is None
+                  else table.column(column_label(clock.fraction.column)))
+        chunks[index] = clock.with_fraction(clock.seconds(chunks[index]), counts)
     return chunks, table.num_rows, empty_columns(table, set(range(width)) - floats)
 
 

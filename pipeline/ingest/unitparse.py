@@ -53,8 +53,9 @@ COUNTER_UNITS = frozenset(
 
 #: Units-row cells that stand for no unit: Siglent oscilloscopes write ``Value`` over each
 #: channel beside ``Second`` over the time; a Campbell Scientific TOA5 file ``TS`` over its
-#: time stamp and ``RN`` over its record number.
-NO_UNIT_CELLS = frozenset({"value", "ts", "rn"})
+#: time stamp and ``RN`` over its record number; a Graphtec logger ``NO.`` over its sample
+#: number.
+NO_UNIT_CELLS = frozenset({"value", "ts", "rn", "no."})
 
 #: A units-row cell over a sample counter that gives the interval between two samples
 #: (a Shimadzu export's ``X 200msec`` over ``Number``): the counter's step, not its unit.

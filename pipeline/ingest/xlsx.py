@@ -25,6 +25,7 @@ from collections.abc import Mapping
 
 import numpy as np
 import pandas as pd
+import pyarrow as pa
 
 from pipeline.errors import EmptyFileError, LayoutError, ValueParseError
 from pipeline.ingest.clock import UNREAD_FORM_HINT, ClockColumn, looks_like_clock
@@ -172,7 +173,8 @@ def parse(
     preamble = [line for index, line in enumerate("\t".join(row) for row in cells[
         : spec.header_index or 0]) if line.strip() and index not in skipped]
     names, units = header_columns(spec)
-    found = find_candidates(names, units, columns, file=file, header_line=names_line(spec))
+    found, _ = find_candidates(names, units, columns, file=file,
+                               header_line=names_line(spec)).without(spec.fractions)
     body = frame.iloc[spec.data_index:, : len(names)].dropna(axis=0, how="all")
     if body.empty:
         raise EmptyFileError(
@@ -187,6 +189,12 @@ def parse(
         if index in clocks else _to_float(body.iloc[:, index], file, display_name(names, index))
         for index in sorted(found.indexes())
     }
+    for index, clock in clocks.items():  # whole seconds, their fraction counted beside them
+        if clock.fraction is not None:
+            column = clock.fraction.column
+            counts = _to_float(body.iloc[:, column], file, display_name(names, column))
+            arrays[index] = clock.with_fraction(pa.chunked_array([arrays[index]]),
+                                                pa.chunked_array([counts])).to_numpy()
     empty = {
         index for index in range(len(names))
         if index not in arrays and body.iloc[:, index].isna().all()

@@ -10,6 +10,7 @@ tests compare each reader with ``read_table`` on all of them.
 
 from __future__ import annotations
 
+import datetime
 import io
 from pathlib import Path
 
@@ -120,6 +121,40 @@ TEXT_LOGS = {
     "labview_comments.lvm": (_delimited(delimiter="\t", above=LABVIEW_HEADERS,
                                         names=LABVIEW_NAMES, row_end="\tStandby"), "utf-8"),
 }
+#: read_table options beyond the run kind, by file name.
+OPTIONS = {"graphtec.csv": {"columns": {"force": "CH1", "angle": "CH2"}}}
+
+
+#: The first stamp of :func:`graphtec`'s log: 2 s before midnight.
+GRAPHTEC_START = datetime.datetime(2026, 3, 5, 23, 59, 58)
+
+
+
+def graphtec(step_ms: int = 250) -> str:
+    """A Graphtec midi logger's export (GL840 form, CRLF): a settings block, the names row,
+    a units row with ``NO.`` over the sample number, ``Time`` over the clock and the
+    alarms' states over the alarm columns, the clock to the whole second and the
+    milliseconds within it in column ``ms``; a row every `step_ms` from
+    :data:`GRAPHTEC_START`, force [kN] in CH1 and angle [deg] in CH2 (:func:`_cells`)."""
+    lines = ["Vendor,GRAPHTEC Corporation", "Model,GL840", f"Sampling,{step_ms}ms",
+             "AMP Settings", "CH,Signal name,Input,Range,Filter,Span",
+             'CH1, "Load",DC,10V,Off,5.000000,0.000000,kN',
+             'CH2, "Angle",DC,10V,Off,360.000000,0.000000,deg', "Logic/Pulse,Off", "Data",
+             "No.,Date&Time,ms,CH1,CH2,Alarm1-10,AlarmOut",
+             "NO.,Time,ms,kN,deg,A1234567890,A1234"]
+    for row, (_, force, angle) in enumerate(_cells(ROWS, gaps=True)):
+        stamp = GRAPHTEC_START + datetime.timedelta(milliseconds=row * step_ms)
+        signed = [cell if not cell or cell.startswith("-") else f"+{cell}"
+                  for cell in (force, angle)]
+        lines.append(f"{row + 1},{stamp:%Y/%m/%d %H:%M:%S},{stamp.microsecond // 1000},"
+                     f"{','.join(signed)},LLLLLLLLLL,LLLL")
+    return "\r\n".join(lines) + "\r\n"
+
+
+@pytest.fixture
+def graphtec_export():
+    """:func:`graphtec`: ``graphtec_export(step_ms)`` is a Graphtec logger's export (text)."""
+    return graphtec
 
 
 def _mts(blocks: int = 3, points: int = 9) -> str:
@@ -189,4 +224,6 @@ def corpus(tmp_path_factory) -> dict[Path, dict]:
     (folder / "cyclic.dat").write_bytes(_mts().encode("latin-1"))
     (folder / "book.xlsx").write_bytes(_workbook())
     _engagement_tdms(folder / "rig.tdms")
-    return {path: {"kind": "engagement"} for path in sorted(folder.iterdir())}
+    (folder / "graphtec.csv").write_bytes(graphtec().encode("ascii"))
+    return {path: {"kind": "engagement", **OPTIONS.get(path.name, {})}
+            for path in sorted(folder.iterdir())}

@@ -9,7 +9,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from pipeline.errors import ValueParseError
-from pipeline.ingest import read_table
+from pipeline.ingest import parse_table, read_table
 from pipeline.ingest.clock import UNREAD_FORM_HINT, ClockColumn, clock_kind
 
 #: 0.25 s steps from 23:59:58.5: the fifth reading is past midnight.
@@ -262,3 +262,92 @@ def test_year_month_day_with_slashes_as_spreadsheet_text(tmp_path):
     book.save(path)
     table, _ = read_table(path, kind="engagement")
     np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
+
+
+def graphtec_rows(stamps_ms: list[int], columns: str, step: str = ",") -> list[str]:
+    """Rows of a logger that stamps to the whole second and counts the fraction beside it:
+    ``No.``, the clock (``date and time`` or ``date, time``), the count (``ms`` or ``us``
+    per `columns`), a force [kN] (row number / 8); from 2026/03/05 10:59:58."""
+    start = datetime.datetime(2026, 3, 5, 10, 59, 58)
+    rows = []
+    for row, ms in enumerate(stamps_ms):
+        stamp = start + datetime.timedelta(milliseconds=ms)
+        force = f"+{row / 8:.3f}".replace(".", "," if step == ";" else ".")
+        if columns == "date&time,ms":
+            cells = [f"{stamp:%Y/%m/%d %H:%M:%S}", str(ms % 1000)]
+        else:  # date and time of day apart, microseconds
+            cells = [f"{stamp:%d/%m/%Y}", f"{stamp:%H:%M:%S}", str(ms % 1000 * 1000)]
+        rows.append(step.join([str(row + 1), *cells, force]))
+    return rows
+
+
+def test_a_graphtec_log_adds_the_milliseconds_counted_beside_the_whole_seconds(
+        write, graphtec_export):
+    text = graphtec_export(step_ms=250)
+    table, meta = read_table(write("GL840.csv", text), kind="engagement",
+                             columns={"force": "CH1", "angle": "CH2"})
+    # 250 ms steps over midnight (the stamps carry their date), from the first row's
+    assert "\r\n9,2026/03/06 00:00:00,0," in text
+    assert len(table) == text.count("LLLLLLLLLL")
+    np.testing.assert_allclose(table["time"], np.arange(len(table)) * 0.25, rtol=0, atol=1e-9)
+    assert meta.time_monotonic
+    units = {column.name: column.unit for column in meta.columns}
+    assert units["CH1"] == "kN" and units["CH2"] == "deg"  # the units row under the names
+    assert table["force"].iloc[0] == 1500.0
+    assert ("column 'Date&Time' holds clock readings (date and time, first '2026/03/05 "
+            "23:59:58'): read as seconds after the first row's, plus the milliseconds "
+            "within the second that column 'ms' counts") in meta.warnings
+    assert not any("repeated time stamp" in warning for warning in meta.warnings)
+
+
+@given(st.lists(st.integers(1, 2500), min_size=1, max_size=30))
+def test_whole_seconds_and_the_milliseconds_beside_them_give_the_time(steps):
+    stamps = np.cumsum([0, *steps])
+    text = "No.,Date&Time,ms,Load [kN]\n" + "\n".join(
+        graphtec_rows([int(ms) for ms in stamps], "date&time,ms")) + "\n"
+    table, _ = parse_table(text.encode(), kind="engagement")
+    np.testing.assert_allclose(table["time"], stamps / 1e3, rtol=0, atol=1e-9)
+
+
+def test_a_date_a_time_of_day_and_microseconds_apart(write):
+    # a GL980's "Number;Date;Time;us" with a decimal comma
+    stamps = list(range(0, 3000, 100))
+    text = ("Number;Date;Time;us;Load [kN]\n"
+            + "\n".join(graphtec_rows(stamps, "date;time;us", step=";")) + "\n")
+    table, meta = read_table(write("GL980.csv", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], np.array(stamps) / 1e3, rtol=0, atol=1e-9)
+    assert meta.decimal == ","
+    assert any("plus the microseconds within the second that column 'us' counts" in warning
+               for warning in meta.warnings)
+
+
+@pytest.mark.parametrize("clock, counts", [
+    ("10:00:00.{}", ["0", "250", "500", "750"]),  # the clock has a fraction of its own
+    ("10:00:0{}", ["0", "1000", "2000", "3000"]),  # counts of a second or more
+])
+def test_a_count_that_is_no_fraction_of_the_second_is_not_added(write, clock, counts):
+    cells = [clock.format(row) for row in range(4)]
+    text = "Time,ms,Load [kN]\n" + "".join(
+        f"{cell},{count},{row}\n" for row, (cell, count) in enumerate(zip(cells, counts,
+                                                                         strict=True)))
+    table, meta = read_table(write("log.csv", text), kind="engagement",
+                             columns={"time": "Time"})
+    expected = ClockColumn(clock_kind(cells[0]), cells[0]).seconds_of_texts(cells)
+    np.testing.assert_allclose(table["time"], expected, rtol=0, atol=1e-9)
+    assert not any("within the second" in warning for warning in meta.warnings)
+
+
+def test_a_graphtec_log_saved_as_a_workbook(tmp_path):
+    book = openpyxl.Workbook()
+    sheet = book.active
+    sheet.append(["No.", "Date&Time", "ms", "Load [kN]"])
+    start = datetime.datetime(2026, 3, 5, 10, 59, 58)
+    stamps = range(0, 2500, 250)
+    for row, ms in enumerate(stamps):
+        stamp = start + datetime.timedelta(milliseconds=ms)
+        sheet.append([row + 1, stamp.replace(microsecond=0), stamp.microsecond // 1000, 1.0])
+    path = tmp_path / "GL840.xlsx"
+    book.save(path)
+    table, meta = read_table(path, kind="engagement")
+    np.testing.assert_allclose(table["time"], np.array(stamps) / 1e3, rtol=0, atol=1e-9)
+    assert any("plus the milliseconds within the second" in w for w in meta.warnings)
