@@ -83,10 +83,10 @@ from pipeline.fit.windows import (
     MAX_ONSET_SHIFT,
     WINDOW_GUARD,
     WINDOW_PRE,
+    FreePhaseResiduals,
     Ringing,
     WindowGeometry,
     fit_amplitudes,
-    free_phase_residuals,
     settle_onsets,
 )
 from pipeline.statistics import MedianStatistics
@@ -183,13 +183,12 @@ def _fit_ringing(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: Win
     missed seating). Returns the fit and the refined onsets [s] of the events
     kept.
     """
-    def residual_of(omega: float, zeta: float) -> np.ndarray:
-        return free_phase_residuals(y, onset1, onset2, geo, Ringing(omega, zeta))
-
     _require_ringing_events(onset1)
     reach = np.arange(onset1.size)  # each event's reach: samples reach * span on
     grid = omega_n * np.exp(np.linspace(math.log(0.88), math.log(1.14), 9))
-    best = float(min(grid, key=lambda w: float(np.sum(residual_of(w, ASSUMED_DAMPING) ** 2))))
+    residuals = FreePhaseResiduals(y, onset1, onset2, geo)
+    best = float(min(grid, key=lambda w: float(np.sum(residuals(Ringing(w, ASSUMED_DAMPING))
+                                                       ** 2))))
     ringing = Ringing(best, ASSUMED_DAMPING)
     params = lmfit.Parameters()
     params.add("omega_n", value=best, min=0.8 * best, max=1.25 * best)
@@ -201,14 +200,15 @@ def _fit_ringing(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: Win
         onset1, onset2, reach, margin = fits.onset1[kept], fits.onset2[kept], reach[kept], 0.0
         _require_ringing_events(onset1)
         if second:
-            residual = residual_of(ringing.omega_n, ringing.zeta).reshape(onset1.size, -1)
-            rms = np.sqrt(np.mean(residual**2, axis=1))
+            residual = FreePhaseResiduals(y, onset1, onset2, geo)(ringing)
+            rms = np.sqrt(np.mean(residual.reshape(onset1.size, -1) ** 2, axis=1))
             kept = rms <= RESIDUAL_OUTLIER * np.median(rms)
             onset1, onset2, reach = onset1[kept], onset2[kept], reach[kept]
         _require_ringing_events(onset1)
+        residuals = FreePhaseResiduals(y, onset1, onset2, geo)
         try:
-            result = lmfit.minimize(lambda p: residual_of(p["omega_n"].value, p["zeta"].value),
-                                    params, method="leastsq")
+            result = lmfit.minimize(_trial_residuals, params, args=(residuals,),
+                                    method="leastsq")
         except ValueError as error:  # lmfit refuses NaN residuals (a singular window)
             raise FitError(f"the fit of the branch's ringing failed: {error}",
                            hint="check that the force channel is the branch tension") from None
@@ -221,6 +221,11 @@ def _fit_ringing(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: Win
         ringing = Ringing(omega_fit.value, zeta_fit.value, omega_fit.stderr or math.nan,
                           zeta_fit.stderr or math.nan, correlation, int(onset1.size))
     return ringing, onset1, onset2
+
+
+def _trial_residuals(params: lmfit.Parameters, residuals: FreePhaseResiduals) -> np.ndarray:
+    """The free-phase residuals [N] for the trial ringing of `params` (lmfit's objective)."""
+    return residuals(Ringing(params["omega_n"].value, params["zeta"].value))
 
 
 def _ringing_errors(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: WindowGeometry,

@@ -8,7 +8,8 @@ share a basis whose event-specific part is a mask start and a complex scale.
 normal equations from one matrix product, suffix sums of the basis and a few
 samples around the masks; :func:`settle_onsets` refines the onsets from the
 phases of free-phase fits; :func:`fit_amplitudes` fits the strikes with their
-phases fixed by the onsets.
+phases fixed by the onsets; :class:`FreePhaseResiduals` gives the residuals the
+fit of the ringing minimises.
 """
 
 from __future__ import annotations
@@ -302,18 +303,48 @@ def fit_amplitudes(fits: SettledFits, ringing: Ringing, width: int
     return coef, variance * (rss / (width - 8))[:, None], rss
 
 
-def free_phase_residuals(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray,
-                          geo: WindowGeometry, ringing: Ringing) -> np.ndarray:
-    """Residuals of the free-phase model on a few events (for the ringing fit)."""
-    start = geo.first_sample(onset1) - geo.pre
-    j1 = np.full(onset1.size, geo.pre)
-    j2 = geo.first_sample(onset2) - start
-    windows = WindowModel(y, start, (geo.pre, geo.pre), (int(j2.min()), int(j2.max())), geo,
-                       ringing.pole)
-    coef = solve_normal_equations(*windows.equations(j1, j2, np.arange(onset1.size)))
-    sample = np.arange(geo.width)
-    basis = windows.basis.copy()
-    basis[: geo.pre, 6:8] = 0.0
-    fitted = (coef[:, :8] @ basis[:, :8].T
-              + (coef[:, 8:10] @ basis[:, 8:10].T) * (sample[None, :] >= j2[:, None]))
-    return (sliding_window_view(y, geo.width)[start] - fitted).ravel()
+class FreePhaseResiduals:
+    """Residuals of the free-phase model on a few events, for the fit of the ringing.
+
+    The windows are gathered once; each call refits them for a trial ringing.
+    Impact 1's columns are masked before sample :attr:`WindowGeometry.pre` of
+    every window, impact 2's before each event's first sample after its onset,
+    so that the events share all of their normal equations but the block of
+    impact 2, which is assembled per distinct mask start.
+
+    Parameters
+    ----------
+    y : numpy.ndarray
+        The force [N] the windows are cut from.
+    onset1, onset2 : numpy.ndarray
+        The events' onsets of impact 1 and impact 2 [s].
+    geo : WindowGeometry
+        The windows' geometry.
+    """
+
+    def __init__(self, y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray,
+                 geo: WindowGeometry) -> None:
+        start = geo.first_sample(onset1) - geo.pre
+        self.geo = geo
+        self.windows = sliding_window_view(y, geo.width)[start]
+        j2 = geo.first_sample(onset2) - start
+        self.after2 = np.arange(geo.width)[None, :] >= j2[:, None]
+        self.masked2 = np.where(self.after2, self.windows, 0.0)
+        self.starts2, self.group2 = np.unique(j2, return_inverse=True)
+
+    def __call__(self, ringing: Ringing) -> np.ndarray:
+        """The residuals [N] of every window, one after the other, for `ringing`."""
+        basis = self.geo.basis(ringing.pole)
+        basis[: self.geo.pre, 6:8] = 0.0
+        impact2 = np.stack([basis[start:].T @ basis[start:, 8:10] for start in self.starts2])
+        gram = np.repeat((basis.T @ basis)[None], self.windows.shape[0], axis=0)
+        gram[:, :, 8:10] = impact2[self.group2]
+        gram[:, 8:10, :] = np.swapaxes(gram[:, :, 8:10], 1, 2)
+        xty = np.concatenate([self.windows @ basis[:, :8], self.masked2 @ basis[:, 8:10]],
+                             axis=1)
+        coef = solve_normal_equations(gram, xty)
+        residuals = coef[:, 8:10] @ basis[:, 8:10].T
+        residuals *= self.after2
+        residuals += coef[:, :8] @ basis[:, :8].T
+        np.subtract(self.windows, residuals, out=residuals)
+        return residuals.ravel()
