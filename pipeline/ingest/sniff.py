@@ -29,6 +29,7 @@ import pyarrow.csv as pacsv
 
 from pipeline.errors import EmptyFileError, EncodingError, LayoutError
 from pipeline.ingest.clock import (
+    UNREAD_FORM_HINT,
     ClockColumn,
     clock_kind,
     fraction_column,
@@ -242,6 +243,25 @@ def is_number(text: str, decimal: str) -> bool:
 def is_missing(text: str) -> bool:
     """True if `text` denotes a missing value (empty, ``NaN``, ``N/A``...)."""
     return text.strip() in NULL_VALUES
+
+
+#: Cells a logger writes for a reading outside the channel's range: Graphtec's
+#: ``+++++++`` and ``-------``, a meter's ``OL``, ``OVER``, ``Overflow``, ``BURNOUT``
+#: (an open thermocouple).
+_OUT_OF_RANGE = re.compile(r"\+{3,}|-{3,}|[+-]?(?:OL|OVER(?:RANGE|FLOW)?|BURNOUT)", re.IGNORECASE)
+#: The hint for such a cell.
+OUT_OF_RANGE_HINT = (
+    "the logger writes this for a reading outside the channel's range: the signal there "
+    "is not known, so the reader does not guess it. Record again with a wider range, or "
+    "delete the rows if they lie outside the test")
+
+
+def cell_hint(text: str, default: str) -> str:
+    """The hint for a cell `text` of a numeric column that is not a number: an
+    out-of-range mark or a clock reading explained, else `default`."""
+    if _OUT_OF_RANGE.fullmatch(text.strip()):
+        return OUT_OF_RANGE_HINT
+    return UNREAD_FORM_HINT if looks_like_clock(text) else default
 
 
 def _line_of(raw: bytes, position: int) -> int:

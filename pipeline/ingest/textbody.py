@@ -20,13 +20,14 @@ import pyarrow.compute as pc
 import pyarrow.csv as pacsv
 
 from pipeline.errors import LayoutError, ValueParseError
-from pipeline.ingest.clock import UNREAD_FORM_HINT, ClockColumn, looks_like_clock
+from pipeline.ingest.clock import ClockColumn, looks_like_clock
 from pipeline.ingest.roles import display_name
 from pipeline.ingest.rowindex import first_comment
 from pipeline.ingest.sniff import (
     BLANKS,
     COMMENT_MARK,
     NULL_VALUES,
+    cell_hint,
     is_comment,
     is_missing,
     is_number,
@@ -581,8 +582,8 @@ def _bad_cell(
         f"the file's decimal mark is {decimal!r} but this cell uses {other!r}: "
         "re-export with one decimal mark"
         if is_number(cell, other)
-        else UNREAD_FORM_HINT if looks_like_clock(cell)
-        else "fix or delete the cell (missing values may be left empty or written NaN)"
+        else cell_hint(cell, "fix or delete the cell (missing values may be left empty or "
+                             "written NaN)")
     )
     return ValueParseError(
         f"{cell.strip()[:40]!r} is not a number",

@@ -28,12 +28,13 @@ import pandas as pd
 import pyarrow as pa
 
 from pipeline.errors import EmptyFileError, LayoutError, ValueParseError
-from pipeline.ingest.clock import UNREAD_FORM_HINT, ClockColumn, looks_like_clock
+from pipeline.ingest.clock import ClockColumn
 from pipeline.ingest.delimited import header_columns, names_line, time_clocks, units_line
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.roles import display_name, find_candidates
 from pipeline.ingest.sniff import (
+    cell_hint,
     detect_dialect,
     find_table,
     is_missing,
@@ -123,8 +124,7 @@ def _to_float(cells: pd.Series, file: str, column: str) -> np.ndarray:
         raise ValueParseError(
             f"{text[:40]!r} is not a number",
             file=file, row=int(cells.index[position]) + 1, column=column,
-            hint=UNREAD_FORM_HINT if looks_like_clock(text)
-            else "fix or delete the cell (missing values may be left empty)",
+            hint=cell_hint(text, "fix or delete the cell (missing values may be left empty)"),
         )
     return values
 

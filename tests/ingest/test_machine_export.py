@@ -6,6 +6,7 @@ import pytest
 from pipeline.errors import ColumnError, LayoutError, ValueParseError
 from pipeline.ingest import open_log, read_table
 from pipeline.ingest.preamble import parse_preamble
+from pipeline.ingest.sniff import OUT_OF_RANGE_HINT
 
 BLUEHILL = (
     'Text Inputs : Specimen label,"22L.3"\r\n'
@@ -617,3 +618,16 @@ def test_numbers_typed_beside_the_units_row_are_passed_over(write):
     assert meta.first_data_line == 4
     assert "line 3: the numbers beside the units (-0.081, -5.86) were passed over" in (
         meta.warnings)
+
+
+@pytest.mark.parametrize("mark", ["+++++++", "-------", "OL", "-OL", "Overflow", "BURNOUT"])
+def test_an_out_of_range_mark_is_refused_with_what_it_means(write, graphtec_export, mark):
+    text = graphtec_export().replace("\r\n3,2026/03/05 23:59:58,500,+2.00,",
+                                     f"\r\n3,2026/03/05 23:59:58,500,{mark},")
+    assert mark in text
+    with pytest.raises(ValueParseError) as caught:
+        read_table(write("GL840.csv", text), kind="engagement",
+                   columns={"force": "CH1", "angle": "CH2"})
+    assert (caught.value.row, caught.value.column) == (14, "CH1")
+    assert caught.value.message == f"{mark!r} is not a number"
+    assert caught.value.hint == OUT_OF_RANGE_HINT
