@@ -88,10 +88,10 @@ from pipeline.ingest.unitparse import spellings, unit_fits
 #: & Schwarz's RTH writes the singular).
 HORIZONTAL_UNITS = ("Horizontal Units", "Horizontal Unit")
 #: The keys of a preamble row that gives each channel's unit, folded (a DTS SLICE export's
-#: ``Engineering Unit``).
+#: ``Engineering Unit``, a Kyowa PCD-400A's ``単位``).
 UNITS_ROW_KEYS = frozenset({"engineering unit", "engineering units", "unit", "units", "eu",
                             "einheit", "einheiten", "unite", "unites", "unidad", "unidades",
-                            "unidade"})
+                            "unidade", "単位"})
 #: Column names that are a unit of time, folded: the column holds the time in that unit
 #: (not ``s``, which a German export gives a displacement, nor ``min``, a minimum, nor
 #: ``ms``, which a KEYENCE logger gives the milliseconds of its date-time column).
@@ -206,9 +206,10 @@ def _units_of_a_preamble_row(spec: TableSpec, names: list[str], units: list[str 
 
     The row is a settings row: its key (:data:`UNITS_ROW_KEYS`) over the first column,
     a unit over two channels at least, nothing but units; a single ``Units,mm`` setting
-    names no column.
+    names no column. It may lie in a table of settings passed over above the data (a
+    Kyowa PCD-400A's ``"単位","g","g"`` under its calibration factors).
     """
-    for line in spec.preamble:
+    for line in (*spec.preamble, *spec.passed):
         key, *cells = (cell.strip() for cell in split_fields(line, spec.delimiter))
         given = [cell or None for cell in cells[: len(units) - 1]]
         if (fold(key) not in UNITS_ROW_KEYS or len(cells) > len(units)

@@ -179,6 +179,8 @@ class TableSpec:
     results : tuple of (int, int) or None
         The lines (first, past the last; indexes in :attr:`Head.lines`) of the
         results tables passed over above the data (:func:`find_table`).
+    passed : list of str
+        The non-blank lines of those tables (a logger's settings among them).
     texts : frozenset of int
         The columns whose every cell in the head's first data rows is text (a label of
         the step, a status): they hold no numbers to read.
@@ -198,6 +200,7 @@ class TableSpec:
     pairs: bool = False
     clocks: dict[int, ClockColumn] = field(default_factory=dict)
     results: tuple[int, int] | None = None
+    passed: list[str] = field(default_factory=list)
     texts: frozenset[int] = frozenset()
     notes: tuple[str, ...] = ()
 
@@ -702,6 +705,7 @@ def find_table(
         units=units,
         preamble=[line for index, line in enumerate(lines[:max(above, 0)])
                   if line.strip() and not (results and results[0] <= index < results[1])],
+        passed=[line for line in lines[slice(*results)] if line.strip()] if results else [],
         pairs=pairs,
         clocks=clocks,
         results=results,

@@ -583,14 +583,30 @@ DTS_SLICE = ("Headers,,,,\nTest ID,c-front-hard1,c-front-hard1,c-front-hard1,\n"
              "-0.040050,-12.880515,0.072539,1.5\n-0.040000,-1.951593,0.090674,1.7\n")
 
 
-def test_a_preamble_row_of_units_gives_each_channel_its_unit(write):
-    table, meta = read_table(write("fh1.csv", DTS_SLICE), kind="engagement",
-                             units={"time": "s"})
-    assert [(c.name, c.unit) for c in meta.columns] == [
-        ("Time", "s"), ("Chan 0:AV1", "deg/sec"), ("Chan 1:AC1", "g"), ("Chan 2:LC1", "kN")]
-    np.testing.assert_allclose(table["force"], [1.5e3, 1.7e3])
-    assert ("units of 'Chan 0:AV1', 'Chan 1:AC1', 'Chan 2:LC1' from the preamble's "
-            "'Engineering Unit' row") in meta.warnings
+# the settings block of a Kyowa PCD-400A strain-gauge recorder (its layout; our numbers):
+# calibration factors and offsets above the units row make a table of settings
+KYOWA = ('"ID番号","PCD-400A"\n"試験日時","2026/02/26","16:41:09"\n"測定CH数",2\n'
+         '"サンプリング周波数(Hz)",50\n"CH名称"\n"レンジ","5kμε","2kμε"\n'
+         '"ローパス(デジタル)","***","***"\n"校正係数",2.5,0.3\n"オフセット",0,0\n'
+         '"単位","kN","N"\n"Time(sec)","CH1","CH2"\n0.00,1.25,3.5\n0.02,1.5,3.75\n'
+         '0.04,1.75,4.0\n')
+
+
+@pytest.mark.parametrize("text, options, units, forces, key", [
+    (DTS_SLICE, {"units": {"time": "s"}},
+     [("Time", "s"), ("Chan 0:AV1", "deg/sec"), ("Chan 1:AC1", "g"), ("Chan 2:LC1", "kN")],
+     [1.5e3, 1.7e3], "'Chan 0:AV1', 'Chan 1:AC1', 'Chan 2:LC1' from the preamble's "
+     "'Engineering Unit' row"),
+    # the units row among a logger's settings, passed over as a table above the data
+    (KYOWA, {"columns": {"force": "CH1"}}, [("Time", "sec"), ("CH1", "kN"), ("CH2", "N")],
+     [1.25e3, 1.5e3, 1.75e3], "'CH1', 'CH2' from the preamble's '単位' row"),
+])
+def test_a_preamble_row_of_units_gives_each_channel_its_unit(write, text, options, units,
+                                                             forces, key):
+    table, meta = read_table(write("log.csv", text), kind="engagement", **options)
+    assert [(c.name, c.unit) for c in meta.columns] == units
+    np.testing.assert_allclose(table["force"], forces)
+    assert f"units of {key}" in meta.warnings
 
 
 def test_a_single_units_setting_names_no_column(write):
