@@ -64,6 +64,9 @@ SENTINELS = {
 _LOWEST_NEGATIVE = max(value for value in SENTINELS if value < 0)
 _LOWEST_POSITIVE = min(value for value in SENTINELS if value > 0)
 
+#: Seconds of a day: the step back of a time of day passing midnight.
+DAY = 86_400.0
+
 #: Roles a run of each kind must have: one role of each group (a wear log counts running
 #: time or cycles, and logs a section length or an elongation, a gauge).
 REQUIRED = {"tensile": (("force",), ("gauge",)), "engagement": (("time",), ("force",)),
@@ -530,6 +533,17 @@ def _step_extremes(time: np.ndarray, block: int = 1 << 16) -> tuple[float, float
     return smallest, largest
 
 
+def _past_midnight(raw: RawTable, step: float) -> str:
+    """What a step back of `step` [s] in a time of day means when it is about a day: the
+    clock passed midnight, and the log's date (if any) is elsewhere."""
+    if not (any(clock.kind == "time of day" for clock in raw.clocks.values())
+            and -DAY <= step < -DAY + 3600):
+        return ""
+    return (" (the time of day passes midnight; the reader does not join it to a date "
+            "column: export the date and time in one column, year first, or the time in "
+            "seconds)")
+
+
 def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tuple[bool | None, int]:
     """Report missing values and time problems of `table` in `warnings`.
 
@@ -553,7 +567,8 @@ def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tupl
         count = int(np.count_nonzero(backwards))
         if count:
             first = int(np.argmax(backwards)) + 1
-            warnings.append(f"time: steps back {count} times, first at {raw.where(first)}")
+            warnings.append(f"time: steps back {count} times, first at {raw.where(first)}"
+                            + _past_midnight(raw, steps[first - 1]))
         repeated = steps == 0
         if repeated.any():
             first = int(np.argmax(repeated)) + 1

@@ -114,7 +114,9 @@ def test_a_time_of_day_past_midnight_is_reported_as_a_step_back(write):
     expected = np.where(SECONDS < 1.5, SECONDS, SECONDS - 86_400.0)
     np.testing.assert_allclose(table["time"], expected, rtol=0, atol=1e-9)
     assert meta.time_monotonic is False
-    assert "time: steps back 1 times, first at line 8" in meta.warnings
+    assert ("time: steps back 1 times, first at line 8 (the time of day passes midnight; "
+            "the reader does not join it to a date column: export the date and time in one "
+            "column, year first, or the time in seconds)") in meta.warnings
 
 
 @pytest.mark.parametrize("step_ms", [1, 7, 37])
@@ -351,3 +353,11 @@ def test_a_graphtec_log_saved_as_a_workbook(tmp_path):
     table, meta = read_table(path, kind="engagement")
     np.testing.assert_allclose(table["time"], np.array(stamps) / 1e3, rtol=0, atol=1e-9)
     assert any("plus the milliseconds within the second" in w for w in meta.warnings)
+
+
+def test_a_time_of_day_set_back_by_an_hour_is_no_midnight(write):
+    # a logger's clock put back for the end of summer time: a step back, not midnight
+    seconds = np.where(SECONDS < 1.5, SECONDS, SECONDS - 3600.0)
+    path = write("log.csv", log([time_of_day(s, start=7200.0) for s in seconds]))
+    _, meta = read_table(path, kind="engagement")
+    assert "time: steps back 1 times, first at line 8" in meta.warnings
