@@ -98,7 +98,7 @@ def submit(client: Client, function: Callable, *args: Any, priority: int = 0,
     Examples
     --------
     >>> from distributed import Client
-    >>> with Client(processes=False, n_workers=1, dashboard_address=None) as client:
+    >>> with Client(processes=False, n_workers=1, dashboard_address=":0") as client:
     ...     total = submit(client, sum, [submit(client, abs, -2), 3])
     ...     total.result()
     5

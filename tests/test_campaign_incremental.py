@@ -143,7 +143,7 @@ def test_dask_workers_give_the_serial_result(campaign, tmp_path):
 
     serial = process_campaign(campaign, tmp_path / "serial")
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                      dashboard_address=None) as cluster, Client(cluster) as client:
+                      dashboard_address=":0") as cluster, Client(cluster) as client:
         parallel = process_campaign(campaign, tmp_path / "dask", client=client)
         cli = runner.invoke(app, ["run", str(campaign), "--output", str(tmp_path / "cli"),
                                   "--scheduler", cluster.scheduler_address])

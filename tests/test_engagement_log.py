@@ -220,7 +220,7 @@ def test_chunks_as_dask_tasks_give_the_same_result(log):
     distributed = pytest.importorskip("distributed")
     table, reference = log
     with distributed.Client(processes=False, n_workers=1, threads_per_worker=2,
-                            dashboard_address=None) as client:
+                            dashboard_address=":0") as client:
         analysis = analyse_log(TableSource(table), z=8, omega=20.0, chunk_samples=100_003,
                                client=client)
     in_process = whole(table, chunk_samples=100_003)[1]

@@ -51,7 +51,7 @@ def test_here_nothing_is_computed_until_asked():
 
 def test_on_a_cluster_the_same_results_computed_by_the_workers():
     with distributed.Client(processes=False, n_workers=2, threads_per_worker=1,
-                            dashboard_address=None, set_as_default=False) as client:
+                            dashboard_address=":0", set_as_default=False) as client:
         mapped = Mapped(_scaled, list(range(20)), client, factor=3, offset=2)
         assert mapped.results() == [3 * value + 2 for value in range(20)]
         executed = sum(client.run(lambda dask_worker: dask_worker.state.executed_count
@@ -61,7 +61,7 @@ def test_on_a_cluster_the_same_results_computed_by_the_workers():
 
 def test_on_a_cluster_the_first_error_is_raised():
     with distributed.Client(processes=False, n_workers=1, threads_per_worker=1,
-                            dashboard_address=None, set_as_default=False) as client:
+                            dashboard_address=":0", set_as_default=False) as client:
         with pytest.raises(ZeroDivisionError):
             Mapped(_inverse, [1, 0], client).results()
 
@@ -73,7 +73,7 @@ def test_on_a_cluster_the_tasks_wait_on_the_scheduler_for_a_free_worker():
     shared = {name: index for index, name in enumerate("abcde")}
     _RELEASE.clear()
     with distributed.Client(processes=False, n_workers=2, threads_per_worker=1,
-                            dashboard_address=None, set_as_default=False) as client:
+                            dashboard_address=":0", set_as_default=False) as client:
         try:
             mapped = Mapped(_held, list(range(20)), client, **shared)
             deadline = time.monotonic() + 10
@@ -99,7 +99,7 @@ def _scheduler_calls(dask_scheduler) -> list[tuple[str, list[type]]]:
 
 def test_submit_passes_results_of_other_tasks_in_their_places():
     with distributed.Client(processes=False, n_workers=2, threads_per_worker=1,
-                            dashboard_address=None, set_as_default=False) as client:
+                            dashboard_address=":0", set_as_default=False) as client:
         seven, two = submit(client, abs, -7), submit(client, abs, 2)
         assert submit(client, _difference, seven, 3, scale=two).result() == 8  # (7 - 3) * 2
         assert submit(client, sum, [seven, two, 1]).result() == 10
@@ -110,7 +110,7 @@ def test_the_scheduler_is_sent_bytes_not_the_functions_and_values_of_a_task():
     # The scheduler unpickles what it is sent: a task naming the stages' functions would
     # make it import them; a pickled call is only bytes and a list of other tasks.
     with distributed.Client(processes=False, n_workers=1, threads_per_worker=1,
-                            dashboard_address=None, set_as_default=False) as client:
+                            dashboard_address=":0", set_as_default=False) as client:
         first = submit(client, _difference, 4, 1)
         second = submit(client, _difference, first, 1)
         assert second.result() == 2
@@ -122,6 +122,6 @@ def test_the_scheduler_is_sent_bytes_not_the_functions_and_values_of_a_task():
 
 def test_submit_keeps_a_tasks_error():
     with distributed.Client(processes=False, n_workers=1, threads_per_worker=1,
-                            dashboard_address=None, set_as_default=False) as client:
+                            dashboard_address=":0", set_as_default=False) as client:
         with pytest.raises(ZeroDivisionError):
             submit(client, _inverse, 0).result()

@@ -50,7 +50,7 @@ def _refuse(*, listener, client) -> None:
 @pytest.fixture(scope="module")
 def client():
     with distributed.Client(processes=False, n_workers=1, threads_per_worker=1,
-                            dashboard_address=None, set_as_default=False) as client:
+                            dashboard_address=":0", set_as_default=False) as client:
         yield client
 
 
