@@ -256,9 +256,11 @@ def settle_onsets(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, margin:
         gram, xty = windows.equations(j1[todo], j2[todo], todo)
         t1, t2 = onsets_from_phases(solve_normal_equations(gram, xty), ref[todo],
                                     fits.onset1[todo], fits.onset2[todo], ringing)
-        new1, new2 = geo.first_sample(t1) - start[todo], geo.first_sample(t2) - start[todo]
+        finite = np.isfinite(t1) & np.isfinite(t2)  # not so where a window is singular
+        new1 = geo.first_sample(np.where(finite, t1, fits.onset1[todo])) - start[todo]
+        new2 = geo.first_sample(np.where(finite, t2, fits.onset2[todo])) - start[todo]
         moved = ((new1 < range1[0]) | (new1 >= range1[1]) | (new2 < range2[0])
-                 | (new2 >= range2[1]) | ~np.isfinite(t1) | ~np.isfinite(t2))
+                 | (new2 >= range2[1]) | ~finite)
         fits.onset1[todo] = np.where(moved, onset1[todo], t1)
         fits.onset2[todo] = np.where(moved, onset2[todo], t2)
         fits.moved[todo] = moved
