@@ -39,6 +39,7 @@ log counts from the same origin. Nothing is guessed:
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property
 from typing import NamedTuple
@@ -174,12 +175,10 @@ class ClockColumn:
         return self._after_first(pc.cast(pc.cast(readings, _ARROW_TYPES[self.kind]),
                                          pa.int64()))
 
-    def with_fraction(self, seconds: pa.ChunkedArray, counts: pa.ChunkedArray | None
+    def with_fraction(self, seconds: pa.ChunkedArray, counts: pa.ChunkedArray
                       ) -> pa.ChunkedArray:
         """`seconds` (:meth:`seconds`) plus the fraction of a second in `counts`, the cells
-        of :attr:`fraction`'s column, after the first row's (unchanged without one)."""
-        if self.fraction is None or counts is None:
-            return seconds
+        of :attr:`fraction`'s column, after the first row's (a clock with a fraction)."""
         fraction = pc.subtract(pc.cast(counts, pa.float64()), self.fraction.first)
         return pc.add(seconds, pc.multiply(fraction, self.fraction.seconds))
 
@@ -246,6 +245,13 @@ class ClockColumn:
             note += (f", plus the {unit} within the second that column "
                      f"{self.fraction.name!r} counts")
         return note
+
+
+def fraction_columns(clocks: Mapping[int, ClockColumn]) -> frozenset[int]:
+    """The columns counting the fraction of a second of the clock columns `clocks`: part
+    of the time, not a quantity of their own."""
+    return frozenset(clock.fraction.column for clock in clocks.values()
+                     if clock.fraction is not None)
 
 
 def fraction_column(first: str, index: int, names: list[str], rows: list[list[str]]

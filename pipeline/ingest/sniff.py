@@ -33,6 +33,7 @@ from pipeline.ingest.clock import (
     ClockColumn,
     clock_kind,
     fraction_column,
+    fraction_columns,
     looks_like_clock,
     unpadded_milliseconds,
 )
@@ -208,8 +209,7 @@ class TableSpec:
     def fractions(self) -> frozenset[int]:
         """The columns counting the fraction of a second of a clock column (:attr:`clocks`):
         part of the time, not a quantity of their own."""
-        return frozenset(clock.fraction.column for clock in self.clocks.values()
-                         if clock.fraction is not None)
+        return fraction_columns(self.clocks)
 
     def results_warning(self) -> list[str]:
         """The warnings of the header's reading: the results tables passed over, the

@@ -20,7 +20,7 @@ import pyarrow.compute as pc
 import pyarrow.csv as pacsv
 
 from pipeline.errors import LayoutError, ValueParseError
-from pipeline.ingest.clock import ClockColumn, looks_like_clock
+from pipeline.ingest.clock import ClockColumn, fraction_columns, looks_like_clock
 from pipeline.ingest.roles import display_name
 from pipeline.ingest.rowindex import first_comment
 from pipeline.ingest.sniff import (
@@ -362,7 +362,7 @@ def parse_body(
         encoding=(region.codec if region.codec.startswith("utf-16") and delimiter != BLANKS
                   else "utf8"),
     )
-    fractions = {clock.fraction.column for clock in clocks.values() if clock.fraction}
+    fractions = fraction_columns(clocks)
     convert_options = pacsv.ConvertOptions(
         column_types={
             labels[index]: clocks[index].arrow_type if index in clocks else kind
@@ -613,9 +613,11 @@ def split_table(
     """
     chunks = {index: table.column(column_label(index)) for index in floats}
     for index, clock in (clocks or {}).items():
-        counts = (None if clock.fraction is None
-                  else table.column(column_label(clock.fraction.column)))
-        chunks[index] = clock.with_fraction(clock.seconds(chunks[index]), counts)
+        seconds = clock.seconds(chunks[index])
+        if clock.fraction is not None:
+            seconds = clock.with_fraction(seconds,
+                                          table.column(column_label(clock.fraction.column)))
+        chunks[index] = seconds
     return chunks, table.num_rows, empty_columns(table, set(range(width)) - floats)
 
 
