@@ -99,3 +99,21 @@ def test_proof_load_test_gives_the_elongation_at_proof_and_the_set():
     assert run.fracture is None and run.single_pull
     assert strength.elongation_at_proof == pytest.approx(truth.elongation_at_proof, rel=0.01)
     assert strength.permanent_set_after_proof == pytest.approx(truth.permanent_set, rel=0.05)
+
+
+@pytest.mark.parametrize("channel", ["crosshead", "extensometer"])
+def test_a_crosshead_alone_gives_its_own_E0_and_says_so(channel):
+    truth = PullTruth.for_chain("18x64")
+    log = simulate_pull(truth, seed=5)[["time", "force", channel]].rename(
+        columns={channel: "gauge_1"})
+    run = condition_tensile(log, truth.gauge_length, n_cycles=1,
+                            kinds={"gauge_1": channel}, columns={"gauge_1": "Travel"})
+    specimen = specimen_stiffness(fit_stiffness(run), single_pull=True)
+    warned = [w for w in run.warnings if w.startswith("E0 from the crosshead travel 'Travel'")]
+    if channel == "crosshead":  # strain = travel / L, travel = C_crosshead * F
+        assert specimen.E0 == pytest.approx(truth.gauge_length / truth.crosshead_compliance,
+                                            rel=0.01)
+        assert len(warned) == 1
+    else:
+        assert specimen.E0 == pytest.approx(truth.E0, rel=0.01)
+        assert not warned

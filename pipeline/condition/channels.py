@@ -126,7 +126,7 @@ def choose_channels(
     (['gauge_2'], 1)
     """
     if len(slopes) == 1:  # nothing to choose from: the fit says whether it is usable
-        return Choice(list(slopes), slopes)
+        return Choice(list(slopes), slopes, _crosshead_warnings(list(slopes), kinds, columns))
     usable = [name for name, slope in slopes.items() if np.isfinite(slope) and slope > 0]
     warnings = [
         f"channel {columns[name]!r} not used: it gives no positive stiffness on the first "
@@ -158,8 +158,15 @@ def choose_channels(
             f"E0 from {' + '.join(label[n] for n in used)}, {label[name]} not used "
             f"({why}): its stiffness is {slopes[name] / reference:.3g} x that of the channel "
             "used")
-    if kind == "crosshead":
-        warnings.append(
-            f"E0 from the crosshead travel {' + '.join(label[n] for n in used)}: it includes "
-            "the machine's own compliance, so E0 is too low; use an extensometer on the specimen")
-    return Choice(used, slopes, warnings)
+    return Choice(used, slopes, warnings + _crosshead_warnings(used, kinds, columns))
+
+
+def _crosshead_warnings(used: list[str], kinds: dict[str, str], columns: dict[str, str]
+                        ) -> list[str]:
+    """The warning that E0 comes from the crosshead, when the channels `used` are its."""
+    if kinds[used[0]] != "crosshead":
+        return []
+    names = " + ".join(repr(columns[name]) for name in used)
+    return [f"E0 from the crosshead travel {names}: it includes the machine's own compliance, "
+            "so E0 is too low; use an extensometer on the specimen, or name the file's "
+            'extensometer or strain column in the run sheet (columns = {gauges = "..."})']
