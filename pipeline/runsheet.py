@@ -222,11 +222,12 @@ class DrumDef(_Strict):
 
 
 class ColumnMap(_Strict):
-    """Roles -> the file's column names (or TDMS ``Channel`` / ``Group/Channel``)."""
+    """Roles -> the file's column names (or TDMS ``Channel`` / ``Group/Channel``;
+    ``gauges``: one name, or a list)."""
 
     time: str | None = None
     force: str | None = None
-    gauges: list[str] | None = None
+    gauges: str | list[str] | None = None
     angle: str | None = None
     cycle_count: str | None = None
     length: str | None = None

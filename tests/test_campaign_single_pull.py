@@ -48,7 +48,7 @@ def campaign(folder, file: str, extra: str = "", chain: str = 'catalog = "18x64"
 def processed(folder, tmp_path):
     result = process_campaign(folder, tmp_path / "processed" / folder.name)
     assert result.ok, [failure.message for failure in result.failures]
-    return read_dataset(result.output / "P1.nc"), result.warnings["P1"]
+    return read_dataset(result.output / "P1.nc"), result.warnings.get("P1", [])
 
 
 @pytest.mark.realdata
@@ -117,6 +117,44 @@ def test_machine_layouts_with_extensometer_and_crosshead(tmp_path, writer, extra
     assert any("repeated time stamp" in warning for warning in warnings)
     assert int(run["channel_removed_at"].sel(channel=run["channel"].values[
         run["channel_kind"].values == "extensometer"][0])) >= 0
+
+
+def video_extensometer(log: pd.DataFrame, gauge_length: float) -> pd.DataFrame:
+    """A coupon-lab export with a video extensometer's strains and no units (names as
+    EPFL's CCFatigue files have them): the load along y, so ``eyy`` is the axial strain."""
+    noise = np.random.default_rng(0).normal(0, 2e-5, len(log))
+    return pd.DataFrame({"Machine_Displacement": log["crosshead"] * 1e3,
+                         "Machine_Load": log["force"] / 1e3,
+                         "exx--1": -0.3 * log["extensometer"] / gauge_length + noise,
+                         "eyy--1 ": log["extensometer"] / gauge_length,
+                         "Specimen Name": ["S-1"] + [""] * (len(log) - 1)})
+
+
+@pytest.mark.parametrize("named", [False, True])
+def test_a_strain_column_the_reader_does_not_know_can_be_named(tmp_path, named):
+    """Unnamed, the strains are left alone and E0 comes from the crosshead, which a
+    warning says, with the run-sheet key; named (one column, not a list), E0 is the
+    extensometer's."""
+    truth = PullTruth.for_chain("18x64", to_fracture=False, proof_force=300e3)
+    log = simulate_pull(truth, seed=4)
+    folder = tmp_path / "video"
+    folder.mkdir()
+    video_extensometer(log, truth.gauge_length).to_csv(folder / "qs.csv", index=False)
+    extra = (f"gauge_length_mm = {truth.gauge_length * 1e3}\n"
+             + ('columns = {force = "Machine_Load", gauges = "eyy--1"}\n'
+                'units = {force = "kN", gauges = "1"}\n' if named
+                else 'units = {force = "kN", gauges = "mm"}\n'))
+    campaign(folder, "qs.csv", extra)
+    run, warnings = processed(folder, tmp_path)
+    crosshead = [w for w in warnings if w.startswith("E0 from the crosshead travel")]
+    if named:
+        assert float(run["specimen_E0"]) == pytest.approx(truth.E0, rel=0.01)
+        assert crosshead == []
+    else:
+        assert float(run["specimen_E0"]) == pytest.approx(
+            truth.gauge_length / truth.crosshead_compliance, rel=0.02)
+        assert len(crosshead) == 1 and "'Machine_Displacement'" in crosshead[0]
+        assert 'columns = {gauges = "..."}' in crosshead[0]
 
 
 def test_two_gauges_of_one_kind_that_disagree_are_not_averaged(tmp_path):

@@ -183,3 +183,10 @@ def test_values_of_the_right_type_still_load(tmp_path):
     assert second.units.gauges == "mV/V"
     assert (second.fit_window.force_low_kN, second.fit_window.force_high_kN) == (1.0, 10.5)
     assert (second.format, second.cycles) == ("csv", 3)
+
+
+def test_one_gauge_column_may_be_named_without_a_list(tmp_path):
+    run = second_run('columns = { force = "F", gauges = "eyy" }')
+    sheet = load(tmp_path, HEAD + GOOD_RUN + run)
+    assert sheet.invalid_runs == []
+    assert sheet.runs[1].columns.gauges == "eyy"
