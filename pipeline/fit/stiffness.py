@@ -468,11 +468,12 @@ def fit_stiffness(
     strain = run.sign * samples["strain"].to_numpy()
     cycle = samples["cycle"].to_numpy()
     branch = samples["branch"].to_numpy()
-    rows, keys = [], []
+    rows, keys, fullest = [], [], 0
     usable = np.isfinite(strain)  # a channel taken off, or the samples after a fracture
     for number in range(1, run.segmentation.n_cycles + 1):
         for name in branches:
             chosen = (cycle == number) & (branch == name) & usable
+            fullest = max(fullest, int(chosen.sum()))
             if chosen.sum() < MIN_POINTS:
                 continue
             f, e = force[chosen], strain[chosen]
@@ -492,7 +493,13 @@ def fit_stiffness(
                 ) from error
             keys.append((number, name))
     if not rows:
-        raise FitError("no branch of the run holds enough samples to fit")
+        raise FitError(
+            f"no branch of the run holds enough samples to fit: the fullest holds {fullest} "
+            f"with a strain, a fit needs {MIN_POINTS}",
+            hint=f"each loading and unloading needs {MIN_POINTS} samples between its turning "
+            "points: a machine that logs a few samples per cycle (a fatigue test's logged "
+            "cycles) must log more of them; check too that the gauge channel reads through "
+            "the cycles")
     index = pd.MultiIndex.from_tuples(keys, names=["cycle", "branch"])
     return pd.DataFrame(rows, index=index)
 

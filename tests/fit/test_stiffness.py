@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -10,6 +12,7 @@ from scipy import stats
 from pipeline.condition.tensile import condition_tensile
 from pipeline.errors import FitError
 from pipeline.fit.stiffness import (
+    MIN_POINTS,
     SpecimenStiffness,
     combine_specimens,
     fit_line,
@@ -224,3 +227,16 @@ def test_fit_settings_say_the_window_rule_and_level_applied():
     assert fit_settings(fraction_window=(0.1, 0.9), confidence=0.9) == {
         "confidence_level": 0.9,
         "fit_window": "fixed window 10 to 90 % of each branch's force range"}
+
+
+def test_too_few_samples_per_branch_are_refused_with_the_count():
+    """A machine logging a few samples per cycle: the error gives the fullest branch."""
+    truth = replace(SPECIMEN, sample_rate=0.08)  # about 7 samples on each branch
+    log = simulate_tensile(truth, 1).drop(columns="gauge_2")
+    run = condition_tensile(log, truth.gauge_length, preload=truth.preload,
+                            n_cycles=truth.n_cycles)
+    samples = run.samples[run.samples["branch"].isin(["loading", "unloading"])]
+    fullest = int(samples.groupby(["cycle", "branch"]).size().max())
+    assert fullest < MIN_POINTS
+    with pytest.raises(FitError, match=f"the fullest holds {fullest} with a strain"):
+        fit_stiffness(run)
