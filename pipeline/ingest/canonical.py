@@ -206,11 +206,12 @@ def settle(
         if any(assigned.get(role) for role in group):
             continue
         keys = " or ".join(f"columns = {{{SHEET_KEY[role]} = \"...\"}}" for role in group)
+        why = "".join(f"{reason}; " for role, reason in raw.set_aside if role in group)
         problems.report(next((rejected[role] for role in group if role in rejected), None)
                         or ColumnError(
             f"no {' or '.join(group)} column found ({kind} runs need {needs})",
             file=meta.file, row=raw.units_line,
-            hint=f"name it in the run sheet, {keys}; "
+            hint=f"name it in the run sheet, {keys}; {why}"
             "the file has: " + ", ".join(display_name(raw.names, i)
                                           for i in range(len(raw.names))),
         ))

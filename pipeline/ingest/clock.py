@@ -12,12 +12,14 @@ log counts from the same origin. Nothing is guessed:
   before the fraction of a second (``9:03:27,125``, as a logger set to a
   decimal comma writes it), the date's parts joined by ``-`` or, as some
   loggers write it, by ``/`` (``2024/03/05 14:03:27.125``: the year first, so
-  still one reading); minutes and seconds with the fraction of a second
-  (``0:00.1``, ``75:12.3``, hours in front once past the hour, as Measurement
-  Computing's DAQami writes its elapsed time: without the fraction, ``5:14``
-  could be hours and minutes); a date in another order (``05.03.2024``,
-  ``3/5/2024``) or a 12-hour clock stays text, and the column is refused as
-  not a number;
+  still one reading), or the day first with dots as German and Central European
+  software writes it (``05.03.2024 14:03:27,125``: a dotted date is always day,
+  month, year); minutes and seconds with the fraction of a second (``0:00.1``,
+  ``75:12.3``, hours in front once past the hour, as Measurement Computing's
+  DAQami writes its elapsed time: without the fraction, ``5:14`` could be hours
+  and minutes). A date of slashes in another order (``3/5/2024``: March or May)
+  or a 12-hour clock (``2:03:27 PM``) is not read: such a column is set aside
+  as text (:func:`is_unread_clock`), and a run that needs the time is refused;
 * a column whose first reading is in pyarrow's own form (two-digit hours,
   ``.``, ISO dashes) is parsed by its CSV reader; any other is read as text
   and rewritten to that form with pyarrow's string functions first;
@@ -53,7 +55,8 @@ import pyarrow.compute as pc
 _FORMS = {
     "time of day": re.compile(r" *\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)? *"),
     "date and time": re.compile(
-        r" *\d{4}(?P<sep>[-/])\d{2}(?P=sep)\d{2}[T _-]\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)? *"),
+        r" *(?:\d{4}(?P<sep>[-/])\d{2}(?P=sep)\d{2}|\d{2}\.\d{2}\.\d{4})"
+        r"[T _-]\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)? *"),
     "minutes and seconds": re.compile(r" *(?:\d+:)?\d+:\d{2}[.,]\d+ *"),
 }
 #: The parts of an elapsed time (RE2, for pyarrow), its decimal comma made a point.
@@ -72,14 +75,17 @@ _ONE_DIGIT_HOUR = {"time of day": (r"^(\d):", r"0\1:"),
 #: A date joined to its time by "-" or "_" (a load-cell logger's ``2018-11-15-09:30:25.349``),
 #: rewritten with a blank (after :data:`_PLAIN_REWRITES`).
 _DATE_TIME_JOINT = (r"^(\d{4}-\d{2}-\d{2})[_-]", r"\1 ")
+#: A dotted date, day first (``05.03.2024``), rewritten year first (before the others).
+_DAY_FIRST_DATE = (r"^(\d{2})\.(\d{2})\.(\d{4})", r"\3-\2-\1")
 #: Anything with hours and minutes: a clock reading, read or not.
 _CLOCK_LIKE = re.compile(r"\d{1,2}:\d{2}")
 #: The hint for a clock reading in a form that is not read.
+READ_FORMS = ("H:MM:SS.fff, YYYY-MM-DD H:MM:SS.fff, YYYY/MM/DD H:MM:SS.fff, "
+              "DD.MM.YYYY H:MM:SS.fff and M:SS.fff, with '.' or ',' before the fraction")
 UNREAD_FORM_HINT = (
-    "the column holds clock readings in a form the reader does not guess (it reads "
-    "H:MM:SS.fff, YYYY-MM-DD H:MM:SS.fff or YYYY/MM/DD H:MM:SS.fff and M:SS.fff, with '.' "
-    "or ',' before the fraction): export the time in seconds, or name another time column "
-    "in the run sheet")
+    f"the column holds clock readings in a form the reader does not guess (it reads "
+    f"{READ_FORMS}): export the time in seconds, or name another time column in the run "
+    "sheet")
 #: The arrow type each kind is parsed as.
 _ARROW_TYPES = {"time of day": pa.time64("ns"), "date and time": pa.timestamp("ns"),
                 "minutes and seconds": pa.timestamp("ns")}
@@ -119,6 +125,16 @@ def looks_like_clock(text: str) -> bool:
     (True, False)
     """
     return _CLOCK_LIKE.search(text) is not None
+
+
+def is_unread_clock(text: str) -> bool:
+    """True if `text` holds hours and minutes in a form not read (see :func:`clock_kind`):
+    a column of them is text.
+
+    >>> is_unread_clock("3/5/2024 2:03:27 PM"), is_unread_clock("14:03:27")
+    (True, False)
+    """
+    return looks_like_clock(text) and clock_kind(text) is None
 
 
 class Fraction(NamedTuple):
@@ -201,6 +217,8 @@ class ClockColumn:
         if self.kind == "minutes and seconds":
             return _elapsed_nanoseconds(column)
         if self._as_text:
+            if self.kind == "date and time":
+                column = pc.replace_substring_regex(column, *_DAY_FIRST_DATE)
             for old, new in _PLAIN_REWRITES:
                 column = pc.replace_substring(column, old, new)
             if self.kind == "date and time":

@@ -64,7 +64,12 @@ from dataclasses import dataclass
 import pyarrow as pa
 
 from pipeline.errors import EmptyFileError, LayoutError
-from pipeline.ingest.clock import ClockColumn, declare_seconds
+from pipeline.ingest.clock import (
+    READ_FORMS,
+    ClockColumn,
+    declare_seconds,
+    is_unread_clock,
+)
 from pipeline.ingest.names import fold, header_text, match_role, split_name_unit
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawColumns, RawTable
@@ -288,19 +293,40 @@ def text_header(
     units = _time_unit_of_its_name(names, units, meta.warnings)
     if spec.units_index is None:
         units = _units_of_a_preamble_row(spec, names, units, meta.warnings)
-    candidates, texts = find_candidates(names, units, columns, file=head.name,
-                                        header_line=names_line(spec)).without(spec.texts)
-    candidates, stamps = candidates.without(frozenset(spec.clocks), but="time")
-    candidates, _ = candidates.without(spec.fractions)
-    first = split_fields(head.lines[spec.data_index], spec.delimiter)
-    meta.warnings += [f"column {display_name(names, index)!r} holds {what} "
-                      f"({first[index].strip()!r}...), not numbers: not used as the {role}"
-                      for found, what in ((texts, "text"), (stamps, "clock readings"))
-                      for index, role in found.items()]
+    candidates, set_aside = numeric_candidates(
+        spec, find_candidates(names, units, columns, file=head.name,
+                              header_line=names_line(spec)),
+        names, split_fields(head.lines[spec.data_index], spec.delimiter), meta.warnings)
     candidates = _unnamed_clock_as_time(spec, names, candidates, meta.warnings)
     clocks = time_clocks(spec, candidates, names, units, meta.warnings)
     return RawColumns(names=names, units=units, candidates=candidates, metadata=meta,
-                      units_line=units_line(spec), clocks=clocks)
+                      units_line=units_line(spec), clocks=clocks, set_aside=set_aside)
+
+
+def numeric_candidates(spec: TableSpec, candidates: Candidates, names: list[str],
+                       first: list[str], warnings: list[str]
+                       ) -> tuple[Candidates, tuple[tuple[str, str], ...]]:
+    """`candidates` without the columns that hold text, the clock readings of any role but
+    the time, and the fractions of a second beside a clock; the roles those columns would
+    have taken, each with why (:attr:`~pipeline.ingest.raw.RawColumns.set_aside`), also
+    told in `warnings`. `first` is the first data row's cells."""
+    candidates, texts = candidates.without(spec.texts)
+    candidates, stamps = candidates.without(frozenset(spec.clocks), but="time")
+    candidates, _ = candidates.without(spec.fractions)
+    set_aside = tuple((role, _why_set_aside(display_name(names, index), first[index].strip(),
+                                            what))
+                      for found, what in ((texts, "text"), (stamps, "clock readings"))
+                      for index, role in found.items())
+    warnings += [f"{why}: not used as the {role}" for role, why in set_aside]
+    return candidates, set_aside
+
+
+def _why_set_aside(name: str, cell: str, what: str) -> str:
+    """Why column `name`, whose first cell is `cell`, takes no role: it holds `what`."""
+    if what == "text" and is_unread_clock(cell):
+        return (f"column {name!r} holds clock readings in a form the reader does not guess "
+                f"({cell!r}...; it reads {READ_FORMS}), to be exported as seconds")
+    return f"column {name!r} holds {what} ({cell!r}...), not numbers"
 
 
 def _unnamed_clock_as_time(spec: TableSpec, names: list[str], candidates: Candidates,

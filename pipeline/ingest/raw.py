@@ -34,6 +34,10 @@ class RawColumns:
     clocks : dict of int -> ClockColumn
         Time columns written as clock readings, which the reader turns into
         seconds (their unit is ``"s"``, whatever the run sheet says).
+    set_aside : tuple of (str, str)
+        Roles a column would have taken by its name but does not, each with why
+        (it holds text, or clock readings of a form not read): for the message
+        when the role is missing.
     """
 
     names: list[str]
@@ -42,6 +46,7 @@ class RawColumns:
     metadata: TableMetadata
     units_line: int | None = None
     clocks: dict[int, ClockColumn] = field(default_factory=dict)
+    set_aside: tuple[tuple[str, str], ...] = ()
 
     def header(self) -> RawColumns:
         """These columns without data (the header of a :class:`RawTable`)."""

@@ -745,14 +745,15 @@ def _names_by_roles(line: str, columns: int) -> list[str]:
 def _text_columns(rows: list[list[str]], kinds: list[str], columns: int, decimal: str
                   ) -> frozenset[int]:
     """The columns whose cells are text in each of the first :data:`TEXT_ROWS` data rows
-    of `rows`, two at least (neither numbers, clock readings nor missing values)."""
+    of `rows`, two at least (neither numbers, clock readings of a form read nor missing
+    values: ``3/5/2024 2:03:27 PM`` is text)."""
     texts = set(range(columns))
     data = list(islice((row for row, kind in zip(rows, kinds, strict=False)
                         if kind == "numeric"), TEXT_ROWS))
     for row in data:
         texts = {index for index in texts if index < len(row) and not (
             is_number(row[index], decimal) or is_missing(row[index])
-            or looks_like_clock(row[index]))}
+            or clock_kind(row[index]) is not None)}
     return frozenset(texts) if len(data) >= 2 else frozenset()  # one bad row is a bad cell
 
 

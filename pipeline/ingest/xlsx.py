@@ -29,7 +29,13 @@ import pyarrow as pa
 
 from pipeline.errors import EmptyFileError, LayoutError, ValueParseError
 from pipeline.ingest.clock import ClockColumn
-from pipeline.ingest.delimited import header_columns, names_line, time_clocks, units_line
+from pipeline.ingest.delimited import (
+    header_columns,
+    names_line,
+    numeric_candidates,
+    time_clocks,
+    units_line,
+)
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.roles import display_name, find_candidates
@@ -173,8 +179,10 @@ def parse(
     preamble = [line for index, line in enumerate("\t".join(row) for row in cells[
         : spec.header_index or 0]) if line.strip() and index not in skipped]
     names, units = header_columns(spec)
-    found, _ = find_candidates(names, units, columns, file=file,
-                               header_line=names_line(spec)).without(spec.fractions)
+    notes = spec.results_warning()
+    found, set_aside = numeric_candidates(
+        spec, find_candidates(names, units, columns, file=file, header_line=names_line(spec)),
+        names, cells[spec.data_index], notes)
     body = frame.iloc[spec.data_index:, : len(names)].dropna(axis=0, how="all")
     if body.empty:
         raise EmptyFileError(
@@ -182,7 +190,6 @@ def parse(
             file=file, row=spec.data_index + 1, hint="the sheet holds no measurements",
         )
     sheet_rows = body.index.to_numpy() + 1
-    notes = spec.results_warning()
     clocks = time_clocks(spec, found, names, units, notes)
     arrays = {
         index: _clock_seconds(body.iloc[:, index], clocks[index], file, display_name(names, index))
@@ -220,4 +227,5 @@ def parse(
         empty=empty,
         units_line=units_line(spec),
         clocks=clocks,
+        set_aside=set_aside,
     )

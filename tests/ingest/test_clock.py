@@ -8,9 +8,9 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from pipeline.errors import ValueParseError
+from pipeline.errors import ColumnError, ValueParseError
 from pipeline.ingest import parse_table, read_table
-from pipeline.ingest.clock import UNREAD_FORM_HINT, ClockColumn, clock_kind
+from pipeline.ingest.clock import READ_FORMS, ClockColumn, clock_kind
 
 #: 0.25 s steps from 23:59:58.5: the fifth reading is past midnight.
 SECONDS = np.arange(12) * 0.25
@@ -43,7 +43,8 @@ def log(cells: list[str], header: str = "Time,Load (kN)") -> str:
     ("4:03:27", "time of day"), ("14:03:27,125", "time of day"),
     ("2024-03-05 4:03:27,5", "date and time"), ("14:03", None), ("114:03:27", None),
     ("2018-11-15-09:30:25.349", "date and time"), ("2018-11-15_09:30:25", "date and time"),
-    ("05.03.2024 14:03:27", None), ("2:03:27 PM", None), ("14:03:27,", None),
+    ("05.03.2024 14:03:27", "date and time"), ("05.03.2024 4:03:27,125", "date and time"),
+    ("5.3.2024 14:03:27", None), ("2:03:27 PM", None), ("14:03:27,", None),
     ("1.5", None), ("", None),
     ("0:00.0", "minutes and seconds"), ("75:12,3", "minutes and seconds"),
     ("1:00:00.5", "time of day"), ("12:3.4", None),
@@ -228,13 +229,57 @@ def test_spreadsheet_time_cells(tmp_path, cell, kind):
     assert any(f"holds clock readings ({kind}" in w for w in meta.warnings)
 
 
-@pytest.mark.parametrize("cell", ["05.03.2024 14:03:27", "2:03:27 PM", "3/5/2024 14:03"])
-def test_a_clock_form_not_read_is_refused_with_what_is_read(write, cell):
-    with pytest.raises(ValueParseError) as caught:  # two columns: found as a table all the same
+@pytest.mark.parametrize("cell", ["3/5/2024 2:03:27 PM", "2:03:27 PM", "3/5/2024 14:03"])
+def test_a_clock_form_not_read_is_set_aside_and_a_run_needing_time_refused(write, cell):
+    # two columns: found as a table all the same
+    with pytest.raises(ColumnError) as caught:
         read_table(write("log.csv", log([cell] * len(SECONDS))), kind="engagement")
-    assert (caught.value.row, caught.value.column) == (2, "Time")
-    assert caught.value.message == f"{cell!r} is not a number"
-    assert caught.value.hint == UNREAD_FORM_HINT
+    assert caught.value.message.startswith("no time column found")
+    assert (f"column 'Time' holds clock readings in a form the reader does not guess "
+            f"({cell!r}...; it reads {READ_FORMS}), to be exported as seconds;"
+            ) in caught.value.hint
+
+
+@pytest.mark.parametrize("suffix", [".csv", ".xlsx"])
+def test_a_tensile_log_with_a_clock_form_not_read_is_read_without_it(tmp_path, suffix):
+    """A spreadsheet's 12-hour clock beside the force and the gauge: a stiffness needs no
+    time, so the column is set aside with a warning and the rest read."""
+    rows = [[f"3/5/2024 {11 + (i >= 4)}:59:5{i % 4}.5 {'PM' if i >= 4 else 'AM'}",
+             f"{force:.6f}", f"{0.01 * i:.4f}"] for i, force in enumerate(FORCE_KN)]
+    header = ["Date Time", "Load (kN)", "Extension (mm)"]
+    path = tmp_path / f"log{suffix}"
+    if suffix == ".csv":
+        path.write_text("\n".join(",".join(row) for row in [header, *rows]) + "\n")
+    else:
+        book = openpyxl.Workbook()
+        for row in [header, *rows]:
+            book.active.append([row[0], *(float(cell) for cell in row[1:])]
+                               if row is not header else row)
+        book.save(path)
+    table, meta = read_table(path, kind="tensile")
+    assert list(table.columns) == ["force", "gauge_1"]
+    np.testing.assert_allclose(table["force"], np.round(FORCE_KN, 6) * 1e3)
+    np.testing.assert_allclose(table["gauge_1"], np.arange(len(FORCE_KN)) * 1e-5, atol=1e-12)
+    assert ("column 'Date Time' holds clock readings in a form the reader does not guess "
+            "('3/5/2024 11:59:50.5 AM'...; it reads " + READ_FORMS
+            + "), to be exported as seconds: not used as the time") in meta.warnings
+
+
+@pytest.mark.parametrize("decimal", [".", ","])
+def test_a_dotted_date_day_first_counts_on_past_midnight(write, decimal):
+    """German software's ``05.03.2024 23:59:58,500``: a dotted date is day, month, year."""
+    cells = [date_and_time(s).replace(".", decimal) for s in SECONDS]  # ISO, then dotted
+    cells = [f"{c[8:10]}.{c[5:7]}.{c[:4]}{c[10:]}" for c in cells]
+    assert cells[0] == f"05.03.2024 23:59:58{decimal}500" and cells[-1].startswith("06.03.2024")
+    delimiter = ";" if decimal == "," else ","
+    text = f"Zeit{delimiter}Kraft (kN)\n" + "".join(
+        f"{cell}{delimiter}{f'{force:.6f}'.replace('.', decimal)}\n"
+        for cell, force in zip(cells, FORCE_KN, strict=True))
+    table, meta = read_table(write("log.csv", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
+    assert meta.time_monotonic
+    assert any("holds clock readings (date and time, first '05.03.2024" in w
+               for w in meta.warnings)
 
 
 @pytest.mark.parametrize("first, other", [("/", "-"), ("-", "/")])
