@@ -488,6 +488,7 @@ def _specimen_row(run: RunDef, result: TensileResult) -> dict:
     return {"chain": run.chain, "specimen": run.specimen or run.id, "E0": stiffness.E0,
             "E0_ci_low": stiffness.E0_ci_low, "E0_ci_high": stiffness.E0_ci_high,
             "single_pull": float(result.single_pull),
+            "from_crosshead": float(result.from_crosshead),
             **{name: getattr(result.strength, name) for name in STRENGTH_VARIABLES}}
 
 

@@ -294,6 +294,8 @@ _SPECIMEN_VARIABLES = {
     "E0_ci_low": ("N", "lower limit of the {level} interval of E0"),
     "E0_ci_high": ("N", "upper limit of the {level} interval of E0"),
     "single_pull": ("1", "1 for a single pull (E0 from its one loading), 0 for a cyclic test"),
+    "from_crosshead": ("1", "1 when E0 comes from the crosshead travel, which includes the "
+                       "machine's own compliance (E0 too low), 0 otherwise"),
     **{name: (units, long_name) for name, (units, long_name) in STRENGTH_VARIABLES.items()},
 }
 

@@ -147,6 +147,8 @@ def test_a_strain_column_the_reader_does_not_know_can_be_named(tmp_path, named):
     campaign(folder, "qs.csv", extra)
     run, warnings = processed(folder, tmp_path)
     crosshead = [w for w in warnings if w.startswith("E0 from the crosshead travel")]
+    summary = read_dataset(tmp_path / "processed" / "video" / "summary.nc")
+    assert int(summary["specimen_from_crosshead"].sel(specimen="P1")) == (not named)
     if named:
         assert float(run["specimen_E0"]) == pytest.approx(truth.E0, rel=0.01)
         assert crosshead == []

@@ -337,7 +337,8 @@ def _specimen_table(summary) -> Table:
     for run_id in summary["specimen"].values:
         row = summary.sel(specimen=run_id)
         table.add_row(
-            escape(str(run_id)) + ("*" if int(row["specimen_single_pull"]) else ""),
+            escape(str(run_id)) + ("*" if int(row["specimen_single_pull"]) else "")
+            + ("^" if int(row["specimen_from_crosshead"]) else ""),
             _fmt(float(row["specimen_E0"]), 1e3, 5),
             _fmt(float(row["specimen_max_force"]), 1e3, 4),
             *(_fmt(100 * float(row[f"specimen_{name}"]), 1, 3)
@@ -347,6 +348,9 @@ def _specimen_table(summary) -> Table:
               for name in ("strain_at_proof", "permanent_strain_after_proof")),
         )
     table.caption = "* single pull: E0 from its one loading; - not reached or not measured"
+    if summary["specimen_from_crosshead"].any():
+        table.caption += ("; ^ E0 from the crosshead travel, which includes the machine's "
+                          "compliance: too low")
     return table
 
 

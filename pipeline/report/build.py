@@ -303,7 +303,8 @@ def _strength_rows(summary: xr.Dataset) -> list[dict[str, str]]:
                     if (code := int(row[f"specimen_accept_{check}"])) in _VERDICT]
         rows.append({
             "run": str(run_id), "specimen": str(row["specimen_name"].values),
-            "kind": "single pull" if int(row["specimen_single_pull"]) else "cyclic",
+            "kind": ("single pull" if int(row["specimen_single_pull"]) else "cyclic")
+            + (", E0 from the crosshead" if int(row["specimen_from_crosshead"]) else ""),
             "max_force": kilonewtons(value["max_force"]),
             "at_max": _percent_of_length(value["strain_at_max_force"]),
             "fracture_force": kilonewtons(value["fracture_force"]),

@@ -213,6 +213,7 @@ def run_rows(summary: xr.Dataset, runs: Sequence[RunFile],
              statuses: dict[str, RunStatus]) -> list[dict[str, str]]:
     """The run table: one row per processed run (linking its page), then the failed runs."""
     e0 = _by_label(summary, "specimen", "specimen_E0")
+    crosshead = _by_label(summary, "specimen", "specimen_from_crosshead")
     impacts = {name: _by_label(summary, "operating_point", f"{name}_meas")
                for name in ("N_u1", "N_u2")}
     rows = []
@@ -220,7 +221,8 @@ def run_rows(summary: xr.Dataset, runs: Sequence[RunFile],
         run_id, attrs = run.run_id, run.attrs
         if run.kind == "tensile":
             what = f"chain {attrs.get('chain', '')}, specimen {attrs.get('specimen', '')}"
-            numbers = f"E0 = {kilonewtons(e0.get(run_id, math.nan))} kN"
+            numbers = f"E0 = {kilonewtons(e0.get(run_id, math.nan))} kN" + (
+                " (from the crosshead: too low)" if crosshead.get(run_id, 0) else "")
         elif run.kind == "roller-engagement":
             what = f"chain {attrs.get('chain', '')}, sprocket {attrs.get('sprocket', '')}"
             numbers = roller_numbers(summary, run_id)

@@ -185,6 +185,13 @@ class TensileResult:
             gauge_disagreement=float(run.gauge_disagreement),
             warnings=(*run.warnings, *sources), ingest_warnings=tuple(ingest_warnings))
 
+    @property
+    def from_crosshead(self) -> bool:
+        """E0 comes from the crosshead travel (every channel used is a crosshead's), which
+        includes the machine's own compliance."""
+        used = self.channels.loc[self.channels["used"], "kind"]
+        return bool(len(used)) and bool((used == "crosshead").all())
+
     def global_attrs(self) -> dict[str, Any]:
         """The run file's global attributes: :attr:`attrs` and those of the fields."""
         return {**self.attrs, "ingest_warnings": joined(self.ingest_warnings),

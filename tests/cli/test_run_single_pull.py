@@ -51,3 +51,26 @@ def test_validate_refuses_what_run_would_refuse(demo):
     result = runner.invoke(app, ["validate", str(demo)], env={"COLUMNS": "200"})
     assert result.exit_code == 1
     assert "error P18-B: " in result.output and "gauge_length_mm" in result.output
+
+
+def test_an_E0_from_the_crosshead_is_marked_in_the_table_and_the_report(tmp_path):
+    from pipeline.simulate.pull import PullTruth, simulate_pull
+
+    truth = PullTruth.for_chain("18x64", to_fracture=False, proof_force=300e3)
+    log = simulate_pull(truth, seed=3)
+    folder = tmp_path / "raw" / "stroke"
+    folder.mkdir(parents=True)
+    (log[["crosshead", "force"]] * [1e3, 1e-3]).to_csv(
+        folder / "p.csv", index=False, header=["Stroke (mm)", "Force (kN)"])
+    (folder / "campaign.toml").write_text(
+        '[campaign]\nid = "stroke"\n[chains.c]\ncatalog = "18x64"\n'
+        '[[runs]]\nid = "S1"\nkind = "tensile"\nfile = "p.csv"\nchain = "c"\ncycles = 1\n'
+        'gauge_length_mm = 320\n', encoding="utf-8")
+    result = runner.invoke(app, ["run", str(folder), "--output", str(tmp_path / "out")],
+                           env={"COLUMNS": "160"})
+    assert result.exit_code == 0, result.output
+    assert any(line.startswith("│ S1*^ ") for line in result.output.splitlines())
+    assert "^ E0 from the crosshead travel, which includes the machine's compliance" in (
+        " ".join(result.output.split()))
+    report = (tmp_path / "out" / "stroke" / "report.html").read_text(encoding="utf-8")
+    assert "(from the crosshead: too low)" in report and "E0 from the crosshead<" in report
