@@ -540,8 +540,9 @@ def _past_midnight(raw: RawTable, step: float) -> str:
     if not (any(clock.kind == "time of day" for clock in raw.clocks.values())
             and -DAY <= step < -DAY + 3600):
         return ""
-    return (" (the time of day passes midnight; the reader does not join it to a date "
-            "column: export the date and time in one column, year first, or the time in "
+    return (" (the time of day passes midnight; a date in the column before it is joined "
+            "only when the first rows show how to read it: year first, dotted, or a day past "
+            "the 12th; export the date and time in one column, year first, or the time in "
             "seconds)")
 
 

@@ -33,9 +33,14 @@ log counts from the same origin. Nothing is guessed:
   midi logger's ``Date&Time,ms`` or ``Time,us``) has that count added, with a
   note (:func:`fraction_column`): only when every count in the head is a whole
   number below one second;
-* a time of day that passes midnight steps back by a day: that is reported as
-  a time step back (:mod:`pipeline.ingest.canonical`), not repaired. A
-  date-time carries its date, so it simply goes on counting.
+* a time of day with the date in the column before it (``Date,Time``, as
+  Graphtec and other data loggers write them) is joined to that date, with a
+  note (:func:`date_column`), when every date in the head has one reading: year
+  first (``2026/06/01``), dotted day first (``01.06.2026``), or of slashes
+  with a day past the 12th that says the order (``13/06/2026``). Otherwise a
+  time of day that passes midnight steps back by a day: that is reported as a
+  time step back (:mod:`pipeline.ingest.canonical`), not repaired. A date-time
+  carries its date, so it simply goes on counting.
 """
 
 from __future__ import annotations
@@ -95,6 +100,23 @@ _NS = 1_000_000_000
 #: seconds one count stands for.
 _FRACTION_NAMES = {"ms": 1e-3, "msec": 1e-3, "us": 1e-6, "usec": 1e-6, "µs": 1e-6, "μs": 1e-6}
 _WHOLE_COUNT = re.compile(r" *\+?\d+(?:\.0+)? *")  # "250.0": a spreadsheet's number
+#: The forms of a date in a column of its own, as the head's cells must match them: year
+#: first (a workbook's date cell adds a midnight), dotted day first, and slashes whose
+#: order the head must decide (:func:`date_column`).
+_DATE_FORMS = {
+    "ymd": re.compile(r"\d{4}([-/])\d{1,2}\1\d{1,2}(?: 00:00:00)?"),
+    "dmy": re.compile(r"\d{1,2}\.\d{1,2}\.\d{4}"),
+    "slashes": re.compile(r"\d{1,2}/\d{1,2}/\d{4}"),
+}
+#: The parts of a date of each order (RE2, for pyarrow); a cell of another form is null.
+_DATE_PARTS = {
+    "ymd": r"^(?P<year>\d{4})[-/](?P<month>\d{1,2})[-/](?P<day>\d{1,2})(?: 00:00:00)?$",
+    "dmy": r"^(?P<day>\d{1,2})[./](?P<month>\d{1,2})[./](?P<year>\d{4})$",
+    "mdy": r"^(?P<month>\d{1,2})/(?P<day>\d{1,2})/(?P<year>\d{4})$",
+}
+_ORDER_NAMES = {"ymd": "year first", "dmy": "day first", "mdy": "month first"}
+#: Seconds per day.
+_DAY_SECONDS = 86_400.0
 #: A time of day or date and time split at its fraction of a second.
 _FRACTION = re.compile(r" *(?P<whole>.*\d:\d{2})[.,](?P<fraction>\d+) *")
 #: How fractions of one and two digits are zero-padded to milliseconds (RE2 rewrites).
@@ -146,6 +168,15 @@ class Fraction(NamedTuple):
     name: str  # the column's name, for the note
 
 
+class DateColumn(NamedTuple):
+    """A column of dates before a time-of-day column: the day of each reading."""
+
+    column: int  # its index among the table's fields
+    order: str  # "ymd", "dmy" or "mdy": the order of the date's parts
+    first: str  # the first data row's date: the origin, with the clock's first reading
+    name: str  # the column's name, for the note
+
+
 @dataclass(frozen=True)
 class ClockColumn:
     """A column of clock readings: their kind and the first data row's reading.
@@ -164,12 +195,15 @@ class ClockColumn:
     fraction : Fraction or None
         The column beside it that counts the fraction of a second, if the readings are
         whole seconds (see :func:`fraction_column`).
+    date : DateColumn or None
+        The column before a time of day that gives its date (see :func:`date_column`).
     """
 
     kind: str
     first: str
     unpadded: str | None = None
     fraction: Fraction | None = None
+    date: DateColumn | None = None
 
     @property
     def arrow_type(self) -> pa.DataType:
@@ -197,6 +231,14 @@ class ClockColumn:
         of :attr:`fraction`'s column, after the first row's (a clock with a fraction)."""
         fraction = pc.subtract(pc.cast(counts, pa.float64()), self.fraction.first)
         return pc.add(seconds, pc.multiply(fraction, self.fraction.seconds))
+
+    def with_date(self, seconds: pa.ChunkedArray, dates: pa.ChunkedArray) -> pa.ChunkedArray:
+        """`seconds` (:meth:`seconds`) plus the days from :attr:`date`'s first date to the
+        dates `dates` of the same rows (a clock with a date); null where a date is not of
+        its form (a missing value, or a cell of another form: the time is then missing)."""
+        days = pc.subtract(_days(dates, self.date.order), _days(
+            pa.chunked_array([[self.date.first]]), self.date.order)[0].as_py())
+        return pc.add(seconds, pc.multiply(pc.cast(days, pa.float64()), _DAY_SECONDS))
 
     def seconds_of_texts(self, texts: list[str | None]) -> np.ndarray:
         """Cells written as text (a spreadsheet's), as float64 seconds after :attr:`first`;
@@ -262,6 +304,9 @@ class ClockColumn:
             unit = "milliseconds" if self.fraction.seconds == 1e-3 else "microseconds"
             note += (f", plus the {unit} within the second that column "
                      f"{self.fraction.name!r} counts")
+        if self.date is not None:
+            note += (f", on the dates of column {self.date.name!r} (first "
+                     f"{self.date.first.strip()!r}, {_ORDER_NAMES[self.date.order]})")
         return note
 
 
@@ -270,6 +315,11 @@ def fraction_columns(clocks: Mapping[int, ClockColumn]) -> frozenset[int]:
     of the time, not a quantity of their own."""
     return frozenset(clock.fraction.column for clock in clocks.values()
                      if clock.fraction is not None)
+
+
+def date_columns(clocks: Mapping[int, ClockColumn]) -> frozenset[int]:
+    """The columns giving the dates of the clock columns `clocks` (read as text)."""
+    return frozenset(clock.date.column for clock in clocks.values() if clock.date is not None)
 
 
 def fraction_column(first: str, index: int, names: list[str], rows: list[list[str]]
@@ -301,6 +351,44 @@ def fraction_column(first: str, index: int, names: list[str], rows: list[list[st
                        for count in counts if count.strip())):
         return None
     return Fraction(column, seconds, float(counts[0]), names[column].strip())
+
+
+def date_column(kind: str, index: int, names: list[str], rows: list[list[str]]
+                ) -> DateColumn | None:
+    """The column before time-of-day column `index` that gives the date of its readings,
+    or None.
+
+    Taken only when every cell of that column in `rows` (the head's data rows) is a
+    date of one reading: year first (``2026/06/01``, ``2026-06-01``), dotted and
+    day first (``01.06.2026``), or of slashes (``01/06/2026``) when a day past
+    the 12th says which part is the day (``13/06/2026``: day first). Dates of
+    slashes the head does not decide are not joined.
+
+    Examples
+    --------
+    >>> rows = [["13/06/2026", "23:59:59"], ["14/06/2026", "00:00:00"]]
+    >>> date_column("time of day", 1, ["Date", "Time"], rows)
+    DateColumn(column=0, order='dmy', first='13/06/2026', name='Date')
+    >>> date_column("time of day", 1, ["Date", "Time"], [["01/06/2026", "12:00:00"]]) is None
+    True
+    """
+    column = index - 1
+    if kind != "time of day" or column < 0:
+        return None
+    cells = [row[column].strip() for row in rows if column < len(row) and row[column].strip()]
+    if not cells:
+        return None
+    order = next((order for order, form in _DATE_FORMS.items()
+                  if all(form.fullmatch(cell) for cell in cells)), None)
+    if order is None:
+        return None
+    if order == "slashes":
+        parts = [[int(part) for part in cell.split("/")[:2]] for cell in cells]
+        day_first, month_first = (any(part[i] > 12 for part in parts) for i in (0, 1))
+        if day_first == month_first:
+            return None
+        order = "dmy" if day_first else "mdy"
+    return DateColumn(column, order, cells[0], names[column].strip())
 
 
 def unpadded_milliseconds(cells: list[str], first_line: int) -> str | None:
@@ -337,6 +425,17 @@ def unpadded_milliseconds(cells: list[str], first_line: int) -> str | None:
                          f"(line {first_line + offset})")
         previous = (whole, fraction, cell)
     return shown
+
+
+def _days(dates: pa.ChunkedArray, order: str) -> pa.ChunkedArray:
+    """Dates written in `order` (:data:`_DATE_PARTS`) as int64 days since 1970; null where
+    a date is missing or of another form."""
+    parts = pc.extract_regex(pc.utf8_trim_whitespace(dates), _DATE_PARTS[order])
+    year, month, day = (pc.utf8_lpad(pc.struct_field(parts, name), 2, "0")
+                        for name in ("year", "month", "day"))
+    iso = pc.binary_join_element_wise(year, month, day, "-")
+    seconds = pc.cast(pc.cast(iso, pa.timestamp("s")), pa.int64())
+    return pc.divide(seconds, 86_400)
 
 
 def _elapsed_nanoseconds(texts: pa.ChunkedArray) -> pa.ChunkedArray:

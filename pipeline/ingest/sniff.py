@@ -32,6 +32,7 @@ from pipeline.ingest.clock import (
     UNREAD_FORM_HINT,
     ClockColumn,
     clock_kind,
+    date_column,
     fraction_column,
     fraction_columns,
     looks_like_clock,
@@ -687,7 +688,8 @@ def find_table(
         index: ClockColumn(kind, cell, None if kind == "minutes and seconds" else
                            unpadded_milliseconds([row[index] if index < len(row) else ""
                                                   for row in rows[data:]], data + 1),
-                           fraction_column(cell, index, names, rows[data:]))
+                           fraction_column(cell, index, names, rows[data:]),
+                           date_column(kind, index, names, rows[data:]))
         for index, cell in enumerate(rows[data][:columns]) if (kind := clock_kind(cell))}
     if units_index is not None:
         for index, cell in enumerate(units_cells[:columns]):

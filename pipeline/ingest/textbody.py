@@ -20,7 +20,7 @@ import pyarrow.compute as pc
 import pyarrow.csv as pacsv
 
 from pipeline.errors import LayoutError, ValueParseError
-from pipeline.ingest.clock import ClockColumn, fraction_columns, looks_like_clock
+from pipeline.ingest.clock import ClockColumn, date_columns, fraction_columns, looks_like_clock
 from pipeline.ingest.roles import display_name
 from pipeline.ingest.rowindex import first_comment
 from pipeline.ingest.sniff import (
@@ -357,6 +357,7 @@ def parse_body(
     labels = [column_label(index) for index in range(width)]
     kind = pa.string() if as_text else pa.float64()
     clocks = {} if as_text or clocks is None else clocks
+    dates = date_columns(clocks)
     read_options = pacsv.ReadOptions(
         column_names=labels,
         encoding=(region.codec if region.codec.startswith("utf-16") and delimiter != BLANKS
@@ -365,8 +366,9 @@ def parse_body(
     fractions = fraction_columns(clocks)
     convert_options = pacsv.ConvertOptions(
         column_types={
-            labels[index]: clocks[index].arrow_type if index in clocks else kind
-            for index in (range(width) if as_text else float_columns | fractions)
+            labels[index]: clocks[index].arrow_type if index in clocks
+            else pa.string() if index in dates else kind
+            for index in (range(width) if as_text else float_columns | fractions | dates)
         },
         decimal_point=decimal,
         null_values=sorted(NULL_VALUES),
@@ -608,7 +610,8 @@ def split_table(
 
     Clock columns (`clocks`, among `floats`) become seconds after their first
     reading, with the fraction of a second of a column beside them added
-    (:attr:`ClockColumn.fraction`). The caller drops its reference to `table`
+    (:attr:`ClockColumn.fraction`) and the days of a date column before them
+    (:attr:`ClockColumn.date`). The caller drops its reference to `table`
     next, so that :func:`float_arrays` can free each column as it converts it.
     """
     chunks = {index: table.column(column_label(index)) for index in floats}
@@ -617,6 +620,8 @@ def split_table(
         if clock.fraction is not None:
             seconds = clock.with_fraction(seconds,
                                           table.column(column_label(clock.fraction.column)))
+        if clock.date is not None:
+            seconds = clock.with_date(seconds, table.column(column_label(clock.date.column)))
         chunks[index] = seconds
     return chunks, table.num_rows, empty_columns(table, set(range(width)) - floats)
 

@@ -196,12 +196,16 @@ def parse(
         if index in clocks else _to_float(body.iloc[:, index], file, display_name(names, index))
         for index in sorted(found.indexes())
     }
-    for index, clock in clocks.items():  # whole seconds, their fraction counted beside them
+    for index, clock in clocks.items():  # the fraction of a second and the date beside it
         if clock.fraction is not None:
             column = clock.fraction.column
             counts = _to_float(body.iloc[:, column], file, display_name(names, column))
             arrays[index] = clock.with_fraction(pa.chunked_array([arrays[index]]),
                                                 pa.chunked_array([counts])).to_numpy()
+        if clock.date is not None:  # a time of day, its date in the column before
+            dates = [_text(value).strip() or None for value in body.iloc[:, clock.date.column]]
+            arrays[index] = clock.with_date(pa.chunked_array([arrays[index]]),
+                                            pa.chunked_array([dates], pa.string())).to_numpy()
     empty = {
         index for index in range(len(names))
         if index not in arrays and body.iloc[:, index].isna().all()

@@ -122,7 +122,8 @@ TEXT_LOGS = {
                                         names=LABVIEW_NAMES, row_end="\tStandby"), "utf-8"),
 }
 #: read_table options beyond the run kind, by file name.
-OPTIONS = {"graphtec.csv": {"columns": {"force": "CH1", "angle": "CH2"}}}
+OPTIONS = {name: {"columns": {"force": "CH1", "angle": "CH2"}}
+           for name in ("graphtec.csv", "graphtec_split_date.csv")}
 
 
 #: The first stamp of :func:`graphtec`'s log: 2 s before midnight.
@@ -130,23 +131,28 @@ GRAPHTEC_START = datetime.datetime(2026, 3, 5, 23, 59, 58)
 
 
 
-def graphtec(step_ms: int = 250) -> str:
+def graphtec(step_ms: int = 250, split_date: bool = False) -> str:
     """A Graphtec midi logger's export (GL840 form, CRLF): a settings block, the names row,
     a units row with ``NO.`` over the sample number, ``Time`` over the clock and the
     alarms' states over the alarm columns, the clock to the whole second and the
     milliseconds within it in column ``ms``; a row every `step_ms` from
-    :data:`GRAPHTEC_START`, force [kN] in CH1 and angle [deg] in CH2 (:func:`_cells`)."""
+    :data:`GRAPHTEC_START`, force [kN] in CH1 and angle [deg] in CH2 (:func:`_cells`).
+    With `split_date`, the date (day first) and the time of day in columns of their own,
+    as a GL980 writes them, from 8 days later (the 13th: the day says the date's order)."""
+    start = GRAPHTEC_START + datetime.timedelta(days=8 if split_date else 0)
+    clock = "Date,Time" if split_date else "Date&Time"
     lines = ["Vendor,GRAPHTEC Corporation", "Model,GL840", f"Sampling,{step_ms}ms",
              "AMP Settings", "CH,Signal name,Input,Range,Filter,Span",
              'CH1, "Load",DC,10V,Off,5.000000,0.000000,kN',
              'CH2, "Angle",DC,10V,Off,360.000000,0.000000,deg', "Logic/Pulse,Off", "Data",
-             "No.,Date&Time,ms,CH1,CH2,Alarm1-10,AlarmOut",
-             "NO.,Time,ms,kN,deg,A1234567890,A1234"]
+             f"No.,{clock},ms,CH1,CH2,Alarm1-10,AlarmOut",
+             f"NO.,{'Date,' if split_date else ''}Time,ms,kN,deg,A1234567890,A1234"]
     for row, (_, force, angle) in enumerate(_cells(ROWS, gaps=True)):
-        stamp = GRAPHTEC_START + datetime.timedelta(milliseconds=row * step_ms)
+        stamp = start + datetime.timedelta(milliseconds=row * step_ms)
         signed = [cell if not cell or cell.startswith("-") else f"+{cell}"
                   for cell in (force, angle)]
-        lines.append(f"{row + 1},{stamp:%Y/%m/%d %H:%M:%S},{stamp.microsecond // 1000},"
+        written = f"{stamp:%d/%m/%Y,%H:%M:%S}" if split_date else f"{stamp:%Y/%m/%d %H:%M:%S}"
+        lines.append(f"{row + 1},{written},{stamp.microsecond // 1000},"
                      f"{','.join(signed)},LLLLLLLLLL,LLLL")
     return "\r\n".join(lines) + "\r\n"
 
@@ -225,5 +231,6 @@ def corpus(tmp_path_factory) -> dict[Path, dict]:
     (folder / "book.xlsx").write_bytes(_workbook())
     _engagement_tdms(folder / "rig.tdms")
     (folder / "graphtec.csv").write_bytes(graphtec().encode("ascii"))
+    (folder / "graphtec_split_date.csv").write_bytes(graphtec(split_date=True).encode("ascii"))
     return {path: {"kind": "engagement", **OPTIONS.get(path.name, {})}
             for path in sorted(folder.iterdir())}

@@ -116,8 +116,9 @@ def test_a_time_of_day_past_midnight_is_reported_as_a_step_back(write):
     np.testing.assert_allclose(table["time"], expected, rtol=0, atol=1e-9)
     assert meta.time_monotonic is False
     assert ("time: steps back 1 times, first at line 8 (the time of day passes midnight; "
-            "the reader does not join it to a date column: export the date and time in one "
-            "column, year first, or the time in seconds)") in meta.warnings
+            "a date in the column before it is joined only when the first rows show how to "
+            "read it: year first, dotted, or a day past the 12th; export the date and time "
+            "in one column, year first, or the time in seconds)") in meta.warnings
 
 
 @pytest.mark.parametrize("step_ms", [1, 7, 37])
@@ -406,3 +407,55 @@ def test_a_time_of_day_set_back_by_an_hour_is_no_midnight(write):
     path = write("log.csv", log([time_of_day(s, start=7200.0) for s in seconds]))
     _, meta = read_table(path, kind="engagement")
     assert "time: steps back 1 times, first at line 8" in meta.warnings
+
+
+@pytest.mark.parametrize("written, order", [
+    ("%d/%m/%Y", "day first"), ("%m/%d/%Y", "month first"), ("%Y-%m-%d", "year first"),
+    ("%d.%m.%Y", "day first"), ("%Y/%m/%d", "year first")])
+def test_a_date_in_the_column_before_a_time_of_day_is_joined_past_midnight(
+        write, written, order):
+    # the 13th: a day past the 12th says the order of a date of slashes
+    start = datetime.datetime(2026, 3, 13, 23, 59, 58, 500_000)
+    stamps = [start + datetime.timedelta(seconds=float(s)) for s in SECONDS]
+    text = "Date,Time,Load (kN)\n" + "".join(
+        f"{stamp:{written}},{stamp:%H:%M:%S.%f}"[:-3] + f",{force:.6f}\n"
+        for stamp, force in zip(stamps, FORCE_KN, strict=True))
+    table, meta = read_table(write("log.csv", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
+    assert meta.time_monotonic
+    assert any(f"on the dates of column 'Date' (first '{start:{written}}', {order})" in w
+               for w in meta.warnings)
+
+
+def test_a_date_of_slashes_the_first_rows_do_not_decide_is_not_joined(write):
+    # 05/03 or 03/05: the day is not past the 12th, so the time of day steps back
+    start = datetime.datetime(2026, 3, 5, 23, 59, 58, 500_000)
+    text = "Date,Time,Load (kN)\n" + "".join(
+        f"{start + datetime.timedelta(seconds=float(s)):%d/%m/%Y,%H:%M:%S.%f}"[:-3]
+        + f",{force:.6f}\n" for s, force in zip(SECONDS, FORCE_KN, strict=True))
+    table, meta = read_table(write("log.csv", text), kind="engagement")
+    assert meta.time_monotonic is False
+    assert any("time: steps back 1 times" in w and "a date in the column before it" in w
+               for w in meta.warnings)
+
+
+def test_a_graphtec_log_with_its_date_apart_counts_on_past_midnight(write, graphtec_export):
+    text = graphtec_export(step_ms=250, split_date=True)
+    assert "\r\n9,14/03/2026,00:00:00,0," in text
+    table, meta = read_table(write("GL980.csv", text), kind="engagement",
+                             columns={"force": "CH1", "angle": "CH2"})
+    np.testing.assert_allclose(table["time"], np.arange(len(table)) * 0.25, rtol=0, atol=1e-9)
+    assert meta.time_monotonic
+
+
+def test_a_workbook_date_beside_its_time_of_day(tmp_path):
+    book = openpyxl.Workbook()
+    book.active.append(["Date", "Time", "Load [kN]"])
+    start = datetime.datetime(2026, 3, 5, 23, 59, 58, 500_000)
+    for s, force in zip(SECONDS, FORCE_KN, strict=True):
+        stamp = start + datetime.timedelta(seconds=float(s))
+        book.active.append([stamp.date(), stamp.time(), float(force)])  # cells of dates
+    book.save(tmp_path / "log.xlsx")
+    table, meta = read_table(tmp_path / "log.xlsx", kind="engagement")
+    np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-6)
+    assert meta.time_monotonic
