@@ -31,7 +31,7 @@ from nptdms import ChannelObject, GroupObject, RootObject, TdmsWriter
 from pipeline.errors import ColumnError, IngestError, UnitError
 from pipeline.ingest import read_table
 from pipeline.ingest.canonical import SENTINELS
-from pipeline.ingest.names import match_role
+from pipeline.ingest.names import is_clock_part, is_command, is_transverse, match_role
 from pipeline.units import to_si
 
 BOUNDED = settings(max_examples=60, deadline=None,
@@ -255,10 +255,17 @@ def test_workbooks_without_numbers_give_typed_errors(folder, texts, title):
 DTYPES = ["float64", "float32", "int16", "int32", "int64", "uint16"]
 
 
+def neutral(name: str) -> bool:
+    """Whether the reader's roles ignore name `name`: it names no role, and does not keep
+    a column from the role of its unit (a transverse width, a setpoint, a clock's part)."""
+    name = name.strip()
+    return match_role(name) is None and not (
+        is_transverse(name) or is_command(name) or is_clock_part(name))
+
+
 def channel_names(draw, count: int) -> list[str]:
-    """`count` random channel names, distinct, none taken for a role by its name."""
-    return [draw(NAME_TEXT.map(lambda name, n=number: f"{name} {n}")
-                 .filter(lambda name: match_role(name.strip()) is None))
+    """`count` random channel names, distinct, none that the roles do not ignore."""
+    return [draw(NAME_TEXT.map(lambda name, n=number: f"{name} {n}").filter(neutral))
             for number in range(count)]
 
 
