@@ -8,7 +8,8 @@ column is read by pyarrow (or npTDMS) as a time of day or a timestamp and
 becomes seconds after the first data row's stamp, so that every chunk of a long
 log counts from the same origin. Nothing is guessed:
 
-* only these three forms are read: hours of one or two digits, ``.`` or ``,``
+* only these three forms are read: hours of one or two digits (a time of day;
+  up to four as a test clock counts the time elapsed past 24 hours), ``.`` or ``,``
   before the fraction of a second (``9:03:27,125``, as a logger set to a
   decimal comma writes it), the date's parts joined by ``-`` or, as some
   loggers write it, by ``/`` (``2024/03/05 14:03:27.125``: the year first, so
@@ -58,7 +59,7 @@ import pyarrow.compute as pc
 #: The clock forms read, by kind: a time of day, a date (year first) and time, and an
 #: elapsed time in minutes and seconds (hours in front once past the hour).
 _FORMS = {
-    "time of day": re.compile(r" *\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)? *"),
+    "time of day": re.compile(r" *\d{1,4}:\d{2}:\d{2}(?:[.,]\d+)? *"),
     "date and time": re.compile(
         r" *(?:\d{4}(?P<sep>[-/])\d{2}(?P=sep)\d{2}|\d{2}\.\d{2}\.\d{4})"
         r"[T _-]\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)? *"),
@@ -66,7 +67,11 @@ _FORMS = {
 }
 #: The parts of an elapsed time (RE2, for pyarrow), its decimal comma made a point.
 _ELAPSED_PARTS = r"^(?P<hours>\d+:)?(?P<minutes>\d+):(?P<seconds>\d{2}\.\d+)$"
-#: The forms pyarrow's CSV reader parses itself: two-digit hours, ``.``, ISO 8601 dashes.
+#: The parts of a time of day, read as the time since midnight: past 24 hours too, as a
+#: rig's clock of the time elapsed writes them (``25:13:02``).
+_HOURS_PARTS = r"^(?P<hours>\d+:)(?P<minutes>\d{2}):(?P<seconds>\d{2}(?:\.\d+)?)$"
+#: The forms pyarrow's CSV reader parses itself: two-digit hours, ``.``, ISO 8601 dashes
+#: (a column whose hours pass 24 is read again as text: :meth:`ClockColumn.readings`).
 _ARROW_FORMS = {
     "time of day": re.compile(r" *\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
     "date and time": re.compile(r" *\d{4}-\d{2}-\d{2}[T ]\d{2}:\d{2}:\d{2}(?:\.\d+)? *"),
@@ -75,8 +80,7 @@ _ARROW_FORMS = {
 #: "/", a decimal comma (each the only "/" or "," a reading can hold), then a one-digit
 #: hour (a regular expression and its replacement, RE2 reading ``\10`` as group 1, "0").
 _PLAIN_REWRITES = (("/", "-"), (",", "."))
-_ONE_DIGIT_HOUR = {"time of day": (r"^(\d):", r"0\1:"),
-                   "date and time": (r"([T ])(\d):", r"\10\2:")}
+_ONE_DIGIT_HOUR = (r"([T ])(\d):", r"\10\2:")
 #: A date joined to its time by "-" or "_" (a load-cell logger's ``2018-11-15-09:30:25.349``),
 #: rewritten with a blank (after :data:`_PLAIN_REWRITES`).
 _DATE_TIME_JOINT = (r"^(\d{4}-\d{2}-\d{2})[_-]", r"\1 ")
@@ -212,18 +216,19 @@ class ClockColumn:
         return pa.string() if self._as_text else _ARROW_TYPES[self.kind]
 
     def readings(self, cells: pa.ChunkedArray) -> pa.ChunkedArray:
-        """The column as pyarrow's CSV reader gave it (:attr:`arrow_type`), as times of
-        day or timestamps; raises :class:`pyarrow.ArrowInvalid` on a cell that is not a
-        reading."""
-        if not self._as_text:
+        """The column as pyarrow's CSV reader gave it (:attr:`arrow_type`, or text where
+        the hours of a time of day pass 24), as times of day or timestamps (a time of
+        day read as text: the time since midnight, as a timestamp since 1970); raises
+        :class:`pyarrow.ArrowInvalid` on a cell that is not a reading."""
+        if not (self._as_text or pa.types.is_string(cells.type)):
             return cells
         return pc.cast(self._nanoseconds(cells), pa.timestamp("ns"))
 
     def seconds(self, readings: pa.ChunkedArray) -> pa.ChunkedArray:
         """`readings` (times of day or timestamps, any resolution) as float64 seconds after
         :attr:`first`."""
-        return self._after_first(pc.cast(pc.cast(readings, _ARROW_TYPES[self.kind]),
-                                         pa.int64()))
+        unit = pa.time64("ns") if pa.types.is_time(readings.type) else pa.timestamp("ns")
+        return self._after_first(pc.cast(pc.cast(readings, unit), pa.int64()))
 
     def with_fraction(self, seconds: pa.ChunkedArray, counts: pa.ChunkedArray
                       ) -> pa.ChunkedArray:
@@ -257,7 +262,7 @@ class ClockColumn:
         the time elapsed."""
         column = pc.utf8_trim_whitespace(texts)
         if self.kind == "minutes and seconds":
-            return _elapsed_nanoseconds(column)
+            return _elapsed_nanoseconds(column, _ELAPSED_PARTS)
         if self._as_text:
             if self.kind == "date and time":
                 column = pc.replace_substring_regex(column, *_DAY_FIRST_DATE)
@@ -265,12 +270,12 @@ class ClockColumn:
                 column = pc.replace_substring(column, old, new)
             if self.kind == "date and time":
                 column = pc.replace_substring_regex(column, *_DATE_TIME_JOINT)
-            column = pc.replace_substring_regex(column, *_ONE_DIGIT_HOUR[self.kind])
+                column = pc.replace_substring_regex(column, *_ONE_DIGIT_HOUR)
         if self.unpadded is not None:
             for pattern, padded in _PAD_MILLISECONDS:
                 column = pc.replace_substring_regex(column, pattern, padded)
-        if self.kind == "time of day":  # arrow casts text to a timestamp, not to a time
-            column = pc.utf8_replace_slice(column, 0, 0, "1970-01-01 ")
+        if self.kind == "time of day":
+            return _elapsed_nanoseconds(column, _HOURS_PARTS)
         return pc.cast(pc.cast(column, pa.timestamp("ns")), pa.int64())
 
     @cached_property
@@ -438,12 +443,14 @@ def _days(dates: pa.ChunkedArray, order: str) -> pa.ChunkedArray:
     return pc.divide(seconds, 86_400)
 
 
-def _elapsed_nanoseconds(texts: pa.ChunkedArray) -> pa.ChunkedArray:
-    """Elapsed times (``[H:]M:SS.fff``, see :data:`_FORMS`) as int64 nanoseconds; raises
-    :class:`pyarrow.ArrowInvalid` on a cell of another form."""
-    parts = pc.extract_regex(pc.replace_substring(texts, ",", "."), _ELAPSED_PARTS)
+def _elapsed_nanoseconds(texts: pa.ChunkedArray, pattern: str) -> pa.ChunkedArray:
+    """Times of hours, minutes and seconds as int64 nanoseconds: elapsed times
+    (``[H:]M:SS.fff``, :data:`_ELAPSED_PARTS`) or times of day (``H:MM:SS[.fff]``,
+    :data:`_HOURS_PARTS`); raises :class:`pyarrow.ArrowInvalid` on a cell of another
+    form."""
+    parts = pc.extract_regex(pc.replace_substring(texts, ",", "."), pattern)
     if parts.null_count > texts.null_count:  # a cell that does not match comes back null
-        raise pa.ArrowInvalid("a cell is no elapsed time")
+        raise pa.ArrowInvalid("a cell is no clock reading of the column's form")
     hours = pc.utf8_rtrim(pc.struct_field(parts, "hours"), characters=":")
     seconds = pc.add(pc.multiply(pc.cast(pc.if_else(pc.equal(hours, ""), "0", hours),
                                          pa.float64()), 3600.0),

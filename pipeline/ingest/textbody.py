@@ -375,8 +375,11 @@ def parse_body(
         strings_can_be_null=True,
     )
     skip_comments, thousands = False, None
+    hours = [labels[index] for index, clock in clocks.items()
+             if pa.types.is_time(clock.arrow_type)]
     try:
-        while True:  # a retry passes over comment lines, or reads thousands separators
+        while True:  # a retry passes over comment lines, reads thousands separators, or
+            # reads a time of day as text (its hours may pass 24: a time elapsed)
             comments = CommentLines() if skip_comments else None
             try:
                 table = _read(body, delimiter, decimal, read_options, convert_options,
@@ -387,6 +390,10 @@ def parse_body(
                     skip_comments = True
                 elif thousands is None and not as_text and _thousands_cell(error, decimal):
                     thousands = [labels[index] for index in float_columns - set(clocks)]
+                elif hours:
+                    convert_options.column_types = {**convert_options.column_types,
+                                                    **dict.fromkeys(hours, pa.string())}
+                    hours = []
                 else:
                     raise
         for index, clock in clocks.items():  # readings not in pyarrow's form: read as text

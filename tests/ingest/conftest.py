@@ -157,6 +157,17 @@ def graphtec(step_ms: int = 250, split_date: bool = False) -> str:
     return "\r\n".join(lines) + "\r\n"
 
 
+def elapsed_clock_log() -> str:
+    """A rig's log whose time is its test clock in ``H:MM:SS.fff``, passing 24 hours
+    (time of :func:`_cells` from 23:59:59.900), force [kN] and angle [deg]."""
+    lines = ["Test time,Force (kN),Angle (deg)"]
+    for time, force, angle in _cells(ROWS, gaps=True):
+        hours, rest = divmod(round((86_399.9 + float(time)) * 1000), 3_600_000)
+        minutes, milliseconds = divmod(rest, 60_000)
+        lines.append(f"{hours}:{minutes:02d}:{milliseconds / 1000:06.3f},{force},{angle}")
+    return "\n".join(lines) + "\n"
+
+
 @pytest.fixture
 def graphtec_export():
     """:func:`graphtec`: ``graphtec_export(step_ms)`` is a Graphtec logger's export (text)."""
@@ -232,5 +243,6 @@ def corpus(tmp_path_factory) -> dict[Path, dict]:
     _engagement_tdms(folder / "rig.tdms")
     (folder / "graphtec.csv").write_bytes(graphtec().encode("ascii"))
     (folder / "graphtec_split_date.csv").write_bytes(graphtec(split_date=True).encode("ascii"))
+    (folder / "elapsed_clock.csv").write_bytes(elapsed_clock_log().encode("ascii"))
     return {path: {"kind": "engagement", **OPTIONS.get(path.name, {})}
             for path in sorted(folder.iterdir())}

@@ -41,7 +41,8 @@ def log(cells: list[str], header: str = "Time,Load (kN)") -> str:
     ("2018/12/07 17:16:36.882", "date and time"), ("2018/12-07 17:16:36", None),
     ("12/07/2018 17:16:36", None),
     ("4:03:27", "time of day"), ("14:03:27,125", "time of day"),
-    ("2024-03-05 4:03:27,5", "date and time"), ("14:03", None), ("114:03:27", None),
+    ("2024-03-05 4:03:27,5", "date and time"), ("14:03", None),
+    ("114:03:27", "time of day"), ("11403:27:00", None),
     ("2018-11-15-09:30:25.349", "date and time"), ("2018-11-15_09:30:25", "date and time"),
     ("05.03.2024 14:03:27", "date and time"), ("05.03.2024 4:03:27,125", "date and time"),
     ("5.3.2024 14:03:27", None), ("2:03:27 PM", None), ("14:03:27,", None),
@@ -175,7 +176,7 @@ def test_one_digit_hours_and_a_decimal_comma_in_the_seconds(write):
 def test_a_reading_not_in_the_first_rows_arrow_form_is_named(write):
     # the first reading in pyarrow's own form: the column is parsed as such, and a
     # reading written otherwise further down is named, not misread
-    cells = [time_of_day(s, 3600.0) for s in SECONDS]
+    cells = [date_and_time(s) for s in SECONDS]
     cells[5] = cells[5].replace(".", ",")
     rows = [f"{cell};{force:.6f}" for cell, force in zip(cells, FORCE_KN, strict=True)]
     with pytest.raises(ValueParseError) as caught:
@@ -459,3 +460,22 @@ def test_a_workbook_date_beside_its_time_of_day(tmp_path):
     table, meta = read_table(tmp_path / "log.xlsx", kind="engagement")
     np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-6)
     assert meta.time_monotonic
+
+
+def hours_minutes_seconds(seconds: float) -> str:
+    """``H:MM:SS.fff`` of a time elapsed, the hours past 24 as a rig's test clock counts."""
+    hours, rest = divmod(round(seconds * 1000), 3_600_000)
+    minutes, milliseconds = divmod(rest, 60_000)
+    return f"{hours}:{minutes:02d}:{milliseconds / 1000:06.3f}"
+
+
+def test_a_clock_of_the_time_elapsed_counts_on_past_24_hours(write):
+    cells = [hours_minutes_seconds(86_398.5 + s) for s in SECONDS]
+    assert cells[0] == "23:59:58.500" and cells[-1] == "24:00:01.250"
+    table, meta = read_table(write("wear.csv", log(cells, "Test time,Load (kN)")),
+                             kind="engagement")
+    np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
+    assert meta.time_monotonic
+    hours = ClockColumn("time of day", "99:59:59").seconds_of_texts(
+        ["99:59:59", "100:00:00", "1000:00:00,5"])
+    np.testing.assert_allclose(hours, [0.0, 1.0, 900 * 3600 + 1.5], rtol=0, atol=1e-9)
