@@ -1,7 +1,9 @@
 """``.xlsx`` workbooks (openpyxl through pandas): the same tables as the text layouts.
 
 The table is looked for on the first sheet, or on the sheet the run sheet
-names, exactly as in a text file: an optional preamble, a names row, an
+names, exactly as in a text file (when the first sheet holds no log, on the one
+other sheet that does, with a note: a results sheet exported before the raw
+data): an optional preamble, a names row, an
 optional units row, then data rows. Line numbers in messages are sheet rows.
 
 File defects handled
@@ -27,7 +29,7 @@ import numpy as np
 import pandas as pd
 import pyarrow as pa
 
-from pipeline.errors import EmptyFileError, LayoutError, ValueParseError
+from pipeline.errors import ChainbenchError, EmptyFileError, LayoutError, ValueParseError
 from pipeline.ingest.clock import ClockColumn
 from pipeline.ingest.delimited import (
     header_columns,
@@ -40,6 +42,7 @@ from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.roles import display_name, find_candidates
 from pipeline.ingest.sniff import (
+    RESULTS_ROWS,
     cell_hint,
     detect_dialect,
     find_table,
@@ -83,7 +86,10 @@ def _unreadable(name: str, error: Exception) -> LayoutError:
     )
 
 
-def _open_sheet(source: Source, sheet: str | int | None) -> tuple[pd.DataFrame, str]:
+def _open_sheet(source: Source, sheet: str | int | None
+                ) -> tuple[pd.DataFrame, str, str | None]:
+    """The sheet `sheet` (the first by default), its name, and a note when another sheet
+    than the first was taken (:func:`_the_log_sheet`)."""
     file = source.name
     try:
         workbook = pd.ExcelFile(source.file(), engine="openpyxl")
@@ -100,8 +106,13 @@ def _open_sheet(source: Source, sheet: str | int | None) -> tuple[pd.DataFrame, 
                 file=file, hint="the workbook has the sheets: " + ", ".join(map(repr, names)),
             )
         name = names[wanted] if isinstance(wanted, int) else wanted
+        note = None
         try:
             frame = pd.read_excel(workbook, sheet_name=name, header=None)
+            if sheet is None and len(names) > 1 and not _holds_a_log(frame):
+                frame, name, note = _the_log_sheet(workbook, frame, name, file)
+        except ChainbenchError:
+            raise
         except Exception as error:  # the sheet's XML is parsed only now, and may be broken
             raise _unreadable(file, error) from error
     frame = frame.dropna(axis=1, how="all")
@@ -110,7 +121,36 @@ def _open_sheet(source: Source, sheet: str | int | None) -> tuple[pd.DataFrame, 
             f"sheet {name!r} is empty", file=file,
             hint="give the sheet holding the data in the run sheet (sheet = \"...\")",
         )
-    return frame, name
+    return frame, name, note
+
+
+def _holds_a_log(frame: pd.DataFrame) -> bool:
+    """Whether a sheet holds more rows of two numbers or more than a results table does
+    (:data:`~pipeline.ingest.sniff.RESULTS_ROWS`)."""
+    numbers = frame.apply(pd.to_numeric, errors="coerce").notna().sum(axis=1) >= 2
+    return int(numbers.sum()) > RESULTS_ROWS
+
+
+def _the_log_sheet(workbook: pd.ExcelFile, first: pd.DataFrame, name: str, file: str
+                   ) -> tuple[pd.DataFrame, str, str | None]:
+    """The one sheet of `workbook` that holds a log when its first sheet (`first`, named
+    `name`) does not (a results sheet before the raw data, as Bluehill and testXpert
+    export to Excel), with a note; the first sheet when no other holds one; an error
+    naming them when several do (one file is one run)."""
+    logs = {other: frame for other, frame in pd.read_excel(
+        workbook, sheet_name=workbook.sheet_names[1:], header=None).items()
+        if _holds_a_log(frame)}
+    if not logs:
+        return first, name, None
+    if len(logs) > 1:
+        raise LayoutError(
+            f"sheet {name!r} holds no log, and sheets {', '.join(map(repr, logs))} hold one "
+            "each: the workbook holds several specimens or tests", file=file,
+            hint="give the sheet of this run in the run sheet (sheet = \"...\"); one file is "
+                 "one run: a run per sheet may name the same file")
+    (other, frame), = logs.items()
+    return frame, other, (f"sheet {other!r} read: the first sheet, {name!r}, holds no log "
+                          "(a results table); name the sheet in the run sheet to read another")
 
 
 def _to_float(cells: pd.Series, file: str, column: str) -> np.ndarray:
@@ -166,7 +206,7 @@ def parse(
     RawTable
     """
     file = source.name
-    frame, sheet_name = _open_sheet(source, sheet)
+    frame, sheet_name, sheet_note = _open_sheet(source, sheet)
     cells = [[_text(value) for value in row]
              for row in frame.head(HEAD_ROWS).itertuples(index=False)]
     lines = ["\t".join(_sniffed(text) for text in row) for row in cells]
@@ -179,7 +219,7 @@ def parse(
     preamble = [line for index, line in enumerate("\t".join(row) for row in cells[
         : spec.header_index or 0]) if line.strip() and index not in skipped]
     names, units = header_columns(spec)
-    notes = spec.results_warning()
+    notes = ([sheet_note] if sheet_note else []) + spec.results_warning()
     found, set_aside = numeric_candidates(
         spec, find_candidates(names, units, columns, file=file, header_line=names_line(spec)),
         names, cells[spec.data_index], notes)

@@ -86,3 +86,33 @@ def test_a_sheet_without_names_is_read_by_the_run_sheets_positions(workbook):
     np.testing.assert_allclose(table["force"], [1500.0, 2500.0, 3500.0])
     np.testing.assert_allclose(table["gauge_1"], [1e-5, 2e-5, 3e-5])
     assert (meta.header_line, meta.first_data_line, meta.preamble) == (None, 1, {})
+
+
+#: A results sheet, as Bluehill and testXpert export one before the raw data.
+RESULTS = [["Specimen", "Max load [kN]", "Modulus [MPa]"], ["1", 12.3, 2100.0],
+           ["2", 12.9, 2080.0]]
+#: A log of 30 rows: more than a results table holds.
+LOG = [["time [s]", "force [kN]", "gauge [mm]"]] + [[0.1 * i, 0.5 * i, 0.01 * i]
+                                                   for i in range(30)]
+
+
+def test_a_results_sheet_first_and_the_log_after_it(workbook):
+    table, meta = read_table(workbook({"Results": RESULTS, "Specimen 1": LOG}))
+    assert meta.sheet == "Specimen 1" and len(table) == 30
+    np.testing.assert_allclose(table["force"], 500.0 * np.arange(30))
+    assert meta.warnings[0] == ("sheet 'Specimen 1' read: the first sheet, 'Results', holds "
+                                "no log (a results table); name the sheet in the run sheet "
+                                "to read another")
+
+
+def test_several_logs_after_a_results_sheet_are_refused_each_readable_by_name(workbook):
+    path = workbook({"Results": RESULTS, "Specimen 1": LOG, "Specimen 2": LOG[:25]})
+    with pytest.raises(LayoutError, match="sheets 'Specimen 1', 'Specimen 2' hold one each"):
+        read_table(path)
+    table, meta = read_table(path, sheet="Specimen 2")
+    assert len(table) == 24 and meta.warnings == []
+
+
+def test_a_log_on_the_first_sheet_is_read_whatever_follows(workbook):
+    table, meta = read_table(workbook({"Log": LOG, "Copy": LOG}))
+    assert meta.sheet == "Log" and len(table) == 30
