@@ -26,7 +26,7 @@ layout              reader
 ``machine_export``  :mod:`pipeline.ingest.delimited` (Instron Bluehill...)
 ``european_csv``    :mod:`pipeline.ingest.delimited`
 ``plain_csv``       :mod:`pipeline.ingest.delimited`
-``xlsx``            :mod:`pipeline.ingest.xlsx`
+``xlsx``, ``xls``   :mod:`pipeline.ingest.xlsx`
 ``tdms``            :mod:`pipeline.ingest.tdms`
 ==================  =========================================================
 
@@ -35,7 +35,7 @@ recognised (:data:`pipeline.ingest.delimited.LAYOUTS`); which reader reads a
 file is decided in :mod:`pipeline.ingest.formats`. By row range, delimited
 text is read through an index of every 65,536th row
 (:mod:`pipeline.ingest.rowindex`), TDMS through npTDMS's channel slices, and
-MTS and ``.xlsx`` (small logs) by reading the whole file and slicing it.
+MTS and workbooks (small logs) by reading the whole file and slicing it.
 
 Nothing here knows physics: the table says what the file holds, in SI units,
 and the warnings say what looked odd; the conditioning stage decides.
@@ -92,10 +92,10 @@ def read_table(
         for files whose header carries none; it overrides the file's unit.
     format : str
         ``"auto"`` (by content, then suffix), ``"csv"`` (any text layout),
-        ``"xlsx"``, ``"tdms"``, or one text layout (``"plain_csv"``,
+        ``"xlsx"``, ``"xls"``, ``"tdms"``, or one text layout (``"plain_csv"``,
         ``"european_csv"``, ``"machine_export"``, ``"mts"``).
     sheet : str or int, optional
-        Sheet of an ``.xlsx`` workbook (name or 0-based index); the first by default.
+        Sheet of a workbook (name or 0-based index); the first by default.
     strict : bool
         If False, role and unit problems become warnings and the table holds
         what could be converted (used by ``chainbench inspect``).

@@ -1,7 +1,9 @@
 """Which reader reads a file or buffer: its format, then its text layout.
 
-The format comes from the first bytes (zip magic: ``.xlsx``; ``TDSm``:
-TDMS), then from the name's suffix; anything else is delimited text, whose
+The format comes from the first bytes (zip magic: ``.xlsx``; OLE2 magic: old
+binary Excel, ``.xls``; ``TDSm``: TDMS), then from the name's suffix (a ``.xls``
+name on bytes of text is text: some machines write their tab-separated export
+so); anything else is delimited text, whose
 layout is recognised from its sniffed head (:data:`TEXT_LAYOUTS`, tried in
 order; a LabVIEW measurement file by its first line).
 :func:`~pipeline.ingest.read_table`, :func:`~pipeline.ingest.parse_table` and
@@ -14,7 +16,6 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import PurePath
 
-from pipeline.errors import LayoutError
 from pipeline.ingest import (
     canonical,
     delimited,
@@ -38,10 +39,9 @@ TEXT_LAYOUTS = {lvm.LAYOUT: lvm, rigol.LAYOUT: rigol, tektronix.LAYOUT: tektroni
                 **{layout.name: layout for layout in delimited.LAYOUTS}}
 
 #: Values of ``format``: auto-detection, a file format, or one text layout.
-FORMATS = ("auto", "csv", "xlsx", "tdms", *TEXT_LAYOUTS)
+FORMATS = ("auto", "csv", *xlsx.LAYOUTS, "tdms", *TEXT_LAYOUTS)
 
-_MAGIC = {b"PK\x03\x04": "xlsx", b"TDSm": "tdms"}
-_OLD_EXCEL = b"\xd0\xcf\x11\xe0"
+_MAGIC = {b"PK\x03\x04": "xlsx", b"\xd0\xcf\x11\xe0": "xls", b"TDSm": "tdms"}
 _SUFFIXES = {".xlsx": "xlsx", ".xlsm": "xlsx", ".tdms": "tdms"}
 
 
@@ -54,26 +54,15 @@ def check_options(kind: str, format: str) -> None:
 
 
 def format_of(source: Source) -> str:
-    """``"xlsx"``, ``"tdms"`` or ``"csv"`` from the first bytes, then the name's suffix.
-
-    Raises
-    ------
-    LayoutError
-        For an old binary Excel file (``.xls``).
-    """
+    """``"xlsx"``, ``"xls"``, ``"tdms"`` or ``"csv"`` from the first bytes, then the name's
+    suffix."""
     magic = source.read(0, 4)
-    suffix = PurePath(source.name).suffix.lower()
-    if magic == _OLD_EXCEL or suffix == ".xls":
-        raise LayoutError(
-            "old binary Excel files (.xls) are not read",
-            file=source.name, hint="save the workbook as .xlsx, or export the sheet as CSV",
-        )
-    return _MAGIC.get(magic, _SUFFIXES.get(suffix, "csv"))
+    return _MAGIC.get(magic, _SUFFIXES.get(PurePath(source.name).suffix.lower(), "csv"))
 
 
 @dataclass(frozen=True)
 class Sniffed:
-    """The reader chosen for a file: ``"xlsx"``, ``"tdms"`` or a text layout.
+    """The reader chosen for a file: ``"xlsx"``, ``"xls"``, ``"tdms"`` or a text layout.
 
     Attributes
     ----------
@@ -94,10 +83,10 @@ def sniff(source: Source, format: str = "auto") -> Sniffed:
     Raises
     ------
     IngestError
-        If the file is old Excel, empty, binary text, or holds no table.
+        If the file is empty, binary text, or holds no table.
     """
     layout = format_of(source) if format == "auto" else format
-    if layout in ("xlsx", "tdms"):
+    if layout in (*xlsx.LAYOUTS, "tdms"):
         return Sniffed(layout)
     head = read_head(source)
     for known in (lvm, rigol, tektronix, gwinstek):  # known by their first lines
@@ -125,10 +114,10 @@ def read_raw(
     columns : mapping, optional
         Run-sheet ``columns``.
     sheet : str or int, optional
-        Sheet of an ``.xlsx`` workbook.
+        Sheet of a workbook.
     """
-    if sniffed.layout == "xlsx":
-        return xlsx.parse(source, sheet, columns)
+    if sniffed.layout in xlsx.LAYOUTS:
+        return xlsx.parse(source, sheet, columns, layout=sniffed.layout)
     if sniffed.layout == "tdms":
         return tdms.parse(source, columns)
     return TEXT_LAYOUTS[sniffed.layout].read(sniffed.head, sniffed.spec, columns)

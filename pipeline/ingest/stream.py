@@ -22,7 +22,7 @@ How each layout reads rows ``[start, stop)``:
 * a LabVIEW ``.lvm`` file with its X column and no row comment
   (:func:`~pipeline.ingest.lvm.by_rows`): as delimited text; any other is read
   whole per call and sliced;
-* MTS, ``.xlsx`` and a Rigol oscilloscope's export (its time built from the
+* MTS, workbooks and a Rigol oscilloscope's export (its time built from the
   sample number): the whole file is read per call and sliced (those layouts
   hold small logs).
 
@@ -167,7 +167,7 @@ def _tdms_rows(source: Source, columns: Mapping | None) -> _TdmsRows:
 
 @dataclass(frozen=True)
 class _WholeRows:
-    """Rows of a small log (MTS, ``.xlsx``): the whole file read per call, then sliced."""
+    """Rows of a small log (MTS, a workbook): the whole file read per call, then sliced."""
 
     header: RawColumns
     rows: int

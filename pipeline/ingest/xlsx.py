@@ -1,4 +1,5 @@
-"""``.xlsx`` workbooks (openpyxl through pandas): the same tables as the text layouts.
+"""Workbooks: ``.xlsx`` (openpyxl through pandas) and old binary Excel ``.xls``
+(calamine through pandas), the same tables as the text layouts.
 
 The table is looked for on the first sheet, or on the sheet the run sheet
 names, exactly as in a text file (when the first sheet holds no log, on the one
@@ -53,7 +54,8 @@ from pipeline.ingest.sniff import (
 from pipeline.ingest.source import Source
 from pipeline.ingest.table import TableMetadata
 
-LAYOUT = "xlsx"
+#: The workbook layouts, each with the engine pandas reads it with.
+LAYOUTS = {"xlsx": "openpyxl", "xls": "calamine"}
 
 #: Sheet rows looked at to find the table.
 HEAD_ROWS = 200
@@ -78,23 +80,23 @@ def _sniffed(text: str) -> str:
     return text.replace(",", ".") if is_number(text, ",") else text
 
 
-def _unreadable(name: str, error: Exception) -> LayoutError:
-    """The error for a workbook openpyxl cannot read."""
+def _unreadable(name: str, layout: str, error: Exception) -> LayoutError:
+    """The error for a workbook of `layout` its engine cannot read."""
     return LayoutError(
-        f"not a readable .xlsx workbook ({type(error).__name__}: {error})",
+        f"not a readable .{layout} workbook ({type(error).__name__}: {error})",
         file=name, hint="open it in a spreadsheet program and save it again as .xlsx",
     )
 
 
-def _open_sheet(source: Source, sheet: str | int | None
+def _open_sheet(source: Source, sheet: str | int | None, layout: str
                 ) -> tuple[pd.DataFrame, str, str | None]:
-    """The sheet `sheet` (the first by default), its name, and a note when another sheet
-    than the first was taken (:func:`_the_log_sheet`)."""
+    """The sheet `sheet` (the first by default) of a workbook of `layout`, its name, and a
+    note when another sheet than the first was taken (:func:`_the_log_sheet`)."""
     file = source.name
     try:
-        workbook = pd.ExcelFile(source.file(), engine="openpyxl")
+        workbook = pd.ExcelFile(source.file(), engine=LAYOUTS[layout])
     except Exception as error:  # openpyxl / zipfile raise many kinds on a broken file
-        raise _unreadable(file, error) from error
+        raise _unreadable(file, layout, error) from error
     with workbook:
         names = workbook.sheet_names
         wanted = 0 if sheet is None else sheet
@@ -114,7 +116,7 @@ def _open_sheet(source: Source, sheet: str | int | None
         except ChainbenchError:
             raise
         except Exception as error:  # the sheet's XML is parsed only now, and may be broken
-            raise _unreadable(file, error) from error
+            raise _unreadable(file, layout, error) from error
     frame = frame.dropna(axis=1, how="all")
     if frame.empty:
         raise EmptyFileError(
@@ -188,9 +190,10 @@ def _clock_seconds(cells: pd.Series, clock: ClockColumn, file: str, column: str)
 
 
 def parse(
-    source: Source, sheet: str | int | None = None, columns: Mapping | None = None
+    source: Source, sheet: str | int | None = None, columns: Mapping | None = None,
+    layout: str = "xlsx",
 ) -> RawTable:
-    """Read the table of one sheet of an ``.xlsx`` workbook.
+    """Read the table of one sheet of a workbook.
 
     Parameters
     ----------
@@ -200,13 +203,15 @@ def parse(
         Sheet name or 0-based index; the first sheet by default.
     columns : mapping, optional
         Run-sheet ``columns`` (see :func:`~pipeline.ingest.roles.find_candidates`).
+    layout : str
+        ``"xlsx"`` or ``"xls"`` (:data:`LAYOUTS`).
 
     Returns
     -------
     RawTable
     """
     file = source.name
-    frame, sheet_name, sheet_note = _open_sheet(source, sheet)
+    frame, sheet_name, sheet_note = _open_sheet(source, sheet, layout)
     cells = [[_text(value) for value in row]
              for row in frame.head(HEAD_ROWS).itertuples(index=False)]
     lines = ["\t".join(_sniffed(text) for text in row) for row in cells]
@@ -252,7 +257,7 @@ def parse(
     }
     meta = TableMetadata(
         file=file,
-        layout=LAYOUT,
+        layout=layout,
         decimal=decimal,
         preamble=parse_preamble(preamble, "\t"),
         sheet=sheet_name,

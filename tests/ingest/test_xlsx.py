@@ -1,7 +1,8 @@
-"""``.xlsx`` workbooks: first or named sheet, table anywhere on the sheet."""
+"""Workbooks (`.xlsx`, and `.xls`): first or named sheet, table anywhere on the sheet."""
 
 import numpy as np
 import openpyxl
+import pandas as pd
 import pytest
 
 from pipeline.errors import EmptyFileError, LayoutError, ValueParseError
@@ -116,3 +117,22 @@ def test_several_logs_after_a_results_sheet_are_refused_each_readable_by_name(wo
 def test_a_log_on_the_first_sheet_is_read_whatever_follows(workbook):
     table, meta = read_table(workbook({"Log": LOG, "Copy": LOG}))
     assert meta.sheet == "Log" and len(table) == 30
+
+
+def test_an_old_binary_excel_workbook_reads_as_its_xlsx_would(tmp_path, workbook):
+    """The same sheets as ``.xls`` (written with xlwt) and ``.xlsx``: the same table."""
+    xlwt = pytest.importorskip("xlwt")
+    sheets = {"Results": RESULTS, "Specimen 1": [["Zeit", "Kraft", "Weg"], ["s", "kN", "mm"],
+                                                  *LOG[1:]]}
+    book = xlwt.Workbook()
+    for title, rows in sheets.items():
+        sheet = book.add_sheet(title)
+        for r, row in enumerate(rows):
+            for c, value in enumerate(row):
+                sheet.write(r, c, value)
+    book.save(str(tmp_path / "old.xls"))
+    table, meta = read_table(tmp_path / "old.xls")
+    expected, _ = read_table(workbook(sheets))
+    assert (meta.layout, meta.sheet) == ("xls", "Specimen 1")
+    pd.testing.assert_frame_equal(table, expected)
+    np.testing.assert_allclose(table["force"], 500.0 * np.arange(30))
