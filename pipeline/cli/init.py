@@ -9,8 +9,10 @@ placeholder and one ``[[runs]]`` entry per readable file, in natural order of
 the file names, with what was detected written out (columns, units, cycles)
 and every value a person must give marked ``TODO``.
 
-A file is drafted as an engagement run when it looks like an engagement log:
-a time and a force column, no gauge column, sampled at
+A file is drafted as a wear run when it looks like a wear log: a section
+length, or a length or elongation with the running time or cycles and no force
+(a tensile log has a force); as an engagement run when it looks like an
+engagement log: a time and a force column, no gauge column, sampled at
 :data:`ENGAGEMENT_RATE_HZ` or faster; every other file as a tensile run.
 
 An existing run sheet is never overwritten; the draft is written to a
@@ -61,8 +63,10 @@ UNIT_PLACEHOLDER = "TODO"
 #: Longest comment line written into the draft (longer text is shortened).
 COMMENT_WIDTH = 120
 
-#: Roles of the run sheet's ``columns`` / ``units`` tables other than ``gauges``.
-SINGLE_ROLES = ("time", "force", "angle")
+#: Roles of the run sheet's ``columns`` / ``units`` tables other than ``gauges``, by the
+#: kind of run drafted (a cycle counter takes no unit).
+SINGLE_ROLES = {"tensile": ("time", "force", "angle"), "engagement": ("time", "force", "angle"),
+                "wear": ("time", "cycle_count", "length", "force", "speed")}
 
 _ID_UNSAFE = re.compile(r"[^A-Za-z0-9._-]+")
 _CONTROL = re.compile(r"[\x00-\x1f\x7f]")
@@ -205,23 +209,31 @@ def _is_gauge(column: ColumnInfo) -> bool:
 
 
 def run_kind(table: pd.DataFrame, metadata: TableMetadata) -> tuple[str, str]:
-    """``"engagement"`` for a log that looks like one, else ``"tensile"``; and why.
+    """``"wear"`` or ``"engagement"`` for a log that looks like one, else ``"tensile"``;
+    and why.
 
-    An engagement log has a time and a force column and no gauge column, sampled
-    at :data:`ENGAGEMENT_RATE_HZ` or faster.
+    A wear log has a section length, or a length or elongation (a gauge) with the
+    running time or cycles and no force. An engagement log has a time and a force
+    column and no gauge column, sampled at :data:`ENGAGEMENT_RATE_HZ` or faster.
     """
-    rate = sample_rate(table)
+    roles = {column.role for column in metadata.columns}
     has_gauge = any(_is_gauge(column) for column in metadata.columns)
+    if "length" in roles or ("force" not in roles and has_gauge
+                             and roles & {"time", "cycle_count"}):
+        return "wear", ("guessed: a section's length or elongation against the running "
+                        "time or cycles, like a wear log")
+    rate = sample_rate(table)
     if "force" in table and not has_gauge and rate is not None and rate >= ENGAGEMENT_RATE_HZ:
         return "engagement", (f"guessed: time and force at {rate:.4g} Hz and no gauge "
                               "column, like an engagement log")
     return "tensile", "a force and gauge log" if has_gauge else "no gauge column found"
 
 
-def column_map(metadata: TableMetadata) -> dict:
-    """The run sheet's ``columns``: each role found -> the file's column name."""
+def column_map(metadata: TableMetadata, kind: str = "tensile") -> dict:
+    """The run sheet's ``columns`` of a run of `kind`: each role found -> the file's column
+    name."""
     found = {role: next((c.name for c in metadata.columns if c.role == role), None)
-             for role in SINGLE_ROLES}
+             for role in SINGLE_ROLES[kind]}
     mapping: dict = {role: name for role, name in found.items() if name is not None}
     gauges = [column.name for column in metadata.columns if _is_gauge(column)]
     if gauges:
@@ -229,12 +241,14 @@ def column_map(metadata: TableMetadata) -> dict:
     return mapping
 
 
-def unit_map(metadata: TableMetadata) -> dict:
-    """The run sheet's ``units``: the units found, :data:`UNIT_PLACEHOLDER` where the file
-    gives none; ``gauges`` only when every gauge column has one unit (the run sheet takes
-    one unit for all gauges)."""
+def unit_map(metadata: TableMetadata, kind: str = "tensile") -> dict:
+    """The run sheet's ``units`` of a run of `kind`: the units found,
+    :data:`UNIT_PLACEHOLDER` where the file gives none; ``gauges`` only when every gauge
+    column has one unit (the run sheet takes one unit for all gauges)."""
     units: dict = {}
-    for role in SINGLE_ROLES:
+    for role in SINGLE_ROLES[kind]:
+        if role == "cycle_count":  # kept as counted
+            continue
         column = next((c for c in metadata.columns if c.role == role), None)
         if column is not None:
             units[role] = column.unit or UNIT_PLACEHOLDER
@@ -304,23 +318,25 @@ def draft_run(path: Path, folder: Path, taken: set[str]) -> DraftRun:
     ------
     ChainbenchError
         When the readers cannot read the file (:class:`~pipeline.errors.ColumnError`
-        when they find no force column in it).
+        when they find no force column in it, and it is no wear log).
     """
     from pipeline.cli.inspect import summary
 
     table, metadata = _read(path, "tensile")
-    if not any(column.role == "force" for column in metadata.columns):
-        raise ColumnError("no force column found", file=path,
-                          hint="a run needs a force; name it in the run sheet if the file "
-                          "has one")
     kind, reason = run_kind(table, metadata)
+    if kind != "wear" and not any(column.role == "force" for column in metadata.columns):
+        raise ColumnError("no force column found", file=path,
+                          hint="a run needs a force (a wear log, a section length or "
+                          "elongation against time or cycles); name it in the run sheet if "
+                          "the file has one")
     report = summary(_countable(path, table), metadata)
     run = DraftRun(
         file=path.relative_to(folder).as_posix(),
         id=unique_name(safe_name(path.stem, "run"), taken),
-        kind=kind, kind_reason=reason, report=report,
-        metadata=metadata, columns=column_map(metadata), units=unit_map(metadata),
-        notes=report["warnings"][len(metadata.warnings):],  # the cycle counts disagreeing
+        kind=kind, kind_reason=reason, report=report, metadata=metadata,
+        columns=column_map(metadata, kind), units=unit_map(metadata, kind),
+        # the cycle counts disagreeing (a wear log's counter logs a few cycles: no news)
+        notes=report["warnings"][len(metadata.warnings):] if kind != "wear" else [],
     )
     _as_drafted(run, path, metadata)
     return run
@@ -376,10 +392,12 @@ def _campaign(folder: Path) -> list[str]:
     ]
 
 
-def _chain(engagement: bool) -> list[str]:
+def _chain(engagement: bool, wear: bool) -> list[str]:
     lines = [
         "",
         '# TODO: fill in the chain (catalog = "18x64", or d_mm, t_mm, R0_mm, a_mm)',
+        *(['# (a wear run needs the pitch t_mm, or a catalogue roller chain: catalog = "16B")']
+          if wear else []),
         f"[chains.{CHAIN_KEY}]",
         '# catalog = "..."',
         *(f"# {key} = ..." for key in ("d_mm", "t_mm", "R0_mm", "a_mm")),
@@ -450,6 +468,19 @@ def _gauge_lines(run: DraftRun) -> list[str]:
     return lines
 
 
+def _wear_lines() -> list[str]:
+    return [
+        "# TODO: a wear run needs its measured section, what its elongation counts from and "
+        "its sprocket:",
+        "# section_pitches = ...    # pitches N of the measured section (1: one pitch's "
+        "elongation)",
+        '# elongation_reference = "..."    # "nominal" (a length, or against N t) or "first" '
+        "(a gauge zeroed on the new chain): never guessed",
+        "# sprocket_teeth = ...",
+        "# wear_limit_pct = ...     # optional: the lab's own limit of the pitch growth [%]",
+    ]
+
+
 def _engagement_lines() -> list[str]:
     return [
         "# TODO: an engagement run needs its wheel, branch length, speed and chain stiffness:",
@@ -475,14 +506,16 @@ def run_lines(run: DraftRun) -> list[str]:
         lines.append(f"columns = {inline_table(run.columns)}")
         lines.append(f"units = {inline_table(run.units)}")
     lines += [comment(note) for note in [*run.notes, *unit_notes(run)]]
-    lines += _gauge_lines(run) if run.kind == "tensile" else _engagement_lines()
+    lines += {"tensile": _gauge_lines, "wear": lambda _: _wear_lines(),
+              "engagement": lambda _: _engagement_lines()}[run.kind](run)
     return lines
 
 
 def render(folder: Path, runs: list[DraftRun], skipped: list[tuple]) -> str:
     """The draft run sheet of `folder`, as TOML text."""
     lines = [*_header(folder, skipped), *_campaign(folder),
-             *_chain(any(run.kind == "engagement" for run in runs))]
+             *_chain(*(any(run.kind == kind for run in runs)
+                       for kind in ("engagement", "wear")))]
     for run in runs:
         lines += run_lines(run)
     return "\n".join(lines) + "\n"

@@ -206,6 +206,45 @@ def test_engagement_log_is_guessed(tmp_path):
     assert "cycles" not in draft["runs"][0]
 
 
+WEAR_DEMO = Path(__file__).parents[2] / "raw" / "wear-demo"
+
+
+def test_wear_logs_are_drafted_as_wear_runs_that_validate_once_filled_in(tmp_path):
+    """The wear demo's four logs (a length, an elongation without force, cycles, TDMS),
+    drafted without their run sheet, then filled in with the demo sheet's values."""
+    if not WEAR_DEMO.is_dir():
+        pytest.skip("raw/wear-demo is absent")
+    folder = tmp_path / "wear"
+    folder.mkdir()
+    for path in WEAR_DEMO.glob("W16-*"):
+        shutil.copy2(path, folder / path.name)
+    result = init(str(folder))
+    assert result.exit_code == 0, result.output
+    text = (folder / "campaign.toml").read_text(encoding="utf-8")
+    draft = tomllib.loads(text)
+    assert [run["kind"] for run in draft["runs"]] == ["wear"] * 4
+    assert draft["runs"][2]["columns"] == {"cycle_count": "Liczba cykli",
+                                           "length": "Długość odcinka"}
+    assert draft["runs"][2]["units"] == {"length": "mm"}  # a counter takes no unit
+    demo = {run["id"]: run for run in tomllib.loads(
+        (WEAR_DEMO / "campaign.toml").read_text(encoding="utf-8"))["runs"]}
+    for key in ("section_pitches", "elongation_reference", "sprocket_teeth"):
+        assert f"# {key} = " in text
+    entries = text.split("[[runs]]\n")
+    for index, run in enumerate(draft["runs"], start=1):
+        given = demo[run["id"]]
+        entries[index] = entries[index].replace("# section_pitches = ...", "section_pitches = "
+                                                f"{given['section_pitches']}").replace(
+            '# elongation_reference = "..."',
+            f'elongation_reference = "{given["elongation_reference"]}"').replace(
+            "# sprocket_teeth = ...", f"sprocket_teeth = {given['sprocket_teeth']}")
+    text = "[[runs]]\n".join(entries).replace('# catalog = "..."', 'catalog = "16B"')
+    (folder / "campaign.toml").write_text(text, encoding="utf-8")
+    validated = runner.invoke(app, ["validate", str(folder)], env={"COLUMNS": "200"})
+    assert validated.exit_code == 0, validated.output
+    assert "4 runs, 0 problems" in " ".join(validated.output.split())
+
+
 def test_ids_and_order():
     assert safe_name("TST 2021/10 (FA) #22", "run") == "TST_2021_10_FA_22"
     assert safe_name("...", "run") == "run"
