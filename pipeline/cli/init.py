@@ -9,9 +9,10 @@ placeholder and one ``[[runs]]`` entry per readable file, in natural order of
 the file names, with what was detected written out (columns, units, cycles)
 and every value a person must give marked ``TODO``.
 
-A file is drafted as a wear run when it looks like a wear log: a section
-length, or a length or elongation with the running time or cycles and no force
-(a tensile log has a force); as an engagement run when it looks like an
+A file is drafted as a segment-load run when it logs two segment forces beside
+the chain force (a drum rig's tooth segments); as a wear run when it looks like
+a wear log: a section length, or a length or elongation with the running time
+or cycles and no force (a tensile log has a force); as an engagement run when it looks like an
 engagement log: a time and a force column, no gauge column, sampled at
 :data:`ENGAGEMENT_RATE_HZ` or faster; every other file as a tensile run.
 
@@ -54,6 +55,9 @@ CHAIN_KEY = "chain1"
 #: Key of the placeholder wheel the drafted engagement runs are told to name.
 WHEEL_KEY = "wheel1"
 
+#: Key of the placeholder drum the drafted segment-load runs are told to name.
+DRUM_KEY = "drum1"
+
 #: Sampling rate [Hz] from which a log with time and force but no gauge is an engagement log.
 ENGAGEMENT_RATE_HZ = 1000.0
 
@@ -66,7 +70,9 @@ COMMENT_WIDTH = 120
 #: Roles of the run sheet's ``columns`` / ``units`` tables other than ``gauges``, by the
 #: kind of run drafted (a cycle counter takes no unit).
 SINGLE_ROLES = {"tensile": ("time", "force", "angle"), "engagement": ("time", "force", "angle"),
-                "wear": ("time", "cycle_count", "length", "force", "speed")}
+                "wear": ("time", "cycle_count", "length", "force", "speed"),
+                "segment-load": ("time", "force", "segment_force_1", "segment_force_2",
+                                 "side_force")}
 
 _ID_UNSAFE = re.compile(r"[^A-Za-z0-9._-]+")
 _CONTROL = re.compile(r"[\x00-\x1f\x7f]")
@@ -209,15 +215,19 @@ def _is_gauge(column: ColumnInfo) -> bool:
 
 
 def run_kind(table: pd.DataFrame, metadata: TableMetadata) -> tuple[str, str]:
-    """``"wear"`` or ``"engagement"`` for a log that looks like one, else ``"tensile"``;
-    and why.
+    """``"segment-load"``, ``"wear"`` or ``"engagement"`` for a log that looks like one,
+    else ``"tensile"``; and why.
 
-    A wear log has a section length, or a length or elongation (a gauge) with the
-    running time or cycles and no force. An engagement log has a time and a force
-    column and no gauge column, sampled at :data:`ENGAGEMENT_RATE_HZ` or faster.
+    A segment-load log has two segment forces. A wear log has a section length, or a
+    length or elongation (a gauge) with the running time or cycles and no force. An
+    engagement log has a time and a force column and no gauge column, sampled at
+    :data:`ENGAGEMENT_RATE_HZ` or faster.
     """
     roles = {column.role for column in metadata.columns}
     has_gauge = any(_is_gauge(column) for column in metadata.columns)
+    if {"segment_force_1", "segment_force_2"} <= roles:
+        return "segment-load", ("guessed: two segment forces beside the chain force, like a "
+                                "drum rig's log")
     if "length" in roles or ("force" not in roles and has_gauge
                              and roles & {"time", "cycle_count"}):
         return "wear", ("guessed: a section's length or elongation against the running "
@@ -392,16 +402,28 @@ def _campaign(folder: Path) -> list[str]:
     ]
 
 
-def _chain(engagement: bool, wear: bool) -> list[str]:
+def _chain(engagement: bool, wear: bool, segments: bool) -> list[str]:
     lines = [
         "",
         '# TODO: fill in the chain (catalog = "18x64", or d_mm, t_mm, R0_mm, a_mm)',
         *(['# (a wear run needs the pitch t_mm, or a catalogue roller chain: catalog = "16B")']
           if wear else []),
+        *(["# (a segment-load run needs d_mm and torus_radius_mm, or a catalogue chain: "
+           'catalog = "34x126")'] if segments else []),
         f"[chains.{CHAIN_KEY}]",
         '# catalog = "..."',
         *(f"# {key} = ..." for key in ("d_mm", "t_mm", "R0_mm", "a_mm")),
     ]
+    if segments:
+        lines += [
+            "",
+            "# TODO: the drum of the segment-load runs (uncomment and fill in); fitted: which",
+            "# of s and beta the campaign fits, never guessed",
+            f"# [drums.{DRUM_KEY}]",
+            *(f"# {key} = ..." for key in ("groove_width_mm", "contact_distance_mm",
+                                           "flank_inclination_deg")),
+            '# fitted = "..."',
+        ]
     if engagement:
         lines += [
             "",
@@ -468,6 +490,13 @@ def _gauge_lines(run: DraftRun) -> list[str]:
     return lines
 
 
+def _segment_lines() -> list[str]:
+    return [
+        "# TODO: a segment-load run needs its drum:",
+        f'# drum = "{DRUM_KEY}"',
+    ]
+
+
 def _wear_lines() -> list[str]:
     return [
         "# TODO: a wear run needs its measured section, what its elongation counts from and "
@@ -507,6 +536,7 @@ def run_lines(run: DraftRun) -> list[str]:
         lines.append(f"units = {inline_table(run.units)}")
     lines += [comment(note) for note in [*run.notes, *unit_notes(run)]]
     lines += {"tensile": _gauge_lines, "wear": lambda _: _wear_lines(),
+              "segment-load": lambda _: _segment_lines(),
               "engagement": lambda _: _engagement_lines()}[run.kind](run)
     return lines
 
@@ -515,7 +545,7 @@ def render(folder: Path, runs: list[DraftRun], skipped: list[tuple]) -> str:
     """The draft run sheet of `folder`, as TOML text."""
     lines = [*_header(folder, skipped), *_campaign(folder),
              *_chain(*(any(run.kind == kind for run in runs)
-                       for kind in ("engagement", "wear")))]
+                       for kind in ("engagement", "wear", "segment-load")))]
     for run in runs:
         lines += run_lines(run)
     return "\n".join(lines) + "\n"

@@ -245,6 +245,39 @@ def test_wear_logs_are_drafted_as_wear_runs_that_validate_once_filled_in(tmp_pat
     assert "4 runs, 0 problems" in " ".join(validated.output.split())
 
 
+SEGMENT_DEMO = Path(__file__).parents[2] / "raw" / "segment-load-demo"
+
+
+def test_segment_load_logs_are_drafted_as_such_and_validate_once_filled_in(tmp_path):
+    """The segment-load demo's five logs, drafted without their run sheet, then given the
+    demo's chain and drum."""
+    if not SEGMENT_DEMO.is_dir():
+        pytest.skip("raw/segment-load-demo is absent")
+    folder = tmp_path / "segments"
+    folder.mkdir()
+    for path in SEGMENT_DEMO.glob("S34-*"):
+        shutil.copy2(path, folder / path.name)
+    assert init(str(folder)).exit_code == 0
+    text = (folder / "campaign.toml").read_text(encoding="utf-8")
+    draft = tomllib.loads(text)
+    assert [run["kind"] for run in draft["runs"]] == ["segment-load"] * 5
+    assert draft["runs"][4]["columns"] == {"time": "Time", "force": "Force",
+                                           "segment_force_1": "F_K1",
+                                           "segment_force_2": "F_K2"}
+    drum = tomllib.loads((SEGMENT_DEMO / "campaign.toml").read_text(
+        encoding="utf-8"))["drums"]["D34"]
+    text = text.replace('# catalog = "..."', 'catalog = "34x126"').replace(
+        "# [drums.drum1]", "[drums.drum1]").replace('# fitted = "..."',
+                                                    f'fitted = "{drum["fitted"]}"')
+    for key in ("groove_width_mm", "contact_distance_mm", "flank_inclination_deg"):
+        text = text.replace(f"# {key} = ...", f"{key} = {drum[key]}")
+    (folder / "campaign.toml").write_text(text.replace('# drum = "drum1"', 'drum = "drum1"'),
+                                          encoding="utf-8")
+    validated = runner.invoke(app, ["validate", str(folder)], env={"COLUMNS": "200"})
+    assert validated.exit_code == 0, validated.output
+    assert "5 runs, 0 problems" in " ".join(validated.output.split())
+
+
 def test_ids_and_order():
     assert safe_name("TST 2021/10 (FA) #22", "run") == "TST_2021_10_FA_22"
     assert safe_name("...", "run") == "run"
