@@ -206,76 +206,71 @@ def test_engagement_log_is_guessed(tmp_path):
     assert "cycles" not in draft["runs"][0]
 
 
-WEAR_DEMO = Path(__file__).parents[2] / "raw" / "wear-demo"
+DEMOS = Path(__file__).parents[2] / "raw"
+
+
+def drafted_copy(demo: str, logs: str, folder: Path) -> tuple[str, dict]:
+    """The draft of a folder holding demo campaign `demo`'s logs `logs` (a glob) without
+    its run sheet, and that run sheet, as a technician would compare them."""
+    if not (DEMOS / demo).is_dir():
+        pytest.skip(f"raw/{demo} is absent")
+    folder.mkdir()
+    for path in (DEMOS / demo).glob(logs):
+        shutil.copy2(path, folder / path.name)
+    result = init(str(folder))
+    assert result.exit_code == 0, result.output
+    return ((folder / "campaign.toml").read_text(encoding="utf-8"),
+            tomllib.loads((DEMOS / demo / "campaign.toml").read_text(encoding="utf-8")))
+
+
+def validates(folder: Path, text: str, runs: int) -> None:
+    """The filled-in draft `text`, written over `folder`'s, validates with no problem."""
+    (folder / "campaign.toml").write_text(text, encoding="utf-8")
+    validated = runner.invoke(app, ["validate", str(folder)], env={"COLUMNS": "200"})
+    assert validated.exit_code == 0, validated.output
+    assert f"{runs} runs, 0 problems" in " ".join(validated.output.split())
 
 
 def test_wear_logs_are_drafted_as_wear_runs_that_validate_once_filled_in(tmp_path):
     """The wear demo's four logs (a length, an elongation without force, cycles, TDMS),
     drafted without their run sheet, then filled in with the demo sheet's values."""
-    if not WEAR_DEMO.is_dir():
-        pytest.skip("raw/wear-demo is absent")
-    folder = tmp_path / "wear"
-    folder.mkdir()
-    for path in WEAR_DEMO.glob("W16-*"):
-        shutil.copy2(path, folder / path.name)
-    result = init(str(folder))
-    assert result.exit_code == 0, result.output
-    text = (folder / "campaign.toml").read_text(encoding="utf-8")
+    text, demo = drafted_copy("wear-demo", "W16-*", tmp_path / "wear")
     draft = tomllib.loads(text)
     assert [run["kind"] for run in draft["runs"]] == ["wear"] * 4
     assert draft["runs"][2]["columns"] == {"cycle_count": "Liczba cykli",
                                            "length": "Długość odcinka"}
     assert draft["runs"][2]["units"] == {"length": "mm"}  # a counter takes no unit
-    demo = {run["id"]: run for run in tomllib.loads(
-        (WEAR_DEMO / "campaign.toml").read_text(encoding="utf-8"))["runs"]}
+    given = {run["id"]: run for run in demo["runs"]}
     for key in ("section_pitches", "elongation_reference", "sprocket_teeth"):
         assert f"# {key} = " in text
     entries = text.split("[[runs]]\n")
     for index, run in enumerate(draft["runs"], start=1):
-        given = demo[run["id"]]
+        values = given[run["id"]]
         entries[index] = entries[index].replace("# section_pitches = ...", "section_pitches = "
-                                                f"{given['section_pitches']}").replace(
+                                                f"{values['section_pitches']}").replace(
             '# elongation_reference = "..."',
-            f'elongation_reference = "{given["elongation_reference"]}"').replace(
-            "# sprocket_teeth = ...", f"sprocket_teeth = {given['sprocket_teeth']}")
-    text = "[[runs]]\n".join(entries).replace('# catalog = "..."', 'catalog = "16B"')
-    (folder / "campaign.toml").write_text(text, encoding="utf-8")
-    validated = runner.invoke(app, ["validate", str(folder)], env={"COLUMNS": "200"})
-    assert validated.exit_code == 0, validated.output
-    assert "4 runs, 0 problems" in " ".join(validated.output.split())
-
-
-SEGMENT_DEMO = Path(__file__).parents[2] / "raw" / "segment-load-demo"
+            f'elongation_reference = "{values["elongation_reference"]}"').replace(
+            "# sprocket_teeth = ...", f"sprocket_teeth = {values['sprocket_teeth']}")
+    validates(tmp_path / "wear", "[[runs]]\n".join(entries).replace(
+        '# catalog = "..."', 'catalog = "16B"'), runs=4)
 
 
 def test_segment_load_logs_are_drafted_as_such_and_validate_once_filled_in(tmp_path):
     """The segment-load demo's five logs, drafted without their run sheet, then given the
     demo's chain and drum."""
-    if not SEGMENT_DEMO.is_dir():
-        pytest.skip("raw/segment-load-demo is absent")
-    folder = tmp_path / "segments"
-    folder.mkdir()
-    for path in SEGMENT_DEMO.glob("S34-*"):
-        shutil.copy2(path, folder / path.name)
-    assert init(str(folder)).exit_code == 0
-    text = (folder / "campaign.toml").read_text(encoding="utf-8")
+    text, demo = drafted_copy("segment-load-demo", "S34-*", tmp_path / "segments")
     draft = tomllib.loads(text)
     assert [run["kind"] for run in draft["runs"]] == ["segment-load"] * 5
     assert draft["runs"][4]["columns"] == {"time": "Time", "force": "Force",
                                            "segment_force_1": "F_K1",
                                            "segment_force_2": "F_K2"}
-    drum = tomllib.loads((SEGMENT_DEMO / "campaign.toml").read_text(
-        encoding="utf-8"))["drums"]["D34"]
+    drum = demo["drums"]["D34"]
     text = text.replace('# catalog = "..."', 'catalog = "34x126"').replace(
         "# [drums.drum1]", "[drums.drum1]").replace('# fitted = "..."',
                                                     f'fitted = "{drum["fitted"]}"')
     for key in ("groove_width_mm", "contact_distance_mm", "flank_inclination_deg"):
         text = text.replace(f"# {key} = ...", f"{key} = {drum[key]}")
-    (folder / "campaign.toml").write_text(text.replace('# drum = "drum1"', 'drum = "drum1"'),
-                                          encoding="utf-8")
-    validated = runner.invoke(app, ["validate", str(folder)], env={"COLUMNS": "200"})
-    assert validated.exit_code == 0, validated.output
-    assert "5 runs, 0 problems" in " ".join(validated.output.split())
+    validates(tmp_path / "segments", text.replace('# drum = "drum1"', 'drum = "drum1"'), runs=5)
 
 
 def test_ids_and_order():
