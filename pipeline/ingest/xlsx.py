@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import math
 import numbers
+import warnings
 from collections.abc import Mapping
 
 import numpy as np
@@ -89,9 +90,27 @@ def _unreadable(name: str, layout: str, error: Exception) -> LayoutError:
 
 
 def _open_sheet(source: Source, sheet: str | int | None, layout: str
-                ) -> tuple[pd.DataFrame, str, str | None]:
-    """The sheet `sheet` (the first by default) of a workbook of `layout`, its name, and a
-    note when another sheet than the first was taken (:func:`_the_log_sheet`)."""
+                ) -> tuple[pd.DataFrame, str, list[str]]:
+    """The sheet `sheet` (the first by default) of a workbook of `layout`, its name, and
+    notes: another sheet than the first taken (:func:`_the_log_sheet`), and what the
+    workbook's reader warned of (openpyxl on a damaged part it leaves out), which
+    would otherwise reach the console only."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", UserWarning)
+        frame, name, note = _sheet(source, sheet, layout)
+    told = [warning for warning in caught if issubclass(warning.category, UserWarning)]
+    for other in caught:  # a library's deprecation, say: warned as it would have been
+        if other not in told:
+            warnings.warn_explicit(other.message, other.category, other.filename, other.lineno)
+    return frame, name, [*([note] if note else []),
+                         *(f"the workbook's reader ({LAYOUTS[layout]}): {warning.message}"
+                           for warning in told)]
+
+
+def _sheet(source: Source, sheet: str | int | None, layout: str
+           ) -> tuple[pd.DataFrame, str, str | None]:
+    """:func:`_open_sheet` without the reader's warnings: the note is the other sheet
+    taken, if any."""
     file = source.name
     try:
         workbook = pd.ExcelFile(source.file(), engine=LAYOUTS[layout])
@@ -211,7 +230,7 @@ def parse(
     RawTable
     """
     file = source.name
-    frame, sheet_name, sheet_note = _open_sheet(source, sheet, layout)
+    frame, sheet_name, sheet_notes = _open_sheet(source, sheet, layout)
     cells = [[_text(value) for value in row]
              for row in frame.head(HEAD_ROWS).itertuples(index=False)]
     lines = ["\t".join(_sniffed(text) for text in row) for row in cells]
@@ -224,7 +243,7 @@ def parse(
     preamble = [line for index, line in enumerate("\t".join(row) for row in cells[
         : spec.header_index or 0]) if line.strip() and index not in skipped]
     names, units = header_columns(spec)
-    notes = ([sheet_note] if sheet_note else []) + spec.results_warning()
+    notes = sheet_notes + spec.results_warning()
     found, set_aside = numeric_candidates(
         spec, find_candidates(names, units, columns, file=file, header_line=names_line(spec)),
         names, cells[spec.data_index], notes)

@@ -136,3 +136,27 @@ def test_an_old_binary_excel_workbook_reads_as_its_xlsx_would(tmp_path, workbook
     assert (meta.layout, meta.sheet) == ("xls", "Specimen 1")
     pd.testing.assert_frame_equal(table, expected)
     np.testing.assert_allclose(table["force"], 500.0 * np.arange(30))
+
+
+def test_the_workbook_readers_warnings_are_the_tables(workbook, monkeypatch):
+    """openpyxl warns of a damaged part it leaves out (a broken defined name): that goes
+    to the table's warnings, not to the console; a library's deprecation is left alone."""
+    import warnings
+
+    from pipeline.ingest import xlsx
+
+    opened = xlsx._sheet
+
+    def damaged(*arguments):
+        warnings.warn("File contains an invalid specification for 0.", UserWarning,
+                      stacklevel=2)
+        warnings.warn("this engine is deprecated", DeprecationWarning, stacklevel=2)
+        return opened(*arguments)
+
+    monkeypatch.setattr(xlsx, "_sheet", damaged)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        _, meta = read_table(workbook({"Data": ROWS}))
+    assert [w.category for w in caught] == [DeprecationWarning]
+    assert meta.warnings[0] == ("the workbook's reader (openpyxl): File contains an invalid "
+                                "specification for 0.")
