@@ -402,19 +402,20 @@ def _campaign(folder: Path) -> list[str]:
     ]
 
 
-def _chain(engagement: bool, wear: bool, segments: bool) -> list[str]:
+def _chain(kinds: set[str]) -> list[str]:
+    """The chain placeholder, and the drum's and wheel's of the `kinds` of runs drafted."""
     lines = [
         "",
         '# TODO: fill in the chain (catalog = "18x64", or d_mm, t_mm, R0_mm, a_mm)',
         *(['# (a wear run needs the pitch t_mm, or a catalogue roller chain: catalog = "16B")']
-          if wear else []),
+          if "wear" in kinds else []),
         *(["# (a segment-load run needs d_mm and torus_radius_mm, or a catalogue chain: "
-           'catalog = "34x126")'] if segments else []),
+           'catalog = "34x126")'] if "segment-load" in kinds else []),
         f"[chains.{CHAIN_KEY}]",
         '# catalog = "..."',
         *(f"# {key} = ..." for key in ("d_mm", "t_mm", "R0_mm", "a_mm")),
     ]
-    if segments:
+    if "segment-load" in kinds:
         lines += [
             "",
             "# TODO: the drum of the segment-load runs (uncomment and fill in); fitted: which",
@@ -424,7 +425,7 @@ def _chain(engagement: bool, wear: bool, segments: bool) -> list[str]:
                                            "flank_inclination_deg")),
             '# fitted = "..."',
         ]
-    if engagement:
+    if "engagement" in kinds:
         lines += [
             "",
             "# TODO: the wheel of the engagement runs (uncomment and fill in)",
@@ -490,15 +491,16 @@ def _gauge_lines(run: DraftRun) -> list[str]:
     return lines
 
 
-def _segment_lines() -> list[str]:
-    return [
-        "# TODO: a segment-load run needs its drum:",
-        f'# drum = "{DRUM_KEY}"',
-    ]
-
-
-def _wear_lines() -> list[str]:
-    return [
+#: What a drafted run of each kind but a tensile one still needs, as TODO comments.
+_TODO_LINES = {
+    "engagement": [
+        "# TODO: an engagement run needs its wheel, branch length, speed and chain stiffness:",
+        f'# wheel = "{WHEEL_KEY}"',
+        "# branch_length_m = ...",
+        "# rpm = ...          # or omega_per_s = ...",
+        '# E0_N = ...         # or stiffness_from = "<campaign>/<chain>"',
+    ],
+    "wear": [
         "# TODO: a wear run needs its measured section, what its elongation counts from and "
         "its sprocket:",
         "# section_pitches = ...    # pitches N of the measured section (1: one pitch's "
@@ -507,17 +509,12 @@ def _wear_lines() -> list[str]:
         "(a gauge zeroed on the new chain): never guessed",
         "# sprocket_teeth = ...",
         "# wear_limit_pct = ...     # optional: the lab's own limit of the pitch growth [%]",
-    ]
-
-
-def _engagement_lines() -> list[str]:
-    return [
-        "# TODO: an engagement run needs its wheel, branch length, speed and chain stiffness:",
-        f'# wheel = "{WHEEL_KEY}"',
-        "# branch_length_m = ...",
-        "# rpm = ...          # or omega_per_s = ...",
-        '# E0_N = ...         # or stiffness_from = "<campaign>/<chain>"',
-    ]
+    ],
+    "segment-load": [
+        "# TODO: a segment-load run needs its drum:",
+        f'# drum = "{DRUM_KEY}"',
+    ],
+}
 
 
 def run_lines(run: DraftRun) -> list[str]:
@@ -535,17 +532,14 @@ def run_lines(run: DraftRun) -> list[str]:
         lines.append(f"columns = {inline_table(run.columns)}")
         lines.append(f"units = {inline_table(run.units)}")
     lines += [comment(note) for note in [*run.notes, *unit_notes(run)]]
-    lines += {"tensile": _gauge_lines, "wear": lambda _: _wear_lines(),
-              "segment-load": lambda _: _segment_lines(),
-              "engagement": lambda _: _engagement_lines()}[run.kind](run)
+    lines += _gauge_lines(run) if run.kind == "tensile" else _TODO_LINES[run.kind]
     return lines
 
 
 def render(folder: Path, runs: list[DraftRun], skipped: list[tuple]) -> str:
     """The draft run sheet of `folder`, as TOML text."""
     lines = [*_header(folder, skipped), *_campaign(folder),
-             *_chain(*(any(run.kind == kind for run in runs)
-                       for kind in ("engagement", "wear", "segment-load")))]
+             *_chain({run.kind for run in runs})]
     for run in runs:
         lines += run_lines(run)
     return "\n".join(lines) + "\n"

@@ -473,8 +473,9 @@ def fit_stiffness(
     for number in range(1, run.segmentation.n_cycles + 1):
         for name in branches:
             chosen = (cycle == number) & (branch == name) & usable
-            fullest = max(fullest, int(chosen.sum()))
-            if chosen.sum() < MIN_POINTS:
+            count = int(chosen.sum())
+            fullest = max(fullest, count)
+            if count < MIN_POINTS:
                 continue
             f, e = force[chosen], strain[chosen]
             try:

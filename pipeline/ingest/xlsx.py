@@ -147,8 +147,10 @@ def _sheet(source: Source, sheet: str | int | None, layout: str
 
 def _holds_a_log(frame: pd.DataFrame) -> bool:
     """Whether a sheet holds more rows of two numbers or more than a results table does
-    (:data:`~pipeline.ingest.sniff.RESULTS_ROWS`)."""
-    numbers = frame.apply(pd.to_numeric, errors="coerce").notna().sum(axis=1) >= 2
+    (:data:`~pipeline.ingest.sniff.RESULTS_ROWS`), among the rows the table is looked for
+    in (:data:`HEAD_ROWS`): a long log is not converted twice."""
+    head = frame.head(HEAD_ROWS)
+    numbers = head.apply(pd.to_numeric, errors="coerce").notna().sum(axis=1) >= 2
     return int(numbers.sum()) > RESULTS_ROWS
 
 
