@@ -283,7 +283,7 @@ class RunDef(_Strict):
                    "segment-load"]
     file: str = Field(min_length=1)
     chain: str
-    format: Literal["auto", "csv", "xlsx", "xls", "tdms"] = "auto"
+    format: Literal["auto", "csv", "xlsx", "ods", "xls", "tdms"] = "auto"
     sheet: str | None = None
     columns: ColumnMap | None = None
     units: UnitMap | None = None

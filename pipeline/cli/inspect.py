@@ -121,7 +121,7 @@ def _show(report: dict) -> None:
 
 def command(
     file: Annotated[Path, typer.Argument(
-        help="Raw file: CSV, machine export, .lvm, .xlsx, .xls or .tdms.")],
+        help="Raw file: CSV, machine export, .lvm, .xlsx, .ods, .xls or .tdms.")],
     kind: Annotated[Kind, typer.Option("--kind", help="Run kind the file is checked for.")] = (
         Kind.tensile
     ),

@@ -26,7 +26,7 @@ layout              reader
 ``machine_export``  :mod:`pipeline.ingest.delimited` (Instron Bluehill...)
 ``european_csv``    :mod:`pipeline.ingest.delimited`
 ``plain_csv``       :mod:`pipeline.ingest.delimited`
-``xlsx``, ``xls``   :mod:`pipeline.ingest.xlsx`
+``xlsx``            :mod:`pipeline.ingest.xlsx` (also ``ods`` and ``xls``)
 ``tdms``            :mod:`pipeline.ingest.tdms`
 ==================  =========================================================
 
@@ -92,7 +92,7 @@ def read_table(
         for files whose header carries none; it overrides the file's unit.
     format : str
         ``"auto"`` (by content, then suffix), ``"csv"`` (any text layout),
-        ``"xlsx"``, ``"xls"``, ``"tdms"``, or one text layout (``"plain_csv"``,
+        ``"xlsx"``, ``"ods"``, ``"xls"``, ``"tdms"``, or one text layout (``"plain_csv"``,
         ``"european_csv"``, ``"machine_export"``, ``"mts"``).
     sheet : str or int, optional
         Sheet of a workbook (name or 0-based index); the first by default.

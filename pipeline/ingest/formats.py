@@ -1,9 +1,10 @@
 """Which reader reads a file or buffer: its format, then its text layout.
 
-The format comes from the first bytes (zip magic: ``.xlsx``; OLE2 magic: old
-binary Excel, ``.xls``; ``TDSm``: TDMS), then from the name's suffix (a ``.xls``
-name on bytes of text is text: some machines write their tab-separated export
-so); anything else is delimited text, whose
+The format comes from the first bytes (zip magic: ``.xlsx``, or OpenDocument
+``.ods`` when the zip's first entry names that type, as the format requires;
+OLE2 magic: old binary Excel, ``.xls``; ``TDSm``: TDMS), then from the name's
+suffix (a ``.xls`` name on bytes of text is text: some machines write their
+tab-separated export so); anything else is delimited text, whose
 layout is recognised from its sniffed head (:data:`TEXT_LAYOUTS`, tried in
 order; a LabVIEW measurement file by its first line).
 :func:`~pipeline.ingest.read_table`, :func:`~pipeline.ingest.parse_table` and
@@ -42,7 +43,10 @@ TEXT_LAYOUTS = {lvm.LAYOUT: lvm, rigol.LAYOUT: rigol, tektronix.LAYOUT: tektroni
 FORMATS = ("auto", "csv", *xlsx.LAYOUTS, "tdms", *TEXT_LAYOUTS)
 
 _MAGIC = {b"PK\x03\x04": "xlsx", b"\xd0\xcf\x11\xe0": "xls", b"TDSm": "tdms"}
-_SUFFIXES = {".xlsx": "xlsx", ".xlsm": "xlsx", ".tdms": "tdms"}
+_SUFFIXES = {".xlsx": "xlsx", ".xlsm": "xlsx", ".ods": "ods", ".tdms": "tdms"}
+#: An OpenDocument file's first zip entry: its uncompressed ``mimetype`` (the local
+#: header is 30 bytes), here of a spreadsheet.
+_ODS_MIMETYPE = b"mimetype" + b"application/vnd.oasis.opendocument.spreadsheet"
 
 
 def check_options(kind: str, format: str) -> None:
@@ -54,15 +58,20 @@ def check_options(kind: str, format: str) -> None:
 
 
 def format_of(source: Source) -> str:
-    """``"xlsx"``, ``"xls"``, ``"tdms"`` or ``"csv"`` from the first bytes, then the name's
-    suffix."""
-    magic = source.read(0, 4)
-    return _MAGIC.get(magic, _SUFFIXES.get(PurePath(source.name).suffix.lower(), "csv"))
+    """``"xlsx"``, ``"ods"``, ``"xls"``, ``"tdms"`` or ``"csv"`` from the first bytes, then
+    the name's suffix."""
+    by_name = _SUFFIXES.get(PurePath(source.name).suffix.lower(), "csv")
+    by_magic = _MAGIC.get(source.read(0, 4))
+    if by_magic == "xlsx" and (by_name == "ods"
+                               or source.read(30, 30 + len(_ODS_MIMETYPE)) == _ODS_MIMETYPE):
+        return "ods"
+    return by_magic or by_name
 
 
 @dataclass(frozen=True)
 class Sniffed:
-    """The reader chosen for a file: ``"xlsx"``, ``"xls"``, ``"tdms"`` or a text layout.
+    """The reader chosen for a file: a workbook's (``"xlsx"``, ``"ods"``, ``"xls"``),
+    ``"tdms"`` or a text layout.
 
     Attributes
     ----------

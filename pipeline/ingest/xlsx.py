@@ -1,5 +1,5 @@
-"""Workbooks: ``.xlsx`` (openpyxl through pandas) and old binary Excel ``.xls``
-(calamine through pandas), the same tables as the text layouts.
+"""Workbooks: ``.xlsx`` (openpyxl through pandas), OpenDocument ``.ods`` and old
+binary Excel ``.xls`` (calamine through pandas), the same tables as the text layouts.
 
 The table is looked for on the first sheet, or on the sheet the run sheet
 names, exactly as in a text file (when the first sheet holds no log, on the one
@@ -56,7 +56,7 @@ from pipeline.ingest.source import Source
 from pipeline.ingest.table import TableMetadata
 
 #: The workbook layouts, each with the engine pandas reads it with.
-LAYOUTS = {"xlsx": "openpyxl", "xls": "calamine"}
+LAYOUTS = {"xlsx": "openpyxl", "ods": "calamine", "xls": "calamine"}
 
 #: Sheet rows looked at to find the table.
 HEAD_ROWS = 200

@@ -7,7 +7,7 @@ from pipeline.ingest import FORMATS, read_table
 
 
 def test_formats_listed():
-    assert FORMATS == ("auto", "csv", "xlsx", "xls", "tdms", "lvm", "rigol", "tektronix",
+    assert FORMATS == ("auto", "csv", "xlsx", "ods", "xls", "tdms", "lvm", "rigol", "tektronix",
                        "gwinstek", "mts", "machine_export", "european_csv", "plain_csv")
 
 

@@ -1,4 +1,4 @@
-"""Workbooks (`.xlsx`, and `.xls`): first or named sheet, table anywhere on the sheet."""
+"""Workbooks (`.xlsx`, `.ods` and `.xls`): first or named sheet, table anywhere on the sheet."""
 
 import numpy as np
 import openpyxl
@@ -136,6 +136,35 @@ def test_an_old_binary_excel_workbook_reads_as_its_xlsx_would(tmp_path, workbook
     assert (meta.layout, meta.sheet) == ("xls", "Specimen 1")
     pd.testing.assert_frame_equal(table, expected)
     np.testing.assert_allclose(table["force"], 500.0 * np.arange(30))
+
+
+def _ods(path, sheets: dict):
+    """Write `sheets` (name -> rows) as an OpenDocument spreadsheet (odfpy, through pandas)."""
+    pytest.importorskip("odf")
+    with pd.ExcelWriter(path, engine="odf") as book:
+        for title, rows in sheets.items():
+            pd.DataFrame(rows).to_excel(book, sheet_name=title, header=False, index=False)
+    return path
+
+
+def test_an_opendocument_spreadsheet_reads_as_its_xlsx_would(tmp_path, workbook):
+    """LibreOffice's ``.ods``, a results sheet first: the same table as the ``.xlsx``; the
+    format is known by the zip's first entry, whatever the file is named."""
+    sheets = {"Results": RESULTS, "Specimen 1": [["Zeit", "Kraft", "Weg"], ["s", "kN", "mm"],
+                                                  *LOG[1:]]}
+    expected, _ = read_table(workbook(sheets))
+    for name in ("log.ods", "saved-as.xlsx"):
+        table, meta = read_table(_ods(tmp_path / name, sheets))
+        assert (meta.layout, meta.sheet) == ("ods", "Specimen 1")
+        pd.testing.assert_frame_equal(table, expected)
+    np.testing.assert_allclose(table["force"], 500.0 * np.arange(30))
+
+
+def test_a_damaged_opendocument_spreadsheet_is_refused_as_such(tmp_path):
+    path = _ods(tmp_path / "log.ods", {"Data": ROWS})
+    path.write_bytes(path.read_bytes()[:200])
+    with pytest.raises(LayoutError, match=r"not a readable \.ods workbook"):
+        read_table(path)
 
 
 def test_the_workbook_readers_warnings_are_the_tables(workbook, monkeypatch):
