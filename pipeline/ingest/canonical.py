@@ -541,9 +541,9 @@ def _past_midnight(raw: RawTable, step: float) -> str:
             and -DAY <= step < -DAY + 3600):
         return ""
     return (" (the time of day passes midnight; a date in the column before it is joined "
-            "only when the first rows show how to read it: year first, dotted, or a day past "
-            "the 12th; export the date and time in one column, year first, or the time in "
-            "seconds)")
+            "only when it can be read one way: year first, dotted, or of slashes whose "
+            "dates follow one another day by day read day first or month first; export the "
+            "date and time in one column, year first, or the time in seconds)")
 
 
 def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tuple[bool | None, int]:

@@ -38,10 +38,14 @@ log counts from the same origin. Nothing is guessed:
   Graphtec and other data loggers write them) is joined to that date, with a
   note (:func:`date_column`), when every date in the head has one reading: year
   first (``2026/06/01``), dotted day first (``01.06.2026``), or of slashes
-  with a day past the 12th that says the order (``13/06/2026``). Otherwise a
-  time of day that passes midnight steps back by a day: that is reported as a
-  time step back (:mod:`pipeline.ingest.canonical`), not repaired. A date-time
-  carries its date, so it simply goes on counting.
+  with a day past the 12th that says the order (``13/06/2026``). Slashes whose
+  parts are all 12 or less in the head (``05/03/2026``) are read in the one
+  order under which the rows read's dates follow one another day by day
+  (:func:`slash_order`): the other order turns a change of day into a change
+  of month. Where neither order does so (a log that stops for a day), the date
+  is not joined: a time of day that passes midnight then steps back by a day,
+  which is reported as a time step back (:mod:`pipeline.ingest.canonical`),
+  not repaired. A date-time carries its date, so it simply goes on counting.
 """
 
 from __future__ import annotations
@@ -55,6 +59,8 @@ from typing import NamedTuple
 import numpy as np
 import pyarrow as pa
 import pyarrow.compute as pc
+
+from pipeline.errors import LayoutError
 
 #: The clock forms read, by kind: a time of day, a date (year first) and time, and an
 #: elapsed time in minutes and seconds (hours in front once past the hour).
@@ -118,7 +124,9 @@ _DATE_PARTS = {
     "dmy": r"^(?P<day>\d{1,2})[./](?P<month>\d{1,2})[./](?P<year>\d{4})$",
     "mdy": r"^(?P<month>\d{1,2})/(?P<day>\d{1,2})/(?P<year>\d{4})$",
 }
-_ORDER_NAMES = {"ymd": "year first", "dmy": "day first", "mdy": "month first"}
+_ORDER_NAMES = {"ymd": "year first", "dmy": "day first", "mdy": "month first",
+                "slashes": "day or month first, whichever makes the dates follow one "
+                           "another day by day"}
 #: Seconds per day.
 _DAY_SECONDS = 86_400.0
 #: A time of day or date and time split at its fraction of a second.
@@ -176,7 +184,7 @@ class DateColumn(NamedTuple):
     """A column of dates before a time-of-day column: the day of each reading."""
 
     column: int  # its index among the table's fields
-    order: str  # "ymd", "dmy" or "mdy": the order of the date's parts
+    order: str  # "ymd", "dmy", "mdy", or "slashes": dmy or mdy by :func:`slash_order`
     first: str  # the first data row's date: the origin, with the clock's first reading
     name: str  # the column's name, for the note
 
@@ -241,8 +249,13 @@ class ClockColumn:
         """`seconds` (:meth:`seconds`) plus the days from :attr:`date`'s first date to the
         dates `dates` of the same rows (a clock with a date); null where a date is not of
         its form (a missing value, or a cell of another form: the time is then missing)."""
-        days = pc.subtract(_days(dates, self.date.order), _days(
-            pa.chunked_array([[self.date.first]]), self.date.order)[0].as_py())
+        order = self.date.order
+        if order == "slashes":
+            order = slash_order(self.date.first, dates, self.date.name)
+            if order is None:
+                return seconds
+        days = pc.subtract(_days(dates, order), _days(
+            pa.chunked_array([[self.date.first]]), order)[0].as_py())
         return pc.add(seconds, pc.multiply(pc.cast(days, pa.float64()), _DAY_SECONDS))
 
     def seconds_of_texts(self, texts: list[str | None]) -> np.ndarray:
@@ -364,18 +377,19 @@ def date_column(kind: str, index: int, names: list[str], rows: list[list[str]]
     or None.
 
     Taken only when every cell of that column in `rows` (the head's data rows) is a
-    date of one reading: year first (``2026/06/01``, ``2026-06-01``), dotted and
-    day first (``01.06.2026``), or of slashes (``01/06/2026``) when a day past
-    the 12th says which part is the day (``13/06/2026``: day first). Dates of
-    slashes the head does not decide are not joined.
+    date: year first (``2026/06/01``, ``2026-06-01``), dotted and day first
+    (``01.06.2026``), or of slashes (``01/06/2026``). The order of slashes is
+    the head's when a day past the 12th says which part is the day
+    (``13/06/2026``: day first); otherwise it is ``"slashes"``, decided from the
+    rows read (:func:`slash_order`).
 
     Examples
     --------
     >>> rows = [["13/06/2026", "23:59:59"], ["14/06/2026", "00:00:00"]]
     >>> date_column("time of day", 1, ["Date", "Time"], rows)
     DateColumn(column=0, order='dmy', first='13/06/2026', name='Date')
-    >>> date_column("time of day", 1, ["Date", "Time"], [["01/06/2026", "12:00:00"]]) is None
-    True
+    >>> date_column("time of day", 1, ["Date", "Time"], [["01/06/2026", "12:00:00"]])
+    DateColumn(column=0, order='slashes', first='01/06/2026', name='Date')
     """
     column = index - 1
     if kind != "time of day" or column < 0:
@@ -390,10 +404,53 @@ def date_column(kind: str, index: int, names: list[str], rows: list[list[str]]
     if order == "slashes":
         parts = [[int(part) for part in cell.split("/")[:2]] for cell in cells]
         day_first, month_first = (any(part[i] > 12 for part in parts) for i in (0, 1))
-        if day_first == month_first:
+        if day_first and month_first:
             return None
-        order = "dmy" if day_first else "mdy"
+        order = "dmy" if day_first else "mdy" if month_first else "slashes"
     return DateColumn(column, order, cells[0], names[column].strip())
+
+
+def slash_order(first: str, dates: pa.ChunkedArray, name: str = "Date") -> str | None:
+    """``"dmy"`` or ``"mdy"``: the order under which `dates` (the cells of slashes of date
+    column `name`, rows in order; `first` the file's first) step by no day or one day
+    from row to row, not before `first`; None if neither order does.
+
+    Read in the wrong order, a change of day becomes a change of month (``05/03`` to
+    ``06/03``: a day, or a month) or no date at all (a part past 12). A log that
+    stops for a day or more is not decided. Rows of a long log that begin days after
+    `first` with one date all along can be read in both orders: that is refused.
+
+    Raises
+    ------
+    LayoutError
+        If both orders read `dates` so, with different days.
+
+    Examples
+    --------
+    >>> dates = pa.chunked_array([["05/03/2026", "05/03/2026", "06/03/2026"]])
+    >>> slash_order("05/03/2026", dates)
+    'dmy'
+    >>> slash_order("05/03/2026", pa.chunked_array([["05/03/2026", "07/03/2026"]])) is None
+    True
+    """
+    cells = pa.chunked_array([[first], *dates.cast(pa.string()).chunks])
+    offsets = {}
+    for order in ("dmy", "mdy"):
+        try:
+            days = _days(cells, order).to_numpy(zero_copy_only=False)
+        except pa.ArrowInvalid:  # a part past 12 where the month is: not this order
+            continue
+        days = days[~np.isnan(days)] if days.dtype.kind == "f" else days
+        steps = np.diff(days)
+        if steps.size == 0 or (steps[0] >= 0 and np.isin(steps[1:], (0, 1)).all()):
+            offsets[order] = days - days[0]
+    if len(offsets) < 2 or np.array_equal(*offsets.values()):
+        return next(iter(offsets), None)  # both alike: one date all along
+    raise LayoutError(
+        f"the dates from {first.strip()!r} on read as whole days both day first and month "
+        "first: these rows do not show which", column=name,
+        hint="export the date year first, or the date and time in one column, or the time "
+             "in seconds")
 
 
 def unpadded_milliseconds(cells: list[str], first_line: int) -> str | None:

@@ -8,8 +8,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from pipeline.errors import ColumnError, ValueParseError
-from pipeline.ingest import parse_table, read_table
+from pipeline.errors import ColumnError, LayoutError, ValueParseError
+from pipeline.ingest import open_log, parse_table, read_table
 from pipeline.ingest.clock import READ_FORMS, ClockColumn, clock_kind
 
 #: 0.25 s steps from 23:59:58.5: the fifth reading is past midnight.
@@ -117,9 +117,10 @@ def test_a_time_of_day_past_midnight_is_reported_as_a_step_back(write):
     np.testing.assert_allclose(table["time"], expected, rtol=0, atol=1e-9)
     assert meta.time_monotonic is False
     assert ("time: steps back 1 times, first at line 8 (the time of day passes midnight; "
-            "a date in the column before it is joined only when the first rows show how to "
-            "read it: year first, dotted, or a day past the 12th; export the date and time "
-            "in one column, year first, or the time in seconds)") in meta.warnings
+            "a date in the column before it is joined only when it can be read one way: "
+            "year first, dotted, or of slashes whose dates follow one another day by day "
+            "read day first or month first; export the date and time in one column, year "
+            "first, or the time in seconds)") in meta.warnings
 
 
 @pytest.mark.parametrize("step_ms", [1, 7, 37])
@@ -428,16 +429,47 @@ def test_a_date_in_the_column_before_a_time_of_day_is_joined_past_midnight(
                for w in meta.warnings)
 
 
-def test_a_date_of_slashes_the_first_rows_do_not_decide_is_not_joined(write):
-    # 05/03 or 03/05: the day is not past the 12th, so the time of day steps back
+def slashed_log(start: datetime.datetime, written: str, seconds=SECONDS) -> str:
+    """A ``Date,Time,Load (kN)`` log from `start`, its date written as `written`."""
+    return "Date,Time,Load (kN)\n" + "".join(
+        f"{start + datetime.timedelta(seconds=float(s)):{written},%H:%M:%S.%f}"[:-3]
+        + f",{force:.6f}\n" for s, force in zip(seconds, FORCE_KN, strict=True))
+
+
+@pytest.mark.parametrize("written", ["%d/%m/%Y", "%m/%d/%Y"])
+def test_a_date_of_slashes_the_first_rows_do_not_decide_is_read_by_its_days(write, written):
+    """05/03 or 03/05, the day not past the 12th: only the true order reads the change of
+    date at midnight as one day (the other reads a month)."""
     start = datetime.datetime(2026, 3, 5, 23, 59, 58, 500_000)
-    text = "Date,Time,Load (kN)\n" + "".join(
-        f"{start + datetime.timedelta(seconds=float(s)):%d/%m/%Y,%H:%M:%S.%f}"[:-3]
-        + f",{force:.6f}\n" for s, force in zip(SECONDS, FORCE_KN, strict=True))
-    table, meta = read_table(write("log.csv", text), kind="engagement")
+    table, meta = read_table(write("log.csv", slashed_log(start, written)), kind="engagement")
+    np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
+    assert meta.time_monotonic
+    assert any(f"on the dates of column 'Date' (first '{start:{written}}', day or month "
+               "first, whichever makes the dates follow one another day by day)" in w
+               for w in meta.warnings)
+
+
+def test_a_date_of_slashes_that_skips_days_is_not_joined(write):
+    # the logger paused from the 5th to the 7th: neither order steps a day at a time
+    start = datetime.datetime(2026, 3, 5, 23, 59, 58, 500_000)
+    seconds = np.where(SECONDS < 1.5, SECONDS, SECONDS + 86_400.0)
+    table, meta = read_table(write("log.csv", slashed_log(start, "%d/%m/%Y", seconds)),
+                             kind="engagement")
     assert meta.time_monotonic is False
     assert any("time: steps back 1 times" in w and "a date in the column before it" in w
                for w in meta.warnings)
+
+
+def test_rows_of_a_long_log_on_one_later_date_are_refused_not_guessed(write):
+    """A row range on the 6th alone, after a first row on the 5th: a day (05/03, 06/03)
+    or a month (03/05, 03/06) later; the whole file shows the day."""
+    start = datetime.datetime(2026, 3, 5, 23, 59, 58, 500_000)
+    path = write("log.csv", slashed_log(start, "%d/%m/%Y"))
+    reader = open_log(path)
+    whole, _ = reader.read(0, reader.n_rows)
+    np.testing.assert_allclose(whole["time"], SECONDS, rtol=0, atol=1e-9)
+    with pytest.raises(LayoutError, match="read as whole days both day first and month first"):
+        reader.read(reader.n_rows - 3, reader.n_rows)
 
 
 def test_a_graphtec_log_with_its_date_apart_counts_on_past_midnight(write, graphtec_export):
