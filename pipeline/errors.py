@@ -86,6 +86,26 @@ class LayoutError(IngestError):
     """The table, its header or its delimiter cannot be found."""
 
 
+class SpecimensError(LayoutError):
+    """The file holds several specimens side by side and the run does not say which one
+    it reads.
+
+    Attributes
+    ----------
+    specimens : list of str
+        What the run sheet's ``specimen_in_file`` may be: the labels over the
+        specimens' columns, or their places (``"1"``, ``"2"``...) when unlabelled.
+    """
+
+    def __init__(self, message: str, *, specimens: list[str], **where) -> None:
+        self.specimens = specimens
+        super().__init__(message, **where)
+
+    def __reduce__(self):
+        restore, (cls, message, fields) = super().__reduce__()
+        return restore, (cls, message, {**fields, "specimens": self.specimens})
+
+
 class ColumnError(IngestError):
     """A column is missing, duplicated or cannot be given a role."""
 

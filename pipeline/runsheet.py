@@ -285,6 +285,9 @@ class RunDef(_Strict):
     chain: str
     format: Literal["auto", "csv", "xlsx", "ods", "xls", "tdms"] = "auto"
     sheet: str | None = None
+    #: of several specimens side by side in the file, the one read: its label, or its
+    #: place from 1 at the left
+    specimen_in_file: str | int | None = None
     columns: ColumnMap | None = None
     units: UnitMap | None = None
     note: str = ""

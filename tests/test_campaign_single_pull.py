@@ -8,6 +8,7 @@ readers: within 5 %, and never from an average of different kinds of channel.
 
 from __future__ import annotations
 
+import dataclasses
 import shutil
 import textwrap
 
@@ -157,6 +158,42 @@ def test_a_strain_column_the_reader_does_not_know_can_be_named(tmp_path, named):
             truth.gauge_length / truth.crosshead_compliance, rel=0.02)
         assert len(crosshead) == 1 and "'Machine_Displacement'" in crosshead[0]
         assert 'columns = {gauges = "..."}' in crosshead[0]
+
+
+def test_two_specimens_side_by_side_in_one_file_are_two_runs(tmp_path):
+    """A batch exported as Shimadzu Trapezium does: a label over each specimen's columns,
+    the shorter specimen's left empty below its end. Each run reads its own specimen
+    (by label, by place) and gets its own E0."""
+    truths = [PullTruth.for_chain("18x64", to_fracture=False, proof_force=force)
+              for force in (300e3, 250e3)]
+    truths[1] = dataclasses.replace(truths[1], E0=0.8 * truths[1].E0)
+    logs = [simulate_pull(truth, seed=seed) for seed, truth in enumerate(truths)]
+    columns = [pd.DataFrame({"Temps": log["time"], "Force": log["force"] / 1e3,
+                             "Ext.1": log["extensometer"] * 1e3}) for log in logs]
+    table = pd.concat(columns, axis=1)  # the shorter one padded with empty cells
+    folder = tmp_path / "batch"
+    folder.mkdir()
+    header = '"A-1",,,"B-2",,\n' + '"sec","kN","mm","sec","kN","mm"\n'
+    text = table.to_csv(index=False, float_format="%.9g")
+    names, body = text.split("\n", 1)
+    (folder / "batch.csv").write_text(header.split("\n")[0] + "\n" + names + "\n"
+                                      + header.split("\n")[1] + "\n" + body)
+    assert len(logs[0]) != len(logs[1])
+    gauge = f"gauge_length_mm = {truths[0].gauge_length * 1e3}\n"
+    campaign(folder, "batch.csv", gauge + 'specimen_in_file = "A-1"\n' + textwrap.dedent("""\
+        [[runs]]
+        id = "P2"
+        kind = "tensile"
+        file = "batch.csv"
+        chain = "c"
+        cycles = 1
+        specimen_in_file = 2
+        """) + gauge)
+    result = process_campaign(folder, tmp_path / "processed" / folder.name)
+    assert result.ok, [failure.message for failure in result.failures]
+    for run, truth in zip(("P1", "P2"), truths, strict=True):
+        dataset = read_dataset(result.output / f"{run}.nc")
+        assert float(dataset["specimen_E0"]) == pytest.approx(truth.E0, rel=0.01)
 
 
 def test_two_gauges_of_one_kind_that_disagree_are_not_averaged(tmp_path):

@@ -86,6 +86,7 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
         "delimiter": metadata.delimiter,
         "decimal": metadata.decimal,
         "sheet": metadata.sheet,
+        "specimen": metadata.specimen,
         "rows": metadata.rows,
         "columns": [
             {"name": column.name, "role": column.role, "unit": column.unit,
@@ -102,8 +103,8 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
 def _show(report: dict) -> None:
     shown = {"\t": "tab", " ": "space"}
     console.print(f"[bold]{escape(str(report['file']))}[/bold]", highlight=False)
-    for key in ("layout", "encoding", "delimiter", "decimal", "sheet", "rows", "cycles",
-                "machine_cycles"):
+    for key in ("layout", "encoding", "delimiter", "decimal", "sheet", "specimen", "rows",
+                "cycles", "machine_cycles"):
         value = report[key]
         if value is not None:
             console.print(f"  {key:<15}{shown.get(value, value) if key == 'delimiter' else value}",
@@ -125,6 +126,10 @@ def command(
     kind: Annotated[Kind, typer.Option("--kind", help="Run kind the file is checked for.")] = (
         Kind.tensile
     ),
+    specimen: Annotated[str | None, typer.Option(
+        "--specimen", help="Of several specimens side by side in FILE, the one shown: its "
+                           "label or its place from 1 (the run sheet's specimen_in_file).")
+    ] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON (for programs).")] = False,
     debug: Annotated[bool, typer.Option("--debug", help="Show the traceback of an error.")] = False,
 ) -> None:
@@ -134,7 +139,7 @@ def command(
         from pipeline.runs import READ_AS
 
         table, metadata = read_table(file, kind=READ_AS.get(kind.value, kind.value),
-                                     strict=False)
+                                     specimen=specimen, strict=False)
         report = summary(table, metadata)
     except ChainbenchError as error:
         if debug:

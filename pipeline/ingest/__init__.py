@@ -66,6 +66,7 @@ def read_table(
     format: str = "auto",
     sheet: str | int | None = None,
     *,
+    specimen: str | int | None = None,
     strict: bool = True,
 ) -> tuple[pd.DataFrame, TableMetadata]:
     """Read a raw test-machine file into the canonical table.
@@ -96,6 +97,11 @@ def read_table(
         ``"european_csv"``, ``"machine_export"``, ``"mts"``).
     sheet : str or int, optional
         Sheet of a workbook (name or 0-based index); the first by default.
+    specimen : str or int, optional
+        Run-sheet ``specimen_in_file``: of the specimens whose columns stand side by
+        side in the file (the same names repeated; Shimadzu Trapezium, Mecmesin
+        Emperor), the one read: its label over the columns, or its place from 1 at
+        the left. Such a file is refused without it.
     strict : bool
         If False, role and unit problems become warnings and the table holds
         what could be converted (used by ``chainbench inspect``).
@@ -142,7 +148,7 @@ def read_table(
     """
     check_options(kind, format)
     with opened(Path(path)) as source:
-        return _table(source, kind, columns, units, format, sheet, strict)
+        return _table(source, kind, columns, units, format, sheet, specimen, strict)
 
 
 def parse_table(
@@ -153,6 +159,7 @@ def parse_table(
     format: str = "auto",
     sheet: str | int | None = None,
     *,
+    specimen: str | int | None = None,
     strict: bool = True,
     name: str = "<buffer>",
 ) -> tuple[pd.DataFrame, TableMetadata]:
@@ -170,7 +177,7 @@ def parse_table(
         pyarrow's reading threads may hold a view of it for a moment after
         the call returns, so an ``mmap`` closed at once may refuse
         (``BufferError``): read from ``bytes``, or let the map be collected.
-    kind, columns, units, format, sheet, strict
+    kind, columns, units, format, sheet, specimen, strict
         As for :func:`read_table`.
     name : str
         The name errors and :attr:`TableMetadata.file` give the buffer; its
@@ -191,7 +198,8 @@ def parse_table(
         For an unknown `kind` or `format`.
     """
     check_options(kind, format)
-    return _table(BufferSource(buffer, name), kind, columns, units, format, sheet, strict)
+    return _table(BufferSource(buffer, name), kind, columns, units, format, sheet, specimen,
+                  strict)
 
 
 def _table(
@@ -201,8 +209,9 @@ def _table(
     units: Mapping | None,
     format: str,
     sheet: str | int | None,
+    specimen: str | int | None,
     strict: bool,
 ) -> tuple[pd.DataFrame, TableMetadata]:
     """The parse path of :func:`read_table` and :func:`parse_table`."""
     raw = read_raw(source, sniff(source, format), columns, sheet)
-    return canonical.build(raw, kind=kind, units=units, strict=strict)
+    return canonical.build(raw, kind=kind, units=units, strict=strict, specimen=specimen)

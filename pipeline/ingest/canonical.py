@@ -31,6 +31,7 @@ row-range reader of :mod:`pipeline.ingest.stream`): the same values either way.
 
 from __future__ import annotations
 
+import json
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -38,7 +39,13 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from pipeline.errors import ChainbenchError, ColumnError, LayoutError, UnitError
+from pipeline.errors import (
+    ChainbenchError,
+    ColumnError,
+    LayoutError,
+    SpecimensError,
+    UnitError,
+)
 from pipeline.ingest.decimalshift import decimal_shifts, step_blocks
 from pipeline.ingest.names import gauge_kind, peak_partner, repeats, tokens
 from pipeline.ingest.raw import RawColumns, RawTable
@@ -155,7 +162,7 @@ class Conversion:
 
 def settle(
     raw: RawColumns, empty: set[int], *, kind: str, units: Mapping | None = None,
-    strict: bool = True,
+    strict: bool = True, specimen: str | int | None = None,
 ) -> Conversion:
     """Settle the roles and SI units of a file's columns.
 
@@ -174,26 +181,24 @@ def settle(
         overrides the file's unit, with a warning when they differ.
     strict : bool
         Raise on role and unit problems (True) or turn them into warnings.
+    specimen : str or int, optional
+        Run-sheet ``specimen_in_file``: of several specimens side by side, the one
+        read (its label, or its place from 1 at the left); the other specimens'
+        columns take no role.
 
     Raises
     ------
     LayoutError
         When the columns repeat one group of names side by side (several
-        specimens in one file: :func:`~pipeline.ingest.names.repeats`), or when
+        specimens in one file: :func:`~pipeline.ingest.names.repeats`) and
+        `specimen` does not say which to read, or says it of a file of one; when
         every force column is a cycle's maximum or minimum (a table of peaks).
     ColumnError, UnitError
         In strict mode, as listed in the module docstring.
     """
     meta = raw.metadata
-    if (count := repeats(raw.names)) > 1:
-        group = raw.names[:len(raw.names) // count]
-        raise LayoutError(
-            f"the columns {', '.join(name for name in group if name)} repeat {count} times "
-            f"side by side: the file holds {count} specimens or tests",
-            file=meta.file, row=meta.header_line,
-            hint="export each specimen to a file of its own, or delete the other "
-                 "specimens' columns; one file is one run",
-        )
+    others = _other_specimens(raw, specimen)
+    empty = empty | others
     _refuse_a_table_of_peaks(raw)
     problems = _Problems(strict, meta.warnings)
     sheet_units = _run_sheet_units(units, meta.file)
@@ -228,7 +233,7 @@ def settle(
             kind=gauge_kind(raw.names[index]) if canonical.get(index, "").startswith(
                 ("gauge_", "strain_")) else None,
         )
-        for index in range(len(raw.names))
+        for index in range(len(raw.names)) if index not in others
     )
     unitless_time = next((index for index in assigned.get("time", []) if index not in factors),
                          None)
@@ -250,8 +255,52 @@ def _refuse_a_table_of_peaks(raw: RawColumns) -> None:
         )
 
 
+def _other_specimens(raw: RawColumns, specimen: str | int | None) -> set[int]:
+    """The columns of the specimens other than `specimen` where the columns repeat one
+    group of names side by side (:func:`~pipeline.ingest.names.repeats`); `specimen` is a
+    label of :attr:`TableMetadata.specimens` or a place from 1. Records the one read in
+    the metadata."""
+    meta = raw.metadata
+    count = repeats(raw.names)
+    labels = meta.specimens if len(meta.specimens) == count else []
+    places = [str(place) for place in range(1, count + 1)]
+    shown = [*labels[:3], "...", labels[-1]] if len(labels) > 4 else labels
+    choices = (f"specimen_in_file = {json.dumps(labels[0] if labels else 1)}: "
+               + (f"the file's labels {', '.join(shown)}, or " if labels else "")
+               + f"the places 1 to {count} from the left")
+    if count == 1:
+        if specimen is not None:
+            raise LayoutError(
+                f"specimen_in_file = {json.dumps(specimen)}, but the file holds one specimen",
+                file=meta.file, row=meta.header_line,
+                hint="specimen_in_file is for a file whose columns repeat for several "
+                     "specimens side by side: leave it out")
+        return set()
+    named = len(raw.names)
+    while named and not raw.names[named - 1].strip():  # trailing unnamed columns: no group's
+        named -= 1
+    size = named // count
+    group = raw.names[:size]
+    said = (f"the columns {', '.join(name for name in group if name)} repeat {count} times "
+            f"side by side: the file holds {count} specimens or tests")
+    if specimen is None:
+        raise SpecimensError(
+            said, specimens=labels or places, file=meta.file, row=meta.header_line,
+            hint=f"say which one a run reads in the run sheet ({choices}; one run per "
+                 "specimen may name the same file), or export each specimen to a file of "
+                 "its own")
+    chosen = labels.index(specimen) if specimen in labels else (
+        places.index(str(specimen)) if str(specimen) in places else None)
+    if chosen is None:
+        raise LayoutError(f"{said}, none of them {json.dumps(specimen)}",
+                          file=meta.file, row=meta.header_line, hint=f"name one: {choices}")
+    meta.specimen = labels[chosen] if labels else places[chosen]
+    return set(range(len(raw.names))) - set(range(chosen * size, (chosen + 1) * size))
+
+
 def build(
-    raw: RawTable, *, kind: str, units: Mapping | None = None, strict: bool = True
+    raw: RawTable, *, kind: str, units: Mapping | None = None, strict: bool = True,
+    specimen: str | int | None = None,
 ) -> tuple[pd.DataFrame, TableMetadata]:
     """Settle roles and units of `raw` and return the canonical table.
 
@@ -259,8 +308,9 @@ def build(
     ----------
     raw : RawTable
         What the layout reader found: the whole file.
-    kind, units, strict
-        See :func:`settle`.
+    kind, units, strict, specimen
+        See :func:`settle`. The rows past the last of a `specimen` shorter than the
+        file's longest, empty in its columns, are left out with a note.
 
     Returns
     -------
@@ -282,12 +332,26 @@ def build(
     empty = raw.empty | clean(raw, meta.warnings)
     if empty:
         meta.warnings.append(empty_warning(raw.names, empty))
-    conversion = settle(raw, empty, kind=kind, units=units, strict=strict)
+    conversion = settle(raw, empty, kind=kind, units=units, strict=strict, specimen=specimen)
     table = conversion.table(raw)
+    if meta.specimen is not None:
+        table = _without_padding(table, raw, meta)
     meta.time_monotonic, meta.time_gaps = conversion.checked_rows(table, raw, meta.warnings)
-    meta.rows = raw.rows
+    meta.rows = len(table)
     meta.columns = list(conversion.infos)
     return table, meta
+
+
+def _without_padding(table: pd.DataFrame, raw: RawTable, meta: TableMetadata) -> pd.DataFrame:
+    """`table` (one specimen's of several side by side) without its last rows where they
+    are empty in every column: the specimen ended before the file's longest did."""
+    filled = np.flatnonzero(table.notna().any(axis=1).to_numpy())
+    stop = int(filled[-1]) + 1 if filled.size else len(table)
+    if stop < len(table):
+        meta.warnings.append(
+            f"specimen {meta.specimen!r} ends at {raw.where(stop - 1)}: the "
+            f"{len(table) - stop} row(s) below, empty in its columns, were left out")
+    return table.iloc[:stop]
 
 
 def convert_rows(raw: RawTable, conversion: Conversion) -> tuple[pd.DataFrame, list[str]]:

@@ -257,6 +257,7 @@ def metadata(head: Head, spec: TableSpec, layout: str, preamble: dict[str, str])
         header_line=names_line(spec),
         first_data_line=spec.data_index + 1,
         warnings=spec.results_warning(),
+        specimens=list(spec.specimens),
     )
 
 

@@ -38,7 +38,7 @@ from pipeline.ingest.clock import (
     looks_like_clock,
     unpadded_milliseconds,
 )
-from pipeline.ingest.names import match_role
+from pipeline.ingest.names import match_role, repeats
 from pipeline.ingest.source import Source
 from pipeline.ingest.unitparse import NO_UNIT_CELLS, is_sample_interval, looks_like_unit
 
@@ -188,6 +188,9 @@ class TableSpec:
         the step, a status): they hold no numbers to read.
     notes : tuple of str
         What the reader should say of how the header was read.
+    specimens : tuple of str
+        The labels of the specimens whose groups of columns stand side by side, as
+        the file writes them over the columns (none: one specimen, or unlabelled).
     """
 
     delimiter: str
@@ -205,6 +208,7 @@ class TableSpec:
     passed: list[str] = field(default_factory=list)
     texts: frozenset[int] = frozenset()
     notes: tuple[str, ...] = ()
+    specimens: tuple[str, ...] = ()
 
     @property
     def fractions(self) -> frozenset[int]:
@@ -608,16 +612,7 @@ def find_table(
         data -= 1
     above = _above(kinds, data)
     labels = _specimen_labels(rows, kinds, above)
-    if len(labels) > 1:
-        raise LayoutError(
-            f"the row of specimen labels {', '.join(map(repr, labels[:3]))}"
-            f"{', ...' if len(labels) > 3 else ''} over the data: the file holds "
-            f"{len(labels)} specimens side by side",
-            file=name, row=above + 1,
-            hint="export each specimen to a file of its own, or delete the other "
-                 "specimens' columns; one file is one run",
-        )
-    if labels:  # one specimen's label between the header and the data
+    if labels:  # the specimens' labels between the header and the data
         above = _above(kinds, above)
     elif _processing_row(rows, kinds, above):  # a Campbell logger's row under the units
         above = _above(kinds, above)
@@ -683,6 +678,10 @@ def find_table(
                "blanks or more)" if delimiter == BLANKS else ""),
         )
     names = names + [""] * (columns - len(names))
+    labels_over = -1
+    if len(labels) < 2 and above >= 1:  # labels over the names (Shimadzu Trapezium)
+        labels = _labels_over(rows[_above(kinds, above)], names)
+        labels_over = _above(kinds, above) if len(labels) > 1 else -1
     units: list[str | None] = [None] * columns
     clocks = {} if pairs else {
         index: ClockColumn(kind, cell, None if kind == "minutes and seconds" else
@@ -696,6 +695,9 @@ def find_table(
             unit = cell.strip().strip("()[]<>").strip()
             units[index] = (None if unit.lower() in NO_UNIT_CELLS or is_sample_interval(unit)
                             or _over_text(rows[data], index, decimal) else unit or None)
+    specimens = tuple(labels) if len(labels) > 1 else ()
+    if specimens:  # names and units written over the first specimen's columns only
+        names, units = _each_specimen(names, specimens), _each_specimen(units, specimens)
     return TableSpec(
         delimiter=delimiter,
         decimal="," if pairs else decimal,
@@ -706,7 +708,8 @@ def find_table(
         width=width,
         units=units,
         preamble=[line for index, line in enumerate(lines[:max(above, 0)])
-                  if line.strip() and not (results and results[0] <= index < results[1])],
+                  if line.strip() and index != labels_over
+                  and not (results and results[0] <= index < results[1])],
         passed=[line for line in lines[slice(*results)] if line.strip()] if results else [],
         pairs=pairs,
         clocks=clocks,
@@ -714,6 +717,7 @@ def find_table(
         texts=frozenset() if pairs else _text_columns(rows[data:], kinds[data:], columns,
                                                       decimal),
         notes=notes,
+        specimens=specimens,
     )
 
 
@@ -825,7 +829,22 @@ def _specimen_labels(rows: list[list[str]], kinds: list[str], index: int) -> lis
     header = _above(kinds, index)
     if header < 0 or kinds[index] != "text" or kinds[header] != "text":
         return []
-    row = rows[index]
+    return _group_labels(rows[index])
+
+
+def _labels_over(row: list[str], names: list[str]) -> list[str]:
+    """The labels of `row`, the row over the names row, if it labels the groups of columns
+    that repeat one group of names (Shimadzu Trapezium: ``"CuivreC1",,,,"AcierC70",,,``
+    over ``"Temps","Force","Stroke","Ext.1","Temps",...``), else []."""
+    labels = _group_labels(row)
+    count = repeats(names)
+    return labels if len(labels) > 1 and len(labels) == count else []
+
+
+def _group_labels(row: list[str]) -> list[str]:
+    """The labels of `row` when they stand alone at the start of groups of columns of equal
+    width (one label: over the first column, every other cell empty) and name no role;
+    else []."""
     filled = [position for position, cell in enumerate(row) if cell.strip()]
     if not filled or filled[0] != 0 or len(row) < 2:
         return []
@@ -835,6 +854,15 @@ def _specimen_labels(rows: list[list[str]], kinds: list[str], index: int) -> lis
             or len(set(labels)) < len(labels) or any(match_role(label) for label in labels)):
         return []
     return labels
+
+
+def _each_specimen(cells: list, specimens: tuple[str, ...]) -> list:
+    """`cells` (names or units, one per column) with each blank one of a later specimen's
+    group of columns filled from the first group's (Mecmesin Emperor writes them over
+    the first specimen only)."""
+    stride = len(cells) // len(specimens)
+    return [cell if (cell or "").strip() or index < stride else cells[index % stride]
+            for index, cell in enumerate(cells)]
 
 
 def require_names(spec: TableSpec, file: str, columns: Mapping | None) -> None:

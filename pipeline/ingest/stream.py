@@ -291,6 +291,7 @@ def open_log(
     units: Mapping | None = None,
     format: str = "auto",
     sheet: str | int | None = None,
+    specimen: str | int | None = None,
 ) -> LogReader:
     """Open a log to read it by row ranges (see the module docstring).
 
@@ -298,7 +299,7 @@ def open_log(
     ----------
     path : str or Path
         The file.
-    kind, columns, units, format, sheet
+    kind, columns, units, format, sheet, specimen
         As for :func:`~pipeline.ingest.read_table` (``kind`` defaults to
         ``"engagement"``); role and unit problems raise, as with ``strict=True``.
 
@@ -324,7 +325,7 @@ def open_log(
     meta = rows.header.metadata
     if empty:
         meta.warnings.append(empty_warning(rows.header.names, empty))
-    conversion = settle(rows.header, empty, kind=kind, units=units)
+    conversion = settle(rows.header, empty, kind=kind, units=units, specimen=specimen)
     meta.rows = rows.rows
     meta.columns = list(conversion.infos)
     return LogReader(str(path), rows.rows, meta, conversion, rows, stamp)

@@ -76,6 +76,9 @@ class TableMetadata:
     first_data_line: int | None = None  #: 1-based line (or sheet row) of the first data row
     time_monotonic: bool | None = None  #: False if time ever steps back; None without time
     time_gaps: int = 0  #: steps longer than :data:`GAP_FACTOR` x the median time step
+    #: the labels of the specimens side by side in the file (none: one, or unlabelled)
+    specimens: list[str] = field(default_factory=list)
+    specimen: str | None = None  #: the one read of several side by side (its label or place)
 
     def as_dict(self) -> dict:
         """A JSON-ready copy (as printed by ``chainbench inspect --json``)."""

@@ -285,6 +285,7 @@ def parse(
         header_line=names_line(spec),
         first_data_line=int(sheet_rows[0]),
         warnings=notes,
+        specimens=list(spec.specimens),
     )
     return RawTable(
         names=names,

@@ -457,12 +457,20 @@ def test_a_run_label_after_the_unit_keeps_the_unit(write):
     np.testing.assert_allclose(table["force"], [-7.1e-15, 1.25, 2.5])
 
 
-def test_runs_side_by_side_are_refused_as_such(write):
+def test_runs_side_by_side_are_refused_unless_the_run_sheet_says_which(write):
     names = ",".join(f"{name} Run {run}" for run in (5, 6)
                      for name in ("Time (s)", "Force (N)", "Position (m)"))
     text = names + "\n" + "0.0,0.1,0.0,0.0,0.2,0.0\n0.1,0.2,0.01,0.1,0.3,0.02\n"
-    with pytest.raises(LayoutError, match="repeat 2 times side by side"):
-        read_table(write("spring.csv", text), kind="tensile")
+    path = write("spring.csv", text)
+    with pytest.raises(LayoutError, match="repeat 2 times side by side") as caught:
+        read_table(path, kind="tensile")
+    assert "specimen_in_file = 1: the places 1 to 2 from the left" in caught.value.hint
+    table, meta = read_table(path, kind="tensile", specimen=2)  # unlabelled: by place
+    np.testing.assert_allclose(table["force"], [0.2, 0.3])
+    np.testing.assert_allclose(table["gauge_1"], [0.0, 0.02])
+    assert meta.specimen == "2"
+    assert [column.name for column in meta.columns] == [
+        "Time Run 6", "Force Run 6", "Position Run 6"]
 
 
 # a real Mecmesin Emperor export: names, units, then a label over each specimen's columns
@@ -477,10 +485,56 @@ EMPEROR = (
 )
 
 
-def test_specimens_side_by_side_under_a_row_of_labels_are_refused(write):
-    with pytest.raises(LayoutError, match="holds 2 specimens side by side") as caught:
-        read_table(write("emperor.csv", EMPEROR))
-    assert caught.value.row == 3 and "file of its own" in caught.value.hint
+def test_specimens_side_by_side_under_a_row_of_labels_are_read_one_a_run(write):
+    """Emperor writes the names and units over the first specimen's columns only: each
+    specimen's columns take them; the run sheet says which specimen a run reads."""
+    path = write("emperor.csv", EMPEROR)
+    with pytest.raises(LayoutError, match="repeat 2 times side by side") as caught:
+        read_table(path)
+    assert caught.value.hint.startswith(
+        'say which one a run reads in the run sheet (specimen_in_file = "Sample 1": the '
+        "file's labels Sample 1, Sample 2, or the places 1 to 2 from the left")
+    for specimen in ("Sample 2", 2):
+        table, meta = read_table(path, specimen=specimen)
+        np.testing.assert_allclose(table["force"], [0.0601, 0.1202, 0.1202])
+        np.testing.assert_allclose(table["gauge_1"], [0, 2.5e-6, 2.5e-6])
+        np.testing.assert_allclose(table["time"], [0, 0.0012, 0.003])  # minutes, in seconds
+        assert (meta.specimens, meta.specimen) == (["Sample 1", "Sample 2"], "Sample 2")
+        assert [(column.name, column.unit) for column in meta.columns] == [
+            ("Force", "N"), ("Distance", "mm"), ("Time", "min"), ("Event", None)]
+    with pytest.raises(LayoutError, match='none of them "Sample 3"'):
+        read_table(path, specimen="Sample 3")
+
+
+# a real Shimadzu Trapezium export of a batch: a label over each specimen's columns, the
+# shorter specimen's columns left empty below its last row
+TRAPEZIUM = (
+    '"CuivreC1",,,"AcierC70",,\n'
+    '"Temps","Force","Stroke","Temps","Force","Stroke"\n'
+    '"sec","N","mm","sec","N","mm"\n'
+    '"0","143.954","7.5E-05","0","81.86976","5E-05"\n'
+    '"0.01","143.9857","0.0001625","0.01","81.8952","0.00015"\n'
+    '"","","","0.02","81.93652","0.000525"\n'
+)
+
+
+def test_specimens_side_by_side_under_their_labels_and_a_shorter_one(write):
+    path = write("tract.csv", TRAPEZIUM)
+    table, meta = read_table(path, specimen="CuivreC1")
+    np.testing.assert_allclose(table["force"], [143.954, 143.9857])
+    assert meta.rows == 2 and meta.preamble == {}
+    assert ("specimen 'CuivreC1' ends at line 5: the 1 row(s) below, empty in its columns, "
+            "were left out") in meta.warnings
+    table, meta = read_table(path, specimen="AcierC70")
+    np.testing.assert_allclose(table["time"], [0, 0.01, 0.02])
+    assert meta.rows == 3 and not meta.warnings
+
+
+def test_a_specimen_asked_of_a_file_of_one_is_refused(write):
+    one = "".join(line.rsplit(",", 4)[0] + "\n" if line else "\n"
+                  for line in EMPEROR.splitlines())
+    with pytest.raises(LayoutError, match="but the file holds one specimen"):
+        read_table(write("emperor.csv", one), specimen="Sample 1")
 
 
 def test_one_specimens_label_between_the_header_and_the_data_is_passed_over(write):
