@@ -35,7 +35,7 @@ from rich.markup import escape
 from rich.table import Table
 
 from pipeline.cli._output import console, json_ready
-from pipeline.errors import ChainbenchError, ColumnError
+from pipeline.errors import ChainbenchError, ColumnError, SpecimensError
 from pipeline.runsheet import RUN_SHEET_NAME, resolve_inside
 
 if TYPE_CHECKING:
@@ -94,6 +94,8 @@ class DraftRun:
     columns: dict = field(default_factory=dict)  #: the run sheet's ``columns``
     units: dict = field(default_factory=dict)  #: the run sheet's ``units``
     notes: list[str] = field(default_factory=list)  #: remarks on the columns and the cycles
+    #: of several specimens side by side in the file, the one read (its label or place)
+    specimen_in_file: str | None = None
 
     @property
     def gauges(self) -> list[ColumnInfo]:
@@ -282,11 +284,12 @@ def unit_notes(run: DraftRun) -> list[str]:
     return notes
 
 
-def _read(path: Path, kind: str, columns: dict | None = None,
-          units: dict | None = None) -> tuple[pd.DataFrame, TableMetadata]:
+def _read(path: Path, kind: str, columns: dict | None = None, units: dict | None = None,
+          specimen: str | None = None) -> tuple[pd.DataFrame, TableMetadata]:
     from pipeline.ingest import read_table
 
-    return read_table(path, kind=kind, columns=columns, units=units, strict=False)
+    return read_table(path, kind=kind, columns=columns, units=units, specimen=specimen,
+                      strict=False)
 
 
 def _roles(metadata: TableMetadata) -> dict[str, str]:
@@ -302,7 +305,7 @@ def _as_drafted(run: DraftRun, path: Path, detected: TableMetadata) -> None:
     """
     known = {role: unit for role, unit in run.units.items() if unit != UNIT_PLACEHOLDER}
     try:
-        _, metadata = _read(path, run.kind, run.columns, known)
+        _, metadata = _read(path, run.kind, run.columns, known, run.specimen_in_file)
         problem = None if _roles(metadata) == _roles(detected) else "they give other roles"
     except ChainbenchError as error:
         problem = _reason(error)
@@ -312,17 +315,20 @@ def _as_drafted(run: DraftRun, path: Path, detected: TableMetadata) -> None:
     run.columns, run.units = {}, {}
     run.notes.insert(0, f"columns and units left to auto-detection: naming them failed "
                         f"({problem})")
-    run.metadata = _read(path, run.kind)[1]
+    run.metadata = _read(path, run.kind, specimen=run.specimen_in_file)[1]
 
 
-def _countable(path: Path, table: pd.DataFrame) -> pd.DataFrame:
+def _countable(path: Path, table: pd.DataFrame, specimen: str | None) -> pd.DataFrame:
     """`table`, or, when its force has no usable unit, the file read with the force taken
     as N: the number of cycles does not depend on the force's unit."""
-    return table if "force" in table else _read(path, "tensile", units={"force": "N"})[0]
+    return table if "force" in table else _read(path, "tensile", units={"force": "N"},
+                                                specimen=specimen)[0]
 
 
-def draft_run(path: Path, folder: Path, taken: set[str]) -> DraftRun:
-    """Read one export and draft its ``[[runs]]`` entry; its id is added to `taken`.
+def draft_run(path: Path, folder: Path, taken: set[str], specimen: str | None = None
+              ) -> DraftRun:
+    """Read one export (or `specimen` of the several side by side in it) and draft its
+    ``[[runs]]`` entry; its id is added to `taken`.
 
     Raises
     ------
@@ -332,43 +338,53 @@ def draft_run(path: Path, folder: Path, taken: set[str]) -> DraftRun:
     """
     from pipeline.cli.inspect import summary
 
-    table, metadata = _read(path, "tensile")
+    table, metadata = _read(path, "tensile", specimen=specimen)
     kind, reason = run_kind(table, metadata)
     if kind != "wear" and not any(column.role == "force" for column in metadata.columns):
         raise ColumnError("no force column found", file=path,
                           hint="a run needs a force (a wear log, a section length or "
                           "elongation against time or cycles); name it in the run sheet if "
                           "the file has one")
-    report = summary(_countable(path, table), metadata)
+    report = summary(_countable(path, table, specimen), metadata)
+    name = path.stem if specimen is None else f"{path.stem}-{specimen}"
     run = DraftRun(
         file=path.relative_to(folder).as_posix(),
-        id=unique_name(safe_name(path.stem, "run"), taken),
+        id=unique_name(safe_name(name, "run"), taken),
         kind=kind, kind_reason=reason, report=report, metadata=metadata,
         columns=column_map(metadata, kind), units=unit_map(metadata, kind),
         # the cycle counts disagreeing (a wear log's counter logs a few cycles: no news)
         notes=report["warnings"][len(metadata.warnings):] if kind != "wear" else [],
+        specimen_in_file=specimen,
     )
     _as_drafted(run, path, metadata)
     return run
 
 
 def draft_runs(folder: Path, *, debug: bool = False) -> tuple[list[DraftRun], list[tuple]]:
-    """The drafted runs of `folder`'s exports, and the ``(name, reason)`` of those skipped."""
+    """The drafted runs of `folder`'s exports (one per specimen of a file that holds
+    several side by side), and the ``(name, reason)`` of those skipped."""
     files, skipped = candidate_files(folder)
     runs: list[DraftRun] = []
     taken: set[str] = set()
     for path in files:
-        try:
-            runs.append(draft_run(path, folder, taken))
-        except ChainbenchError as error:
-            if debug:
-                raise
-            skipped.append((path.name, _reason(error)))
-        except Exception as error:
-            if debug:
-                raise
-            skipped.append((path.name, f"unexpected failure ({type(error).__name__}: "
-                            f"{' '.join(str(error).split())}); rerun with --debug and report it"))
+        pending: list[str | None] = [None]
+        while pending:
+            specimen = pending.pop(0)
+            name = path.name if specimen is None else f"{path.name} ({specimen})"
+            try:
+                runs.append(draft_run(path, folder, taken, specimen))
+            except SpecimensError as error:  # asked only of the whole file: one per specimen
+                pending = list(error.specimens)
+            except ChainbenchError as error:
+                if debug:
+                    raise
+                skipped.append((name, _reason(error)))
+            except Exception as error:
+                if debug:
+                    raise
+                skipped.append((name, f"unexpected failure ({type(error).__name__}: "
+                                f"{' '.join(str(error).split())}); rerun with --debug and "
+                                "report it"))
     return runs, skipped
 
 
@@ -524,10 +540,13 @@ def run_lines(run: DraftRun) -> list[str]:
         f"id = {toml_string(run.id)}",
         f"kind = {toml_string(run.kind)}  " + comment(run.kind_reason),
         f"file = {toml_string(run.file)}",
+        *([f"specimen_in_file = {toml_string(run.specimen_in_file)}"]
+          if run.specimen_in_file is not None else []),
         f"chain = {toml_string(CHAIN_KEY)}",
     ]
     if run.kind == "tensile":
-        lines += [f"specimen = {toml_string(Path(run.file).stem)}", _cycles(run)]
+        lines += [f"specimen = {toml_string(run.specimen_in_file or Path(run.file).stem)}",
+                  _cycles(run)]
     if run.columns:
         lines.append(f"columns = {inline_table(run.columns)}")
         lines.append(f"units = {inline_table(run.units)}")
@@ -549,8 +568,8 @@ def render(folder: Path, runs: list[DraftRun], skipped: list[tuple]) -> str:
 
 def run_json(run: DraftRun) -> dict:
     """What was detected in one file and drafted for it, JSON-ready."""
-    keys = ("layout", "encoding", "delimiter", "decimal", "sheet", "rows", "cycles",
-            "machine_cycles", "preamble")
+    keys = ("layout", "encoding", "delimiter", "decimal", "sheet", "specimen", "rows",
+            "cycles", "machine_cycles", "preamble")
     return {
         "file": run.file, "id": run.id, "kind": run.kind, "kind_reason": run.kind_reason,
         **{key: run.report[key] for key in keys},
@@ -566,7 +585,8 @@ def _show(runs: list[DraftRun], skipped: list[tuple]) -> None:
         table.add_column(heading)
     for run in runs:
         table.add_row(*(escape(str(value)) for value in (
-            run.file, run.kind, run.metadata.layout, run.metadata.rows,
+            run.file + (f" ({run.specimen_in_file})" if run.specimen_in_file else ""),
+            run.kind, run.metadata.layout, run.metadata.rows,
             run.report["cycles"] if run.kind == "tensile" and run.report["cycles"] else "-",
             next((c.name for c in run.metadata.columns if c.role == "force"), "-"),
             ", ".join(f"{c.name} ({c.kind})" for c in run.gauges) or "-")))

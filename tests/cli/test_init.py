@@ -316,3 +316,25 @@ def test_link_leading_out_is_skipped(tmp_path):
     assert [run["file"] for run in document["runs"]] == ["t.csv"]
     assert document["skipped"] == [
         {"file": "link.csv", "reason": "a link leading out of the campaign folder"}]
+
+
+# a Shimadzu Trapezium batch: a label over each specimen's columns (E0 of 20 and 24 MN
+# over 50 mm: about 18x64's)
+BATCH = ('"CuivreC1",,,"AcierC70",,\n"Temps","Force","Stroke","Temps","Force","Stroke"\n'
+         '"sec","kN","mm","sec","kN","mm"\n'
+         + "".join(f'"{0.1 * i:.1f}","{4.0 * i:.1f}","{0.01 * i:.2f}",'
+                   f'"{0.1 * i:.1f}","{4.8 * i:.1f}","{0.01 * i:.2f}"\n' for i in range(30)))
+
+
+def test_specimens_side_by_side_are_drafted_one_run_each_that_validates(tmp_path):
+    (tmp_path / "batch.csv").write_text(BATCH)
+    result = init(str(tmp_path))
+    assert result.exit_code == 0, result.output
+    text = (tmp_path / "campaign.toml").read_text(encoding="utf-8")
+    draft = tomllib.loads(text)
+    assert [(run["id"], run["specimen_in_file"], run["specimen"]) for run in draft["runs"]] == [
+        ("batch-CuivreC1", "CuivreC1", "CuivreC1"), ("batch-AcierC70", "AcierC70", "AcierC70")]
+    text = text.replace("# gauge_length_mm = ...  # TODO: the length the gauges measure over",
+                        "gauge_length_mm = 50")
+    text = text.replace('# catalog = "..."', 'catalog = "18x64"')
+    validates(tmp_path, text, runs=2)
