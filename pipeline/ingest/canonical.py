@@ -90,6 +90,12 @@ _DISPENSABLE = {"tensile": frozenset({"time", "angle", "cycle_count", "length", 
 
 #: The hint for a strain column that has no unit: a ratio and a percentage cannot be told
 #: apart from the values, and one unit for all gauges would turn the others into strains.
+#: Words that make a gauge column a strain by its name (English, German).
+STRAIN_WORDS = frozenset({"strain", "dehnung"})
+
+#: A unit cell that writes a dimensionless quantity as engineers do (``Dehnung [-]``).
+DIMENSIONLESS = "-"
+
 STRAIN_WITHOUT_UNIT_HINT = (
     'a strain may be a ratio or in %: give each gauge its unit in the run sheet, '
     'units = {gauges = ["mm", "1", ...]} ("1" for mm/mm), or keep only the gauges to use, '
@@ -474,6 +480,11 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
     return assigned
 
 
+def _says_strain(name: str) -> bool:
+    """Whether a gauge column's name makes it a strain (:data:`STRAIN_WORDS`)."""
+    return not STRAIN_WORDS.isdisjoint(tokens(name))
+
+
 def _warn_misfit(raw: RawColumns, index: int, role: str) -> None:
     raw.metadata.warnings.append(f"column {display_name(raw.names, index)!r}: unit "
                                  f"{raw.units[index]!r} is not a unit of {role}: column not used")
@@ -522,11 +533,17 @@ def _settle_units(
                 problems.report(UnitError(
                     f"no unit for the {role} column",
                     file=file, row=raw.units_line, column=name,
-                    hint=STRAIN_WITHOUT_UNIT_HINT if role == "gauge" and "strain" in tokens(name)
+                    hint=STRAIN_WITHOUT_UNIT_HINT if role == "gauge" and _says_strain(name)
                     else f'the file gives none: set it in the run sheet, units = '
                          f'{{{SHEET_KEY[role]} = "..."}}',
                 ))
                 continue
+            if (role == "gauge" and text.strip().strip("()[]").strip() == DIMENSIONLESS
+                    and _says_strain(name)):  # "strain [-]": a ratio, written dimensionless
+                raw.metadata.warnings.append(
+                    f"column {name!r}: unit {text!r} read as a ratio (mm/mm): a strain "
+                    "written dimensionless")
+                text = "1"
             if role == "gauge" and is_strain_unit(text):
                 strains.add(index)
                 factors[index] = si_factor(text, "strain", file=file, row=raw.units_line,

@@ -107,6 +107,19 @@ def test_a_gauge_in_a_ratio_unit_is_a_strain_channel(write, unit, factor):
     assert kinds["gauge_1"] == ("crosshead", "m") and kinds["strain_1"] == ("extensometer", "1")
 
 
+@pytest.mark.parametrize("name", ["Dehnung", "strain"])
+def test_a_strain_written_dimensionless_is_a_ratio_and_a_length_so_written_is_refused(
+        write, name):
+    """``Dehnung [-]``: an engineer's dimensionless strain; ``-`` over a length is no unit."""
+    text = f"time [s],force [kN],{name} [-]\n" + rows((0, 1, 0.002), (1, 2, 0.004))
+    table, meta = read_table(write("d.csv", text))
+    assert table["strain_1"].tolist() == [0.002, 0.004]
+    assert (f"column {name!r}: unit '-' read as a ratio (mm/mm): a strain written "
+            "dimensionless") in meta.warnings
+    with pytest.raises(UnitError, match="'-'"):
+        read_table(write("e.csv", text.replace(f"{name} [-]", "Traverse [-]")))
+
+
 def test_repeated_time_stamps_are_a_warning_with_the_line(write):
     table, meta = read_table(write("t.csv", "time [s],force [kN],gauge [mm]\n"
                                    + rows((0, 1, 2), (0, 2, 3), (1, 3, 4))))
