@@ -350,9 +350,12 @@ def condition_tensile(
     choice = choose_channels(compared_slopes(sign * force, oriented, loading),
                              {name: kinds[name] for name in strains}, columns, average)
     warnings += choice.warnings
-    if not choice.used:
+    if not choice.used:  # saying why, when the channels were cut where they misbehaved
         raise SignalError(
-            "no gauge channel grows with the force on the first loading",
+            "no gauge channel grows with the force on the first loading" + "".join(
+                f"; {columns[name]!r} {removal.reason} from "
+                f"{abs(force[removal.position]) / 1e3:.4g} kN on"
+                for name, removal in removals.items()),
             hint="check the gauge columns, their sign and wiring, and the run sheet's columns",
         )
 
