@@ -448,6 +448,8 @@ def _chain(kinds: set[str]) -> list[str]:
             f"# [wheels.{WHEEL_KEY}]",
             "# teeth = ...",
             "# apex_angle_deg = ...",
+            "# (a roller chain's sprocket instead: [sprockets.<key>] with teeth, module_mm, "
+            "profile_angle_deg)",
         ]
     return lines
 
@@ -515,6 +517,8 @@ _TODO_LINES = {
         "# branch_length_m = ...",
         "# rpm = ...          # or omega_per_s = ...",
         '# E0_N = ...         # or stiffness_from = "<campaign>/<chain>"',
+        '# (a roller chain on a sprocket: kind = "roller-engagement", with sprocket = "..." '
+        "in place of the wheel)",
     ],
     "wear": [
         "# TODO: a wear run needs its measured section, what its elongation counts from and "

@@ -338,3 +338,36 @@ def test_specimens_side_by_side_are_drafted_one_run_each_that_validates(tmp_path
                         "gauge_length_mm = 50")
     text = text.replace('# catalog = "..."', 'catalog = "18x64"')
     validates(tmp_path, text, runs=2)
+
+
+def test_roller_logs_drafted_as_engagement_runs_validate_as_roller_runs_the_draft_names(
+        tmp_path):
+    """A roller chain's engagement log looks like a chain wheel's: drafted as engagement
+    runs, turned into roller-engagement runs as the draft's comments say, and given the
+    demo sheet's sprockets and values, they validate."""
+    text, demo = drafted_copy("roller-demo", "R*", tmp_path / "roller")
+    draft = tomllib.loads(text)
+    assert [run["kind"] for run in draft["runs"]] == ["engagement"] * 6
+    assert 'kind = "roller-engagement", with sprocket = "..." in place of the wheel' in text
+    assert "[sprockets.<key>] with teeth, module_mm, profile_angle_deg" in text
+    given = {run["id"]: run for run in demo["runs"]}
+    entries = text.split("[[runs]]\n")
+    for index, run in enumerate(draft["runs"], start=1):
+        values = given[run["id"]]
+        speed = (f"rpm = {values['rpm']}" if "rpm" in values
+                 else f"omega_per_s = {values['omega_per_s']}")
+        entries[index] = (entries[index].replace('kind = "engagement"',
+                                                 'kind = "roller-engagement"')
+                          .replace('# wheel = "wheel1"',
+                                   f'sprocket = "{values["sprocket"]}"')
+                          .replace("# branch_length_m = ...",
+                                   f"branch_length_m = {values['branch_length_m']}")
+                          .replace("# rpm = ...", speed)
+                          .replace("# E0_N = ...", f"E0_N = {values['E0_N']}"))
+    sprockets = "".join(
+        f"\n[sprockets.{key}]\n" + "".join(f"{name} = {json.dumps(value)}\n"
+                                            for name, value in sprocket.items())
+        for key, sprocket in demo["sprockets"].items())
+    validates(tmp_path / "roller", "[[runs]]\n".join(entries).replace(
+        '# catalog = "..."', 'catalog = "16B"').replace("\n[[runs]]", sprockets + "\n[[runs]]",
+                                                        1), runs=6)
