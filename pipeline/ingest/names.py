@@ -410,6 +410,54 @@ def repeats(names: list[str]) -> int:
         if len(folded) % size == 0 and any(folded[:size]) and all(
                 name == folded[index % size] for index, name in enumerate(folded)):
             return len(folded) // size
+    return _numbered_repeats(folded)
+
+
+#: A specimen's number in a column name: after it (``Force 1``, ``Force_2``, ``Load (S1)``,
+#: ``Kraft (Probe 3)``, pandas' ``Kraft.1`` for a repeated name) or before it
+#: (``Probe 1 Kraft``, ``Sample 2 Force``).
+_NUMBER_AFTER = re.compile(
+    r"(?P<base>.*?[^\W\d_].*?)(?:\s*[#_.\-]\s*|\s+|\s*\(\s*(?:s|sample|specimen|probe|"
+    r"probek|run)?\s*#?\s*)(?P<number>\d+)\s*\)?")
+_NUMBER_BEFORE = re.compile(
+    r"(?:sample|specimen|probe|probek|run)\s*#?\s*(?P<number>\d+)\s*[:_\-]?\s+(?P<base>.+)")
+
+
+def _numbered(name: str) -> tuple[str, str | None]:
+    """A folded name without its specimen's number, and that number (None: no number)."""
+    for pattern in (_NUMBER_AFTER, _NUMBER_BEFORE):
+        if found := pattern.fullmatch(name):
+            return found["base"].strip(), found["number"]
+    return name, None
+
+
+def _numbered_repeats(folded: list[str]) -> int:
+    """How many times the folded names repeat one group of names side by side, each group
+    numbered by its specimen (``Force 1, Disp 1, Force 2, Disp 2``; the first group may
+    be unnumbered, as pandas writes ``Kraft, Weg, Kraft.1, Weg.1``); 1 if they do not.
+
+    Every name of a group carries the same number and the groups different ones, so
+    that two gauges of one specimen (``time, force, gauge 1, gauge 2``) are no groups.
+
+    Examples
+    --------
+    >>> _numbered_repeats(["force 1", "disp 1", "force 2", "disp 2"])
+    2
+    >>> _numbered_repeats(["time", "force", "gauge 1", "gauge 2"])
+    1
+    """
+    parsed = [_numbered(name) for name in folded]
+    for size in range(2, len(parsed) // 2 + 1):
+        if len(parsed) % size:
+            continue
+        groups = [parsed[start:start + size] for start in range(0, len(parsed), size)]
+        numbers = [{number for _, number in group} for group in groups]
+        if (all(len(found) == 1 for found in numbers)
+                and len({next(iter(found)) for found in numbers}) == len(groups)
+                and None not in set().union(*numbers[1:])
+                and all([base for base, _ in group] == [base for base, _ in groups[0]]
+                        for group in groups)):
+            return len(groups)
     return 1
 
 

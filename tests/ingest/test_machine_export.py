@@ -473,6 +473,20 @@ def test_runs_side_by_side_are_refused_unless_the_run_sheet_says_which(write):
         "Time Run 6", "Force Run 6", "Position Run 6"]
 
 
+def test_specimens_numbered_in_the_names_are_read_one_a_run(write):
+    """``Force 1 [kN], Disp 1 [mm], Force 2 [kN], Disp 2 [mm]``: read as one specimen, the
+    first force would pair with both displacements."""
+    text = ("Force 1 [kN],Disp 1 [mm],Force 2 [kN],Disp 2 [mm]\n"
+            "0.0,0.00,0.0,0.00\n1.0,0.01,2.0,0.03\n2.0,0.02,4.0,0.06\n")
+    path = write("two.csv", text)
+    with pytest.raises(LayoutError, match="repeat 2 times side by side"):
+        read_table(path)
+    table, meta = read_table(path, specimen=2)
+    np.testing.assert_allclose(table["force"], [0.0, 2000.0, 4000.0])
+    np.testing.assert_allclose(table["gauge_1"], [0.0, 3e-5, 6e-5])
+    assert list(table.columns) == ["force", "gauge_1"] and meta.specimen == "2"
+
+
 # a real Mecmesin Emperor export: names, units, then a label over each specimen's columns
 EMPEROR = (
     "Force,Distance,Time,Event,,,,\n"

@@ -10,6 +10,7 @@ from pipeline.ingest.names import (
     is_command,
     is_transverse,
     match_role,
+    repeats,
     split_name_unit,
 )
 
@@ -180,3 +181,22 @@ def test_a_part_of_a_clock_reading_is_no_elapsed_time(name):
 @pytest.mark.parametrize("name", ["Seconds", "Minutes", "Hours"])
 def test_elapsed_seconds_minutes_and_hours_are_the_time(name):
     assert match_role(name) == "time" and not is_clock_part(name)
+
+
+@pytest.mark.parametrize(("names", "count"), [
+    (["Force 1", "Disp 1", "Force 2", "Disp 2"], 2),
+    (["Zeit_1", "Kraft_1", "Weg_1", "Zeit_2", "Kraft_2", "Weg_2", "Zeit_3", "Kraft_3",
+      "Weg_3"], 3),
+    (["Load (S1)", "Ext (S1)", "Load (S2)", "Ext (S2)"], 2),
+    (["Probe 1 Kraft", "Probe 1 Weg", "Probe 2 Kraft", "Probe 2 Weg"], 2),
+    (["Kraft", "Weg", "Kraft.1", "Weg.1"], 2),  # a repeated header as pandas writes it
+    (["Force 1", "Disp 1", "Force 2", "Disp 2", ""], 2),  # a trailing delimiter
+    # one specimen: gauges or channels numbered, not groups of one number each
+    (["time", "force", "gauge 1", "gauge 2"], 1),
+    (["CH1", "CH2", "CH3", "CH4"], 1),
+    (["Force 1", "Force 2", "Disp 1", "Disp 2"], 1),
+    (["Dehnung 1", "Dehnung 2", "Kraft", "Zeit"], 1),
+    (["Force 1", "Disp 1", "Force 1", "Disp 2"], 1),  # a number twice: no specimens
+])
+def test_specimens_numbered_in_their_names_repeat_side_by_side(names, count):
+    assert repeats(names) == count
