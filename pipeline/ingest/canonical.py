@@ -88,14 +88,14 @@ _SINGLE = ("time", "force", "angle", "cycle_count", "length", "speed", "segment_
 _DISPENSABLE = {"tensile": frozenset({"time", "angle", "cycle_count", "length", "speed"})}
 
 
-#: The hint for a strain column that has no unit: a ratio and a percentage cannot be told
-#: apart from the values, and one unit for all gauges would turn the others into strains.
 #: Words that make a gauge column a strain by its name (English, German).
 STRAIN_WORDS = frozenset({"strain", "dehnung"})
 
 #: A unit cell that writes a dimensionless quantity as engineers do (``Dehnung [-]``).
 DIMENSIONLESS = "-"
 
+#: The hint for a strain column that has no unit: a ratio and a percentage cannot be told
+#: apart from the values, and one unit for all gauges would turn the others into strains.
 STRAIN_WITHOUT_UNIT_HINT = (
     'a strain may be a ratio or in %: give each gauge its unit in the run sheet, '
     'units = {gauges = ["mm", "1", ...]} ("1" for mm/mm), or keep only the gauges to use, '

@@ -861,8 +861,8 @@ def _each_specimen(cells: list, specimens: tuple[str, ...]) -> list:
     group of columns filled from the first group's (Mecmesin Emperor writes them over
     the first specimen only)."""
     stride = len(cells) // len(specimens)
-    return [cell if (cell or "").strip() or index < stride else cells[index % stride]
-            for index, cell in enumerate(cells)]
+    return [cells[index % stride] if stride <= index < stride * len(specimens)
+            and not (cell or "").strip() else cell for index, cell in enumerate(cells)]
 
 
 def require_names(spec: TableSpec, file: str, columns: Mapping | None) -> None:

@@ -300,7 +300,8 @@ def open_log(
     path : str or Path
         The file.
     kind, columns, units, format, sheet, specimen
-        As for :func:`~pipeline.ingest.read_table` (``kind`` defaults to
+        As for :func:`~pipeline.ingest.read_table` (but the empty rows below a
+        shorter specimen's end are read, as missing values; ``kind`` defaults to
         ``"engagement"``); role and unit problems raise, as with ``strict=True``.
 
     Returns
