@@ -138,6 +138,22 @@ def test_an_old_binary_excel_workbook_reads_as_its_xlsx_would(tmp_path, workbook
     np.testing.assert_allclose(table["force"], 500.0 * np.arange(30))
 
 
+def test_a_batch_of_specimens_side_by_side_on_a_sheet_is_read_one_a_run(workbook):
+    """A Trapezium batch saved as a workbook: a label over each specimen's columns, the
+    shorter one's cells empty below its end."""
+    rows = [["CuivreC1", None, None, "AcierC70", None, None],
+            ["Temps", "Force", "Stroke"] * 2, ["sec", "kN", "mm"] * 2,
+            *([0.1 * i, 1.0 * i, 0.01 * i] + [0.1 * i, 1.5 * i, 0.02 * i] for i in range(20)),
+            *([None] * 3 + [0.1 * i, 1.5 * i, 0.02 * i] for i in range(20, 25))]
+    path = workbook({"Batch": rows})
+    table, meta = read_table(path, specimen="CuivreC1")
+    np.testing.assert_allclose(table["force"], 1e3 * np.arange(20))
+    assert meta.specimen == "CuivreC1" and meta.rows == 20
+    table, meta = read_table(path, specimen=2)
+    np.testing.assert_allclose(table["gauge_1"], 2e-5 * np.arange(25))
+    assert meta.specimen == "AcierC70"
+
+
 def _ods(path, sheets: dict):
     """Write `sheets` (name -> rows) as an OpenDocument spreadsheet (odfpy, through pandas)."""
     pytest.importorskip("odf")
