@@ -18,9 +18,12 @@ log counts from the same origin. Nothing is guessed:
   month, year); minutes and seconds with the fraction of a second (``0:00.1``,
   ``75:12.3``, hours in front once past the hour, as Measurement Computing's
   DAQami writes its elapsed time: without the fraction, ``5:14`` could be hours
-  and minutes). A date of slashes in another order (``3/5/2024``: March or May)
-  or a 12-hour clock (``2:03:27 PM``) is not read: such a column is set aside
-  as text (:func:`is_unread_clock`), and a run that needs the time is refused;
+  and minutes); a 12-hour clock (``2:03:27 PM``: 12 AM is midnight) and, in
+  front of a time of day, a date of slashes (``3/5/2024 2:03:27 PM``, as a
+  spreadsheet saves a date and time: March or May, told as a date column's
+  are, :func:`carried_order`). Other forms (``3/5/2024 2:03 PM``, without
+  seconds) are not read: such a column is set aside as text
+  (:func:`is_unread_clock`), and a run that needs the time is refused;
 * a column whose first reading is in pyarrow's own form (two-digit hours,
   ``.``, ISO dashes) is parsed by its CSV reader; any other is read as text
   and rewritten to that form with pyarrow's string functions first;
@@ -65,7 +68,9 @@ from pipeline.errors import LayoutError
 #: The clock forms read, by kind: a time of day, a date (year first) and time, and an
 #: elapsed time in minutes and seconds (hours in front once past the hour).
 _FORMS = {
-    "time of day": re.compile(r" *\d{1,4}:\d{2}:\d{2}(?:[.,]\d+)? *"),
+    "time of day": re.compile(
+        r" *(?:\d{1,2}/\d{1,2}/\d{4}[ T]+)?(?:\d{1,4}:\d{2}:\d{2}(?:[.,]\d+)?"
+        r"|(?:0?[1-9]|1[0-2]):\d{2}:\d{2}(?:[.,]\d+)? *[AaPp]\.?[Mm]\.?) *"),
     "date and time": re.compile(
         r" *(?:\d{4}(?P<sep>[-/])\d{2}(?P=sep)\d{2}|\d{2}\.\d{2}\.\d{4})"
         r"[T _-]\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)? *"),
@@ -74,8 +79,15 @@ _FORMS = {
 #: The parts of an elapsed time (RE2, for pyarrow), its decimal comma made a point.
 _ELAPSED_PARTS = r"^(?P<hours>\d+:)?(?P<minutes>\d+):(?P<seconds>\d{2}\.\d+)$"
 #: The parts of a time of day, read as the time since midnight: past 24 hours too, as a
-#: rig's clock of the time elapsed writes them (``25:13:02``).
-_HOURS_PARTS = r"^(?P<hours>\d+:)(?P<minutes>\d{2}):(?P<seconds>\d{2}(?:\.\d+)?)$"
+#: rig's clock of the time elapsed writes them (``25:13:02``), or of a 12-hour clock
+#: (``2:03:27 PM``).
+_HOURS_PARTS = (r"^(?P<hours>\d+:)(?P<minutes>\d{2}):(?P<seconds>\d{2}(?:\.\d+)?)"
+                r"(?: *(?P<half>[AaPp])\.?[Mm]\.?)?$")
+#: A date of slashes before a time of day in one cell (``3/5/2024 2:03:27 PM``, as a
+#: spreadsheet writes a date and time): its date, and the time of day after it.
+_CARRIED_DATE = r"^(?P<date>\d{1,2}/\d{1,2}/\d{4})[ T]+(?P<time>.*)$"
+#: The same date before a time, for the head's cells (Python's regex).
+_SLASHED_DATE_FIRST = re.compile(r" *(\d{1,2})/(\d{1,2})/\d{4}[ T]")
 #: The forms pyarrow's CSV reader parses itself: two-digit hours, ``.``, ISO 8601 dashes
 #: (a column whose hours pass 24 is read again as text: :meth:`ClockColumn.readings`).
 _ARROW_FORMS = {
@@ -96,7 +108,8 @@ _DAY_FIRST_DATE = (r"^(\d{2})\.(\d{2})\.(\d{4})", r"\3-\2-\1")
 _CLOCK_LIKE = re.compile(r"\d{1,2}:\d{2}")
 #: The hint for a clock reading in a form that is not read.
 READ_FORMS = ("H:MM:SS.fff, YYYY-MM-DD H:MM:SS.fff, YYYY/MM/DD H:MM:SS.fff, "
-              "DD.MM.YYYY H:MM:SS.fff and M:SS.fff, with '.' or ',' before the fraction")
+              "DD.MM.YYYY H:MM:SS.fff, D/M/YYYY or M/D/YYYY H:MM:SS.fff, each also with AM "
+              "or PM, and M:SS.fff, with '.' or ',' before the fraction")
 UNREAD_FORM_HINT = (
     f"the column holds clock readings in a form the reader does not guess (it reads "
     f"{READ_FORMS}): export the time in seconds, or name another time column in the run "
@@ -165,7 +178,7 @@ def is_unread_clock(text: str) -> bool:
     """True if `text` holds hours and minutes in a form not read (see :func:`clock_kind`):
     a column of them is text.
 
-    >>> is_unread_clock("3/5/2024 2:03:27 PM"), is_unread_clock("14:03:27")
+    >>> is_unread_clock("3/5/2024 2:03 PM"), is_unread_clock("3/5/2024 2:03:27 PM")
     (True, False)
     """
     return looks_like_clock(text) and clock_kind(text) is None
@@ -209,6 +222,10 @@ class ClockColumn:
         whole seconds (see :func:`fraction_column`).
     date : DateColumn or None
         The column before a time of day that gives its date (see :func:`date_column`).
+    carried : str or None
+        The order of the date of slashes each time of day carries in its cell
+        (``"3/5/2024 2:03:27 PM"``): ``"dmy"``, ``"mdy"`` or ``"slashes"`` (see
+        :func:`carried_order`); None when the cells hold no date.
     """
 
     kind: str
@@ -216,6 +233,7 @@ class ClockColumn:
     unpadded: str | None = None
     fraction: Fraction | None = None
     date: DateColumn | None = None
+    carried: str | None = None
 
     @property
     def arrow_type(self) -> pa.DataType:
@@ -276,20 +294,37 @@ class ClockColumn:
         column = pc.utf8_trim_whitespace(texts)
         if self.kind == "minutes and seconds":
             return _elapsed_nanoseconds(column, _ELAPSED_PARTS)
-        if self._as_text:
-            if self.kind == "date and time":
-                column = pc.replace_substring_regex(column, *_DAY_FIRST_DATE)
+        if self._as_text and self.kind == "date and time":
+            column = pc.replace_substring_regex(column, *_DAY_FIRST_DATE)
             for old, new in _PLAIN_REWRITES:
                 column = pc.replace_substring(column, old, new)
-            if self.kind == "date and time":
-                column = pc.replace_substring_regex(column, *_DATE_TIME_JOINT)
-                column = pc.replace_substring_regex(column, *_ONE_DIGIT_HOUR)
+            column = pc.replace_substring_regex(column, *_DATE_TIME_JOINT)
+            column = pc.replace_substring_regex(column, *_ONE_DIGIT_HOUR)
         if self.unpadded is not None:
             for pattern, padded in _PAD_MILLISECONDS:
                 column = pc.replace_substring_regex(column, pattern, padded)
         if self.kind == "time of day":
-            return _elapsed_nanoseconds(column, _HOURS_PARTS)
+            return self._carried_days(column) if self.carried else _elapsed_nanoseconds(
+                column, _HOURS_PARTS)
         return pc.cast(pc.cast(column, pa.timestamp("ns")), pa.int64())
+
+    def _carried_days(self, column: pa.ChunkedArray) -> pa.ChunkedArray:
+        """Times of day that carry a date of slashes (:attr:`carried`) as int64 nanoseconds
+        since midnight of :attr:`first`'s date; only the times of day when the date's order
+        is not decided (:func:`slash_order`: the time then steps back past midnight)."""
+        parts = pc.extract_regex(column, _CARRIED_DATE)
+        if parts.null_count > column.null_count:
+            raise pa.ArrowInvalid("a cell is no date and time of the column's form")
+        dates, times = (pc.struct_field(parts, name) for name in ("date", "time"))
+        nanoseconds = _elapsed_nanoseconds(times, _HOURS_PARTS)
+        first = self.first.strip().split()[0]
+        order = (slash_order(first, dates, "the time") if self.carried == "slashes"
+                 else self.carried)
+        if order is None:
+            return nanoseconds
+        days = pc.subtract(_days(dates, order),
+                           _days(pa.chunked_array([[first]]), order)[0].as_py())
+        return pc.add(nanoseconds, pc.multiply(days, int(_DAY_SECONDS) * _NS))
 
     @cached_property
     def _origin(self) -> int:
@@ -304,7 +339,9 @@ class ClockColumn:
         """True if `text` is a clock reading of this column's kind that the column reads
         (in pyarrow's own form only, unless the column is read as text)."""
         return _FORMS[self.kind].fullmatch(text) is not None and (
-            self._as_text or _ARROW_FORMS[self.kind].fullmatch(text) is not None)
+            self._as_text or _ARROW_FORMS[self.kind].fullmatch(text) is not None) and (
+            self.kind != "time of day"
+            or (self.carried is not None) == bool(_SLASHED_DATE_FIRST.match(text)))
 
     def mismatch(self, text: str) -> str:
         """The message for a cell `text` of this column that is not a clock reading like it."""
@@ -313,7 +350,8 @@ class ClockColumn:
 
     def note(self, name: str) -> str:
         """What the reader tells the user about column `name`."""
-        note = (f"column {name!r} holds clock readings ({self.kind}, first "
+        kind = "date and time" if self.carried else self.kind
+        note = (f"column {name!r} holds clock readings ({kind}, first "
                 f"{self.first.strip()!r}): read as seconds after the first row's")
         if self.unpadded is not None:
             note += (f"; the fraction of a second counts milliseconds without zero padding "
@@ -325,6 +363,8 @@ class ClockColumn:
         if self.date is not None:
             note += (f", on the dates of column {self.date.name!r} (first "
                      f"{self.date.first.strip()!r}, {_ORDER_NAMES[self.date.order]})")
+        if self.carried is not None:
+            note += f", on the date each reading carries ({_ORDER_NAMES[self.carried]})"
         return note
 
 
@@ -408,6 +448,32 @@ def date_column(kind: str, index: int, names: list[str], rows: list[list[str]]
             return None
         order = "dmy" if day_first else "mdy" if month_first else "slashes"
     return DateColumn(column, order, cells[0], names[column].strip())
+
+
+def carried_order(kind: str, index: int, rows: list[list[str]]) -> str | None:
+    """The order of the date of slashes that the times of day of column `index` carry in
+    their cells (``3/5/2024 2:03:27 PM``, as a spreadsheet writes a date and time), or
+    None when its first cell (in `rows`, the head's data rows) carries none.
+
+    ``"dmy"`` or ``"mdy"`` when a part past 12 in the head says which is the day;
+    otherwise ``"slashes"``, decided from the rows read (:func:`slash_order`).
+
+    Examples
+    --------
+    >>> carried_order("time of day", 0, [["3/5/2024 11:59:59 PM"], ["3/6/2024 12:00:00 AM"]])
+    'slashes'
+    >>> carried_order("time of day", 0, [["13/05/2024 14:03:27"]])
+    'dmy'
+    """
+    cells = [row[index] for row in rows if index < len(row)]
+    if kind != "time of day" or not cells or not _SLASHED_DATE_FIRST.match(cells[0]):
+        return None
+    parts = [[int(part) for part in found.groups()] for cell in cells
+             if (found := _SLASHED_DATE_FIRST.match(cell))]
+    day_first, month_first = (any(part[i] > 12 for part in parts) for i in (0, 1))
+    if day_first and month_first:
+        return None  # no date at all: its cells are refused as no readings of the column
+    return "dmy" if day_first else "mdy" if month_first else "slashes"
 
 
 def slash_order(first: str, dates: pa.ChunkedArray, name: str = "Date") -> str | None:
@@ -502,15 +568,23 @@ def _days(dates: pa.ChunkedArray, order: str) -> pa.ChunkedArray:
 
 def _elapsed_nanoseconds(texts: pa.ChunkedArray, pattern: str) -> pa.ChunkedArray:
     """Times of hours, minutes and seconds as int64 nanoseconds: elapsed times
-    (``[H:]M:SS.fff``, :data:`_ELAPSED_PARTS`) or times of day (``H:MM:SS[.fff]``,
-    :data:`_HOURS_PARTS`); raises :class:`pyarrow.ArrowInvalid` on a cell of another
-    form."""
+    (``[H:]M:SS.fff``, :data:`_ELAPSED_PARTS`) or times of day (``H:MM:SS[.fff]``, or on
+    a 12-hour clock ``H:MM:SS[.fff] AM``, :data:`_HOURS_PARTS`); raises
+    :class:`pyarrow.ArrowInvalid` on a cell of another form, or of a 12-hour clock's hour
+    outside 1 to 12."""
     parts = pc.extract_regex(pc.replace_substring(texts, ",", "."), pattern)
     if parts.null_count > texts.null_count:  # a cell that does not match comes back null
         raise pa.ArrowInvalid("a cell is no clock reading of the column's form")
-    hours = pc.utf8_rtrim(pc.struct_field(parts, "hours"), characters=":")
-    seconds = pc.add(pc.multiply(pc.cast(pc.if_else(pc.equal(hours, ""), "0", hours),
-                                         pa.float64()), 3600.0),
+    hours = pc.cast(pc.if_else(pc.equal(hours := pc.utf8_rtrim(
+        pc.struct_field(parts, "hours"), characters=":"), ""), "0", hours), pa.int64())
+    if "?P<half>" in pattern:  # 12 AM is midnight, 12 PM noon
+        half = pc.utf8_lower(pc.struct_field(parts, "half"))
+        twelve = pc.not_equal(half, "")
+        if pc.any(pc.and_(twelve, pc.or_(pc.less(hours, 1), pc.greater(hours, 12)))).as_py():
+            raise pa.ArrowInvalid("an hour of a 12-hour clock outside 1 to 12")
+        hours = pc.if_else(twelve, pc.add(pc.if_else(pc.equal(hours, 12), 0, hours),
+                                          pc.if_else(pc.equal(half, "p"), 12, 0)), hours)
+    seconds = pc.add(pc.multiply(pc.cast(hours, pa.float64()), 3600.0),
                      pc.add(pc.multiply(pc.cast(pc.struct_field(parts, "minutes"),
                                                 pa.float64()), 60.0),
                             pc.cast(pc.struct_field(parts, "seconds"), pa.float64())))

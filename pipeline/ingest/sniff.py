@@ -31,6 +31,7 @@ from pipeline.errors import EmptyFileError, EncodingError, LayoutError
 from pipeline.ingest.clock import (
     UNREAD_FORM_HINT,
     ClockColumn,
+    carried_order,
     clock_kind,
     date_column,
     fraction_column,
@@ -684,11 +685,7 @@ def find_table(
         labels_over = _above(kinds, above) if len(labels) > 1 else -1
     units: list[str | None] = [None] * columns
     clocks = {} if pairs else {
-        index: ClockColumn(kind, cell, None if kind == "minutes and seconds" else
-                           unpadded_milliseconds([row[index] if index < len(row) else ""
-                                                  for row in rows[data:]], data + 1),
-                           fraction_column(cell, index, names, rows[data:]),
-                           date_column(kind, index, names, rows[data:]))
+        index: _clock_column(kind, index, names, rows[data:], data + 1)
         for index, cell in enumerate(rows[data][:columns]) if (kind := clock_kind(cell))}
     if units_index is not None:
         for index, cell in enumerate(units_cells[:columns]):
@@ -719,6 +716,20 @@ def find_table(
         notes=notes,
         specimens=specimens,
     )
+
+
+def _clock_column(kind: str, index: int, names: list[str], rows: list[list[str]],
+                  first_line: int) -> ClockColumn:
+    """Column `index` of clock readings of `kind`, as the head's data `rows` (from line
+    `first_line`) show them: the fraction of a second, and the date beside or in it."""
+    carried = carried_order(kind, index, rows)
+    return ClockColumn(
+        kind, rows[0][index],
+        None if kind == "minutes and seconds" else unpadded_milliseconds(
+            [row[index] if index < len(row) else "" for row in rows], first_line),
+        fraction_column(rows[0][index], index, names, rows),
+        None if carried else date_column(kind, index, names, rows),
+        carried)
 
 
 def _units_beside_numbers(row: list[str], decimal: str) -> list[str] | None:

@@ -39,13 +39,15 @@ def log(cells: list[str], header: str = "Time,Load (kN)") -> str:
     ("14:03:27", "time of day"), (" 14:03:27.125 ", "time of day"),
     ("2024-03-05 14:03:27.125", "date and time"), ("2024-03-05T14:03:27", "date and time"),
     ("2018/12/07 17:16:36.882", "date and time"), ("2018/12-07 17:16:36", None),
-    ("12/07/2018 17:16:36", None),
+    ("12/07/2018 17:16:36", "time of day"), ("3/5/2024 2:03:27.5 PM", "time of day"),
+    ("3/5/2024 2:03 PM", None), ("2024/3/5 2:03:27 PM", None),
     ("4:03:27", "time of day"), ("14:03:27,125", "time of day"),
     ("2024-03-05 4:03:27,5", "date and time"), ("14:03", None),
     ("114:03:27", "time of day"), ("11403:27:00", None),
     ("2018-11-15-09:30:25.349", "date and time"), ("2018-11-15_09:30:25", "date and time"),
     ("05.03.2024 14:03:27", "date and time"), ("05.03.2024 4:03:27,125", "date and time"),
-    ("5.3.2024 14:03:27", None), ("2:03:27 PM", None), ("14:03:27,", None),
+    ("5.3.2024 14:03:27", None), ("2:03:27 PM", "time of day"), ("13:03:27 PM", None),
+    ("14:03:27,", None),
     ("1.5", None), ("", None),
     ("0:00.0", "minutes and seconds"), ("75:12,3", "minutes and seconds"),
     ("1:00:00.5", "time of day"), ("12:3.4", None),
@@ -232,7 +234,7 @@ def test_spreadsheet_time_cells(tmp_path, cell, kind):
     assert any(f"holds clock readings ({kind}" in w for w in meta.warnings)
 
 
-@pytest.mark.parametrize("cell", ["3/5/2024 2:03:27 PM", "2:03:27 PM", "3/5/2024 14:03"])
+@pytest.mark.parametrize("cell", ["3/5/2024 2:03 PM", "5.3.2024 14:03:27", "3/5/2024 14:03"])
 def test_a_clock_form_not_read_is_set_aside_and_a_run_needing_time_refused(write, cell):
     # two columns: found as a table all the same
     with pytest.raises(ColumnError) as caught:
@@ -245,9 +247,9 @@ def test_a_clock_form_not_read_is_set_aside_and_a_run_needing_time_refused(write
 
 @pytest.mark.parametrize("suffix", [".csv", ".xlsx"])
 def test_a_tensile_log_with_a_clock_form_not_read_is_read_without_it(tmp_path, suffix):
-    """A spreadsheet's 12-hour clock beside the force and the gauge: a stiffness needs no
-    time, so the column is set aside with a warning and the rest read."""
-    rows = [[f"3/5/2024 {11 + (i >= 4)}:59:5{i % 4}.5 {'PM' if i >= 4 else 'AM'}",
+    """A spreadsheet's date and time to the minute beside the force and the gauge: a
+    stiffness needs no time, so the column is set aside with a warning and the rest read."""
+    rows = [[f"3/5/2024 {11 + (i >= 4)}:5{i % 4} {'PM' if i >= 4 else 'AM'}",
              f"{force:.6f}", f"{0.01 * i:.4f}"] for i, force in enumerate(FORCE_KN)]
     header = ["Date Time", "Load (kN)", "Extension (mm)"]
     path = tmp_path / f"log{suffix}"
@@ -264,8 +266,50 @@ def test_a_tensile_log_with_a_clock_form_not_read_is_read_without_it(tmp_path, s
     np.testing.assert_allclose(table["force"], np.round(FORCE_KN, 6) * 1e3)
     np.testing.assert_allclose(table["gauge_1"], np.arange(len(FORCE_KN)) * 1e-5, atol=1e-12)
     assert ("column 'Date Time' holds clock readings in a form the reader does not guess "
-            "('3/5/2024 11:59:50.5 AM'...; it reads " + READ_FORMS
+            "('3/5/2024 11:50 AM'...; it reads " + READ_FORMS
             + "), to be exported as seconds: not used as the time") in meta.warnings
+
+
+def spreadsheet_stamp(stamp: datetime.datetime, order: str, twelve: bool) -> str:
+    """``3/5/2024 11:59:58.500 PM`` (a US spreadsheet) or ``05/03/2024 23:59:58.500``."""
+    date = (f"{stamp.month}/{stamp.day}/{stamp.year}" if order == "mdy"
+            else f"{stamp:%d/%m/%Y}")
+    clock = (f"{int(stamp.strftime('%I'))}:{stamp:%M:%S}.{stamp.microsecond // 1000:03d} "
+             f"{stamp:%p}" if twelve else f"{stamp:%H:%M:%S}.{stamp.microsecond // 1000:03d}")
+    return f"{date} {clock}"
+
+
+@pytest.mark.parametrize("suffix", [".csv", ".xlsx"])
+@pytest.mark.parametrize(("order", "twelve"), [("mdy", True), ("dmy", False), ("mdy", False)])
+def test_a_spreadsheets_date_and_time_counts_on_past_midnight(tmp_path, suffix, order,
+                                                               twelve):
+    """A date of slashes and a time in one cell, as a spreadsheet saves them (12-hour clock
+    or not): the 5th of March read either way, the change of day at midnight says which
+    part is the day; 12 AM is midnight."""
+    start = datetime.datetime(2024, 3, 5, 23, 59, 58, 500_000)
+    cells = [spreadsheet_stamp(start + datetime.timedelta(seconds=float(s)), order, twelve)
+             for s in SECONDS]
+    path = tmp_path / f"log{suffix}"
+    if suffix == ".csv":
+        path.write_text("Date Time,Load (kN)\n" + "".join(
+            f"{cell},{force:.6f}\n" for cell, force in zip(cells, FORCE_KN, strict=True)))
+    else:
+        book = openpyxl.Workbook()
+        book.active.append(["Date Time", "Load (kN)"])
+        for cell, force in zip(cells, FORCE_KN, strict=True):
+            book.active.append([cell, float(force)])  # text cells, as a CSV opened in Excel
+        book.save(path)
+    table, meta = read_table(path, kind="engagement")
+    np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
+    assert meta.time_monotonic
+    assert any("holds clock readings (date and time, first" in w and "on the date each "
+               "reading carries (day or month first, whichever" in w for w in meta.warnings)
+
+
+def test_a_twelve_hour_clock_with_an_hour_past_12_is_refused(write):
+    cells = ["11:59:59 AM", "12:00:00 PM", "13:00:00 PM"] + ["1:00:00 PM"] * 9
+    with pytest.raises(ValueParseError, match="'13:00:00 PM'"):
+        read_table(write("log.csv", log(cells)), kind="engagement")
 
 
 @pytest.mark.parametrize("decimal", [".", ","])
