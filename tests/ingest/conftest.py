@@ -168,6 +168,19 @@ def elapsed_clock_log() -> str:
     return "\n".join(lines) + "\n"
 
 
+def spreadsheet_clock_log() -> str:
+    """A log saved from a US spreadsheet: each time a date of slashes and a 12-hour clock
+    in one cell (time of :func:`_cells` from 11:59:59.900 AM: past noon), force [kN] and
+    angle [deg]."""
+    start = datetime.datetime(2026, 3, 5, 11, 59, 59, 900_000)
+    lines = ["Date Time,Force (kN),Angle (deg)"]
+    for time, force, angle in _cells(ROWS, gaps=True):
+        stamp = start + datetime.timedelta(seconds=float(time))
+        lines.append(f"{stamp.month}/{stamp.day}/{stamp.year} {int(stamp.strftime('%I'))}:"
+                     f"{stamp:%M:%S}.{stamp.microsecond // 1000:03d} {stamp:%p},{force},{angle}")
+    return "\n".join(lines) + "\n"
+
+
 @pytest.fixture
 def graphtec_export():
     """:func:`graphtec`: ``graphtec_export(step_ms)`` is a Graphtec logger's export (text)."""
@@ -244,5 +257,6 @@ def corpus(tmp_path_factory) -> dict[Path, dict]:
     (folder / "graphtec.csv").write_bytes(graphtec().encode("ascii"))
     (folder / "graphtec_split_date.csv").write_bytes(graphtec(split_date=True).encode("ascii"))
     (folder / "elapsed_clock.csv").write_bytes(elapsed_clock_log().encode("ascii"))
+    (folder / "spreadsheet_clock.csv").write_bytes(spreadsheet_clock_log().encode("ascii"))
     return {path: {"kind": "engagement", **OPTIONS.get(path.name, {})}
             for path in sorted(folder.iterdir())}

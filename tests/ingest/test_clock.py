@@ -555,3 +555,12 @@ def test_a_clock_of_the_time_elapsed_counts_on_past_24_hours(write):
     hours = ClockColumn("time of day", "99:59:59").seconds_of_texts(
         ["99:59:59", "100:00:00", "1000:00:00,5"])
     np.testing.assert_allclose(hours, [0.0, 1.0, 900 * 3600 + 1.5], rtol=0, atol=1e-9)
+
+
+def test_a_twelve_hour_clock_passes_noon_and_midnight():
+    """12 PM is noon, 12 AM midnight: hand-counted seconds after the first reading."""
+    cells = ["11:59:59.5 AM", "12:00:00.5 PM", "12:59:59 PM", "1:00:00 PM", "11:59:59 PM",
+             "12:00:00 AM"]
+    expected = [0.0, 1.0, 3599.5, 3600.5, 43199.5, -43199.5]  # the time of day steps back
+    np.testing.assert_allclose(ClockColumn(clock_kind(cells[0]), cells[0]).seconds_of_texts(
+        cells), expected, rtol=0, atol=1e-9)
