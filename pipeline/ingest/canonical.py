@@ -269,11 +269,6 @@ def _other_specimens(raw: RawColumns, specimen: str | int | None) -> set[int]:
     meta = raw.metadata
     count = repeats(raw.names)
     labels = meta.specimens if len(meta.specimens) == count else []
-    places = [str(place) for place in range(1, count + 1)]
-    shown = [*labels[:3], "...", labels[-1]] if len(labels) > 4 else labels
-    choices = (f"specimen_in_file = {json.dumps(labels[0] if labels else 1)}: "
-               + (f"the file's labels {', '.join(shown)}, or " if labels else "")
-               + f"the places 1 to {count} from the left")
     if count == 1:
         if specimen is not None:
             raise LayoutError(
@@ -282,6 +277,11 @@ def _other_specimens(raw: RawColumns, specimen: str | int | None) -> set[int]:
                 hint="specimen_in_file is for a file whose columns repeat for several "
                      "specimens side by side: leave it out")
         return set()
+    places = [str(place) for place in range(1, count + 1)]
+    shown = [*labels[:3], "...", labels[-1]] if len(labels) > 4 else labels
+    choices = (f"specimen_in_file = {json.dumps(labels[0] if labels else 1)}: "
+               + (f"the file's labels {', '.join(shown)}, or " if labels else "")
+               + f"the places 1 to {count} from the left")
     named = len(raw.names)
     while named and not raw.names[named - 1].strip():  # trailing unnamed columns: no group's
         named -= 1

@@ -267,13 +267,9 @@ class ClockColumn:
         """`seconds` (:meth:`seconds`) plus the days from :attr:`date`'s first date to the
         dates `dates` of the same rows (a clock with a date); null where a date is not of
         its form (a missing value, or a cell of another form: the time is then missing)."""
-        order = self.date.order
-        if order == "slashes":
-            order = slash_order(self.date.first, dates, self.date.name)
-            if order is None:
-                return seconds
-        days = pc.subtract(_days(dates, order), _days(
-            pa.chunked_array([[self.date.first]]), order)[0].as_py())
+        days = _day_offsets(self.date.first, dates, self.date.order, self.date.name)
+        if days is None:
+            return seconds
         return pc.add(seconds, pc.multiply(pc.cast(days, pa.float64()), _DAY_SECONDS))
 
     def seconds_of_texts(self, texts: list[str | None]) -> np.ndarray:
@@ -317,13 +313,9 @@ class ClockColumn:
             raise pa.ArrowInvalid("a cell is no date and time of the column's form")
         dates, times = (pc.struct_field(parts, name) for name in ("date", "time"))
         nanoseconds = _elapsed_nanoseconds(times, _HOURS_PARTS)
-        first = self.first.strip().split()[0]
-        order = (slash_order(first, dates, "the time") if self.carried == "slashes"
-                 else self.carried)
-        if order is None:
+        days = _day_offsets(self.first.strip().split()[0], dates, self.carried, "the time")
+        if days is None:
             return nanoseconds
-        days = pc.subtract(_days(dates, order),
-                           _days(pa.chunked_array([[first]]), order)[0].as_py())
         return pc.add(nanoseconds, pc.multiply(days, int(_DAY_SECONDS) * _NS))
 
     @cached_property
@@ -442,11 +434,9 @@ def date_column(kind: str, index: int, names: list[str], rows: list[list[str]]
     if order is None:
         return None
     if order == "slashes":
-        parts = [[int(part) for part in cell.split("/")[:2]] for cell in cells]
-        day_first, month_first = (any(part[i] > 12 for part in parts) for i in (0, 1))
-        if day_first and month_first:
+        order = _order_of_slashes([cell.split("/")[:2] for cell in cells])
+        if order is None:
             return None
-        order = "dmy" if day_first else "mdy" if month_first else "slashes"
     return DateColumn(column, order, cells[0], names[column].strip())
 
 
@@ -468,11 +458,19 @@ def carried_order(kind: str, index: int, rows: list[list[str]]) -> str | None:
     cells = [row[index] for row in rows if index < len(row)]
     if kind != "time of day" or not cells or not _SLASHED_DATE_FIRST.match(cells[0]):
         return None
-    parts = [[int(part) for part in found.groups()] for cell in cells
-             if (found := _SLASHED_DATE_FIRST.match(cell))]
-    day_first, month_first = (any(part[i] > 12 for part in parts) for i in (0, 1))
+    # None where no order reads them: the cells are then refused as no readings
+    return _order_of_slashes([found.groups() for cell in cells
+                              if (found := _SLASHED_DATE_FIRST.match(cell))])
+
+
+def _order_of_slashes(parts: list) -> str | None:
+    """The order of dates of slashes from their first two `parts` (texts of numbers) in
+    the head: ``"dmy"`` or ``"mdy"`` when a part past 12 says which is the day,
+    ``"slashes"`` when none does (:func:`slash_order` decides later), None when parts
+    past 12 on both sides leave no date."""
+    day_first, month_first = (any(int(part[i]) > 12 for part in parts) for i in (0, 1))
     if day_first and month_first:
-        return None  # no date at all: its cells are refused as no readings of the column
+        return None
     return "dmy" if day_first else "mdy" if month_first else "slashes"
 
 
@@ -555,6 +553,19 @@ def unpadded_milliseconds(cells: list[str], first_line: int) -> str | None:
     return shown
 
 
+def _day_offsets(first: str, dates: pa.ChunkedArray, order: str, name: str
+                 ) -> pa.ChunkedArray | None:
+    """The days from date `first` to each of `dates` (int64), both written in `order`
+    (``"slashes"``: decided by :func:`slash_order` for column `name`); None when that
+    order is not decided."""
+    if order == "slashes":
+        order = slash_order(first, dates, name)
+        if order is None:
+            return None
+    return pc.subtract(_days(dates, order),
+                       _days(pa.chunked_array([[first]]), order)[0].as_py())
+
+
 def _days(dates: pa.ChunkedArray, order: str) -> pa.ChunkedArray:
     """Dates written in `order` (:data:`_DATE_PARTS`) as int64 days since 1970; null where
     a date is missing or of another form."""
@@ -575,9 +586,9 @@ def _elapsed_nanoseconds(texts: pa.ChunkedArray, pattern: str) -> pa.ChunkedArra
     parts = pc.extract_regex(pc.replace_substring(texts, ",", "."), pattern)
     if parts.null_count > texts.null_count:  # a cell that does not match comes back null
         raise pa.ArrowInvalid("a cell is no clock reading of the column's form")
-    hours = pc.cast(pc.if_else(pc.equal(hours := pc.utf8_rtrim(
-        pc.struct_field(parts, "hours"), characters=":"), ""), "0", hours), pa.int64())
-    if "?P<half>" in pattern:  # 12 AM is midnight, 12 PM noon
+    hours = pc.utf8_rtrim(pc.struct_field(parts, "hours"), characters=":")
+    hours = pc.cast(pc.if_else(pc.equal(hours, ""), "0", hours), pa.int64())
+    if parts.type.get_field_index("half") >= 0:  # a 12-hour clock: 12 AM is midnight
         half = pc.utf8_lower(pc.struct_field(parts, "half"))
         twelve = pc.not_equal(half, "")
         if pc.any(pc.and_(twelve, pc.or_(pc.less(hours, 1), pc.greater(hours, 12)))).as_py():

@@ -225,7 +225,7 @@ def parse(
     columns : mapping, optional
         Run-sheet ``columns`` (see :func:`~pipeline.ingest.roles.find_candidates`).
     layout : str
-        ``"xlsx"`` or ``"xls"`` (:data:`LAYOUTS`).
+        ``"xlsx"``, ``"ods"`` or ``"xls"`` (:data:`LAYOUTS`).
 
     Returns
     -------
