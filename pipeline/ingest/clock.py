@@ -114,6 +114,14 @@ UNREAD_FORM_HINT = (
     f"the column holds clock readings in a form the reader does not guess (it reads "
     f"{READ_FORMS}): export the time in seconds, or name another time column in the run "
     "sheet")
+#: A reading that stops at the minute (``3/5/2024 2:03 PM``): its last hours and minutes
+#: have no seconds after them.
+_STOPS_AT_MINUTE = re.compile(r"(?:^|[^:\d])\d{1,2}:\d{2}(?: *[AaPp]\.?[Mm]\.?)? *$")
+#: Why clock readings to the minute do not time a log, and what to do.
+MINUTE_READINGS = (
+    "the samples of a minute share one reading, so they cannot time the log (a "
+    "spreadsheet saves a date and time as it shows them: show the seconds, h:mm:ss, "
+    "before saving, or export from the machine)")
 #: The arrow type each kind is parsed as.
 _ARROW_TYPES = {"time of day": pa.time64("ns"), "date and time": pa.timestamp("ns"),
                 "minutes and seconds": pa.timestamp("ns")}
@@ -182,6 +190,22 @@ def is_unread_clock(text: str) -> bool:
     (True, False)
     """
     return looks_like_clock(text) and clock_kind(text) is None
+
+
+def stops_at_minute(text: str) -> bool:
+    """True if the clock reading `text` has hours and minutes but no seconds.
+
+    >>> stops_at_minute("3/5/2024 2:03 PM"), stops_at_minute("05.03.2024 14:03:27")
+    (True, False)
+    """
+    return _STOPS_AT_MINUTE.search(text) is not None
+
+
+def unread_clock_hint(text: str) -> str:
+    """The hint for a clock reading `text` that is not read: why, and what to do."""
+    if stops_at_minute(text):
+        return f"the column holds clock readings to the minute: {MINUTE_READINGS}"
+    return UNREAD_FORM_HINT
 
 
 class Fraction(NamedTuple):

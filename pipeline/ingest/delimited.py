@@ -65,10 +65,12 @@ import pyarrow as pa
 
 from pipeline.errors import EmptyFileError, LayoutError
 from pipeline.ingest.clock import (
+    MINUTE_READINGS,
     READ_FORMS,
     ClockColumn,
     declare_seconds,
     is_unread_clock,
+    stops_at_minute,
 )
 from pipeline.ingest.names import fold, header_text, match_role, split_name_unit
 from pipeline.ingest.preamble import parse_preamble
@@ -324,6 +326,9 @@ def numeric_candidates(spec: TableSpec, candidates: Candidates, names: list[str]
 
 def _why_set_aside(name: str, cell: str, what: str) -> str:
     """Why column `name`, whose first cell is `cell`, takes no role: it holds `what`."""
+    if what == "text" and is_unread_clock(cell) and stops_at_minute(cell):
+        return (f"column {name!r} holds clock readings to the minute ({cell!r}...): "
+                f"{MINUTE_READINGS}")
     if what == "text" and is_unread_clock(cell):
         return (f"column {name!r} holds clock readings in a form the reader does not guess "
                 f"({cell!r}...; it reads {READ_FORMS}), to be exported as seconds")

@@ -29,7 +29,6 @@ import pyarrow.csv as pacsv
 
 from pipeline.errors import EmptyFileError, EncodingError, LayoutError
 from pipeline.ingest.clock import (
-    UNREAD_FORM_HINT,
     ClockColumn,
     carried_order,
     clock_kind,
@@ -38,6 +37,7 @@ from pipeline.ingest.clock import (
     fraction_columns,
     looks_like_clock,
     unpadded_milliseconds,
+    unread_clock_hint,
 )
 from pipeline.ingest.names import match_role, repeats
 from pipeline.ingest.source import Source
@@ -270,7 +270,7 @@ def cell_hint(text: str, default: str) -> str:
     out-of-range mark or a clock reading explained, else `default`."""
     if _OUT_OF_RANGE.fullmatch(text.strip()):
         return OUT_OF_RANGE_HINT
-    return UNREAD_FORM_HINT if looks_like_clock(text) else default
+    return unread_clock_hint(text) if looks_like_clock(text) else default
 
 
 def _line_of(raw: bytes, position: int) -> int:

@@ -234,7 +234,7 @@ def test_spreadsheet_time_cells(tmp_path, cell, kind):
     assert any(f"holds clock readings ({kind}" in w for w in meta.warnings)
 
 
-@pytest.mark.parametrize("cell", ["3/5/2024 2:03 PM", "5.3.2024 14:03:27", "3/5/2024 14:03"])
+@pytest.mark.parametrize("cell", ["5.3.2024 14:03:27", "2024-3-5 14:03:27"])
 def test_a_clock_form_not_read_is_set_aside_and_a_run_needing_time_refused(write, cell):
     # two columns: found as a table all the same
     with pytest.raises(ColumnError) as caught:
@@ -243,6 +243,19 @@ def test_a_clock_form_not_read_is_set_aside_and_a_run_needing_time_refused(write
     assert (f"column 'Time' holds clock readings in a form the reader does not guess "
             f"({cell!r}...; it reads {READ_FORMS}), to be exported as seconds;"
             ) in caught.value.hint
+
+
+@pytest.mark.parametrize("cell", ["3/5/2024 2:03 PM", "3/5/2024 14:03", "05.03.2024 14:03",
+                                  "14:03"])
+def test_clock_readings_to_the_minute_are_refused_as_the_time_and_say_why(write, cell):
+    """A spreadsheet saves a date and time as it shows them, often without the seconds:
+    a minute's samples then share one reading, which no order of the rows can time."""
+    with pytest.raises(ColumnError) as caught:
+        read_table(write("log.csv", log([cell] * len(SECONDS))), kind="engagement")
+    assert (f"column 'Time' holds clock readings to the minute ({cell!r}...): the samples "
+            "of a minute share one reading, so they cannot time the log (a spreadsheet "
+            "saves a date and time as it shows them: show the seconds, h:mm:ss, before "
+            "saving, or export from the machine);") in caught.value.hint
 
 
 @pytest.mark.parametrize("suffix", [".csv", ".xlsx"])
@@ -265,9 +278,9 @@ def test_a_tensile_log_with_a_clock_form_not_read_is_read_without_it(tmp_path, s
     assert list(table.columns) == ["force", "gauge_1"]
     np.testing.assert_allclose(table["force"], np.round(FORCE_KN, 6) * 1e3)
     np.testing.assert_allclose(table["gauge_1"], np.arange(len(FORCE_KN)) * 1e-5, atol=1e-12)
-    assert ("column 'Date Time' holds clock readings in a form the reader does not guess "
-            "('3/5/2024 11:50 AM'...; it reads " + READ_FORMS
-            + "), to be exported as seconds: not used as the time") in meta.warnings
+    assert ("column 'Date Time' holds clock readings to the minute ('3/5/2024 11:50 AM'"
+            "...): the samples of a minute share one reading") in "\n".join(meta.warnings)
+    assert meta.warnings[-1].endswith("export from the machine): not used as the time")
 
 
 def spreadsheet_stamp(stamp: datetime.datetime, order: str, twelve: bool) -> str:
