@@ -170,10 +170,12 @@ TRANSVERSE_NAMES = (
 COMMAND_NAMES = ("sollwert", "soll", "setpoint", "set point", "command", "cmd", "demand",
                  "target", "consigne", "consigna", "zadana")
 #: Names of one part of a clock reading split into columns (``Hour [h]``, ``Minute [m]``,
-#: ``Second [sec]``, as a LabVIEW logger writes them): no elapsed time, and no length
-#: whatever their unit says (``m`` is a minute there).
+#: ``Second [sec]``, as a LabVIEW logger writes them; the date, as MTS 793 writes
+#: ``Datum [d]``, the spreadsheet's day number): no elapsed time, and no length whatever
+#: their unit says (``m`` is a minute there).
 CLOCK_PART_NAMES = ("hour", "minute", "second", "stunde", "sekunde", "heure", "seconde",
-                    "hora", "minuto", "segundo", "ora", "secondo")
+                    "hora", "minuto", "segundo", "ora", "secondo",
+                    "date", "datum", "fecha", "дата", "日付", "日期", "tarih")
 #: Words a logger appends to a channel's name for the statistic of each interval it writes
 #: (PicoLog's ``Force Ave. (kN)``, ``LVDT Last (mm)``, ``Differential 13 - 14 Last (V)``):
 #: after other words, a qualifier, not the German load (``Last``) or Instron's video

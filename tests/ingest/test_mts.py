@@ -78,3 +78,20 @@ def test_block_naming_other_columns(write):
 def test_truncated_last_point(write):
     table, meta = read_table(write("m.dat", mts() + "\r\n30,05\t1,", "latin-1"))
     assert len(table) == 12 and "line 32 is truncated" in meta.warnings[0]
+
+
+def test_the_date_in_days_beside_the_running_time_is_not_the_time(write):
+    # a real German MTS 793 export: the spreadsheet's day number (41893: 11.09.2014) with
+    # its unit "d" in the first column, the running time in seconds beside it
+    lines = ["MTS793|MPT|DEU|1|2|,|.|:|49|1|1|A", "",
+             "Datenerfassung\t\t\t\t\t\tZeit:\t345,61914\ts\t11.09.2014 13:43:25",
+             "Datum\tLaufzeit\tCh 1 Kraft Sollwert\tCh 1 Kraft\tCh 1 Weg",
+             "d\ts\tkN\tkN\tmm"]
+    lines += [f"41893\t{15.679688 + 0.5 * row:.6f}\t-0,{row}\t{row + 1},5\t0,{row}5".replace(
+        ".", ",") for row in range(6)]
+    table, meta = read_table(write("specimen.dat", "\r\n".join(lines) + "\r\n", "latin-1"),
+                             kind="engagement")
+    assert list(table.columns) == ["time", "force", "gauge_1"]
+    np.testing.assert_allclose(table["time"], 15.679688 + 0.5 * np.arange(6))
+    np.testing.assert_allclose(table["force"], (np.arange(6) + 1.5) * 1e3)
+    assert not any("could be the time" in warning for warning in meta.warnings)
