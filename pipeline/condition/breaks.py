@@ -256,6 +256,14 @@ def reading_step(channel: np.ndarray) -> float:
     return float(steps.min()) if steps.size else 0.0
 
 
+def channel_tolerance(channel: np.ndarray) -> float:
+    """How far a channel's reading may move and still be still [channel's unit]: five
+    times its noise, half a per cent of its range, or :data:`RESOLUTION_STEPS` steps of
+    its resolution, whichever is largest."""
+    return max(5.0 * noise_level(channel), 0.005 * np.ptp(channel),
+               RESOLUTION_STEPS * reading_step(channel))
+
+
 def _frozen_since(channel: np.ndarray, position: int, tolerance: float) -> int:
     """The first sample of the constant stretch of `channel` that holds `position`."""
     moved = np.flatnonzero(np.abs(channel[:position] - channel[position]) > tolerance)
@@ -298,8 +306,7 @@ def find_removal(oriented_force: np.ndarray, oriented_channel: np.ndarray,
     channel = np.asarray(oriented_channel[: peak + 1], dtype=float)
     if force.size < 3:
         return None
-    tolerance = max(5.0 * noise_level(channel), 0.005 * np.ptp(channel),
-                    RESOLUTION_STEPS * reading_step(channel))
+    tolerance = channel_tolerance(channel)
     rise = FREEZE_RISE * whole[peak]
     # past the maximum the specimen still lengthens while the force falls (necking)
     falling = _freeze(whole[peak] - whole[peak:], oriented_channel[peak:], tolerance, rise,

@@ -30,6 +30,7 @@ import pandas as pd
 from pipeline.condition.breaks import find_fracture, find_removal
 from pipeline.condition.channels import choose_channels, compared_slopes
 from pipeline.condition.segmentation import BRANCHES, Segmentation, load_sign, segment_cycles
+from pipeline.condition.tares import join_tares
 from pipeline.errors import SignalError
 
 #: Longest run of missing samples that is dropped rather than reported [samples].
@@ -177,6 +178,21 @@ def _check_clipping(force: np.ndarray, gauge: np.ndarray, name: str, rows: pd.In
                 )
 
 
+def _joined(channel: pd.Series, force: np.ndarray, column: str, warnings: list[str]
+            ) -> pd.Series:
+    """`channel` read from its last zero throughout (:func:`join_tares`), each zeroing
+    told in `warnings`."""
+    joined, tares = join_tares(channel.to_numpy(), force)
+    for tare in tares:
+        step = (f"{tare.step * 1e3:.4g} mm" if str(channel.name).startswith("gauge_")
+                else f"{tare.step:.4g}")
+        warnings.append(f"{column!r} is zeroed at sample {channel.index[tare.position]} "
+                        f"({abs(force[tare.position]) / 1e3:.4g} kN, the force holding): its "
+                        f"readings before are moved by the {step} it dropped, to join those "
+                        "after")
+    return pd.Series(joined, index=channel.index, name=channel.name) if tares else channel
+
+
 def _permanent_strains(strain: np.ndarray, segmentation: Segmentation) -> np.ndarray:
     """Median strain at the valley after each cycle minus the one before it [1].
 
@@ -321,6 +337,8 @@ def condition_tensile(
     kept = (["time"] if "time" in table.columns else []) + ["force", *channels]
     samples = _drop_missing(table[kept].astype(float), ["force", *channels], warnings)
     force = samples["force"].to_numpy()
+    for name in channels:
+        samples[name] = _joined(samples[name], force, columns[name], warnings)
     sign = load_sign(force)
     fracture = find_fracture(sign * force)
     end = force.size if fracture is None else fracture + 1

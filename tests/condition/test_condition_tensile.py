@@ -189,3 +189,42 @@ def test_channels_all_cut_early_say_where_in_the_refusal():
     assert [name for name, _ in said] == ["Weg", "Traverse"]
     for (_, kilonewtons), sample in zip(said, (8, 10), strict=True):  # within two samples
         assert force[sample - 1] <= float(kilonewtons) * 1e3 <= force[sample + 2]
+
+
+@pytest.mark.parametrize("sign", [1, -1])
+def test_gauges_zeroed_at_the_preload_read_as_if_zeroed_from_the_start(sign):
+    """The lab zeroes both gauges during the first hold at the preload (sample 10), as an
+    MTS controller writes it into the log: the conditioned run is the one never zeroed
+    late, and the zeroing is told."""
+    reference = constructed_run("triangle")
+    table = reference.copy()
+    table.loc[:9, "gauge_1"] += 0.8e-3
+    table.loc[:9, "gauge_2"] -= 41e-3
+    flip = {name: sign * table[name] for name in ("force", "gauge_1", "gauge_2")}
+    run = condition_tensile(table.assign(**flip), gauge_length=0.5, preload=LOW, n_cycles=3,
+                            columns={"gauge_1": "Weg", "gauge_2": "1470533"})
+    expected = condition_tensile(reference.assign(
+        **{name: sign * reference[name] for name in flip}), gauge_length=0.5, preload=LOW,
+        n_cycles=3)
+    np.testing.assert_allclose(run.samples["strain"], expected.samples["strain"], atol=1e-15)
+    np.testing.assert_allclose(run.cycles["permanent_set"], SET, rtol=1e-9)
+    assert run.warnings == [
+        f"'Weg' is zeroed at sample 10 (1 kN, the force holding): its readings before are "
+        f"moved by the {sign * 0.8:.4g} mm it dropped, to join those after",
+        f"'1470533' is zeroed at sample 10 (1 kN, the force holding): its readings before "
+        f"are moved by the {-sign * 41:.4g} mm it dropped, to join those after"]
+
+
+def test_a_gauge_unplugged_to_zero_in_a_loading_is_cut_where_it_dropped():
+    """A simulated 18x64 test whose second extensometer drops to a zero reading halfway up
+    the first loading and stays there: no zeroing (the force rises), the channel is cut at
+    the drop and the other gauge carries the cycles."""
+    truth = TensileTruth.for_chain("18x64")
+    table = simulate_tensile(truth, seed=4)
+    drop = int(np.argmax(table["force"].to_numpy() > (truth.preload + truth.upper_force) / 2))
+    table.loc[drop:, "gauge_2"] = np.round(np.random.default_rng(1).normal(
+        0.0, 2e-6, len(table) - drop) / 1e-5) * 1e-5
+    run = condition_tensile(table, truth.gauge_length, preload=truth.preload, n_cycles=3)
+    assert not any("zeroed" in warning for warning in run.warnings)
+    assert run.channels.loc["gauge_2", "removed_at"] == drop
+    assert np.isnan(run.channel_strains["gauge_2"].to_numpy()[drop:]).all()
