@@ -164,10 +164,11 @@ def find_fracture(oriented_force: np.ndarray) -> int | None:
     if start is None:
         return None
     bottom = start + 1 + int(np.argmin(force[start + 1 : start + FRACTURE_SAMPLES + 1]))
-    last = bottom - 1  # the last sample before the sudden fall to the bottom
-    while last > start and force[last] - force[bottom] < threshold:
-        last -= 1
-    return last
+    # the last sample before the fall: a fall over several samples (a slow log) begins
+    # with the first step down of at least its share of a fracture's fall
+    drops = force[start:bottom] - force[start + 1 : bottom + 1]
+    sudden = np.flatnonzero(drops > max(threshold / FRACTURE_SAMPLES, settled))
+    return start + int(sudden[0]) if sudden.size else bottom - 1
 
 
 

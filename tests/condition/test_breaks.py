@@ -9,6 +9,7 @@ from pipeline.condition.breaks import (
     find_removal,
     reading_step,
 )
+from pipeline.simulate.pull import PullTruth, simulate_pull
 
 #: A 13x50 chain on a 0.9 m gauge: stiffness E0 [N], gauge length [m], force noise [N],
 #: gauge noise [m] and gauge resolution [m] as a lab's clip-on extensometer logs them.
@@ -70,3 +71,22 @@ def test_fracture_is_the_last_sample_before_the_sudden_drop():
     broken = np.concatenate([force, [300.0, 200.0, 250.0, 220.0]])
     assert find_fracture(broken) == force.size - 1
     assert find_fracture(force) is None
+
+
+@pytest.mark.parametrize("intervals", [1, 2, 5])
+def test_a_fracture_logged_over_several_samples_is_the_sample_before_the_fall(intervals):
+    """A slow log (a 5 Hz compression test of a real MTS export falls over five samples)
+    catches the fall midway: the fracture is still the last sample before it, where the
+    simulated pull's truth has it, not one on the way down."""
+    for seed in range(5):
+        truth = PullTruth.for_chain("18x64", fracture_samples=intervals)
+        force = simulate_pull(truth, seed)["force"].to_numpy()
+        assert find_fracture(force) == truth.fracture_index - 1
+
+
+def test_a_real_slow_fracture_is_the_sample_before_the_fall():
+    # the last samples of an MTS 793 compressive-strength export at 5 Hz [kN], oriented
+    ramp = np.linspace(300.0, 415.13135, 150)
+    fall = [415.53741, 376.14471, 249.9745, 133.22809, 46.494553, 1.6429368, -0.24702586,
+            -0.2255328, -0.21011196, -0.22306107, -0.20575896]
+    assert find_fracture(np.concatenate([ramp, fall]) * 1e3) == ramp.size
