@@ -152,7 +152,7 @@ def choose_channels(
             continue
         why = ("the run sheet says not to average" if average is False and kinds[name] == kind
                else "another kind of channel" if kinds[name] != kind
-               else "its stiffness disagrees beyond "
+               else f"the {kind} channels' stiffnesses disagree beyond "
                f"{100 * SAME_SLOPE_TOLERANCE:g} %")
         warnings.append(
             f"E0 from {' + '.join(label[n] for n in used)}, {label[name]} not used "
