@@ -349,6 +349,28 @@ def yield_onset(force: np.ndarray, strain: np.ndarray) -> float:
     return float(lower[found[0]]) if found.size else np.inf
 
 
+def _below_yield(force: np.ndarray, strain: np.ndarray) -> np.ndarray:
+    """The samples of a loading branch below its onset of yield (:func:`yield_onset`).
+
+    Raises
+    ------
+    FitError
+        When fewer than :data:`MIN_POINTS` are: the branch bends almost from its start.
+    """
+    onset = yield_onset(force, strain)
+    linear = force <= onset
+    if np.count_nonzero(linear) < MIN_POINTS:
+        raise FitError(
+            f"the loading bends from {onset / 1e3:.4g} kN on, next to its start at "
+            f"{force.min() / 1e3:.4g} kN (its tangent slope falls {100 * YIELD_SLOPE_DROP:g} % "
+            f"below the steepest): below that, {np.count_nonzero(linear)} samples, and a fit "
+            f"needs {MIN_POINTS}",
+            hint="a specimen curved from the start has no linear region to fit: give the "
+                 "window in the run sheet, fit_window = {force_low_kN = ..., "
+                 "force_high_kN = ...}, or log at a higher rate")
+    return linear
+
+
 def fit_line(
     force: np.ndarray,
     strain: np.ndarray,
@@ -485,7 +507,7 @@ def fit_stiffness(
                     low, span = f.min(), np.ptp(f)
                     window = (low + fraction_window[0] * span, low + fraction_window[1] * span)
                 else:
-                    linear = f <= yield_onset(f, e) if name == "loading" else slice(None)
+                    linear = _below_yield(f, e) if name == "loading" else slice(None)
                     window = scan_windows(f[linear], e[linear], min_span=min_span)
                 rows.append(asdict(fit_line(f, e, window, confidence=confidence)))
             except FitError as error:

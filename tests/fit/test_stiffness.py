@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 
 import numpy as np
@@ -240,3 +241,32 @@ def test_too_few_samples_per_branch_are_refused_with_the_count():
     assert fullest < MIN_POINTS
     with pytest.raises(FitError, match=f"the fullest holds {fullest} with a strain"):
         fit_stiffness(run)
+
+
+def test_a_loading_curved_from_its_start_is_refused_with_where_it_bends():
+    """A specimen softening all the way up (a concrete cylinder of a real MTS export: its
+    tangent slope falls 5 % within the first samples): no linear region to fit, said with
+    the force where it bends and how many samples lie below."""
+    up = np.linspace(40e3, 134e3, 125)
+    strain_up = (up - 40e3) / 1e9 * (1 + 2.0 * (up - 40e3) / 94e3)  # slope falls to a third
+    down = up[::-1]
+    strain_down = strain_up[-1] - (134e3 - down) / 1e9
+    hold = np.full(20, 40e3)
+    force = np.concatenate([hold, up, down, hold, up, down, hold])
+    strain = np.concatenate([np.zeros(20), strain_up, strain_down,
+                             np.full(20, strain_down[-1]), strain_down[-1] + strain_up,
+                             strain_down[-1] + strain_down, np.full(20, 2 * strain_down[-1])])
+    run = condition_tensile(pd.DataFrame({"force": force, "strain_1": strain}), None,
+                            n_cycles=2)
+    with pytest.raises(FitError) as caught:
+        fit_stiffness(run)
+    onset, start, below = re.fullmatch(
+        r"cycle 1, loading branch: the loading bends from ([\d.]+) kN on, next to its start "
+        r"at ([\d.]+) kN \(its tangent slope falls 5 % below the steepest\): below that, "
+        r"(\d+) samples, and a fit needs 10", caught.value.message).groups()
+    assert float(start) == pytest.approx(40.0)
+    # the tangent slope 1 + 4 x (x the share of the range) is 5 % down at x = 1.3 %
+    assert 40.0 < float(onset) < 40.0 + 0.1 * 94.0
+    # the ramp's samples below the onset, and the hold's last one where the branch begins
+    assert int(below) - 1 <= np.count_nonzero(up <= float(onset) * 1e3) <= int(below)
+    assert "fit_window = {force_low_kN" in caught.value.hint
