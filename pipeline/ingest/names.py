@@ -197,6 +197,10 @@ _BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^(
 _RUN_LABEL = re.compile(r"\s+(?:Run\s*#?\s*\d+|Auto)$")
 #: The channel a computed one was derived from, in trailing brackets.
 _SOURCE = re.compile(r"\((?P<source>[^()]+)\)\s*$")
+#: A displacement of an MTS controller's channel (``Ch 1 Weg``, ``Ch 1 Displacement``): the
+#: channel's own transducer on its actuator, so the machine's travel; the sensors on the
+#: specimen are named by the lab (``Extensometer``, a serial number).
+_CONTROLLER_TRAVEL = re.compile(r"ch\.? ?\d+ (?:weg|displacement|position)", re.IGNORECASE)
 _TOKEN = re.compile(r"[^\W\d_]+|\d+")
 
 
@@ -325,10 +329,14 @@ def gauge_kind(name: str) -> str:
     ('crosshead', 'extensometer', 'gauge')
     >>> gauge_kind("Tensile strain (Extension)"), gauge_kind("Tensile strain (AVE 2)")
     ('gauge', 'extensometer')
+    >>> gauge_kind("Ch 1 Weg"), gauge_kind("1470533")
+    ('crosshead', 'gauge')
     """
     source = _SOURCE.search(name)
     if source is not None:
         return gauge_kind(source["source"])
+    if _CONTROLLER_TRAVEL.fullmatch(name.strip()):
+        return "crosshead"
     return _best_match(name, _KIND_KEYWORDS) or "gauge"
 
 

@@ -157,6 +157,16 @@ def test_what_a_displacement_channel_measures_in_more_languages(name, kind):
     assert gauge_kind(name) == kind
 
 
+@pytest.mark.parametrize(("name", "kind"), [
+    # real MTS TestSuite exports: the controller's channel travels with its actuator; the
+    # lab's displacement transducers on the specimen are named by their serial numbers
+    ("Ch 1 Weg", "crosshead"), ("Ch 1 Displacement", "crosshead"), ("Ch2 Position", "crosshead"),
+    ("1470533", "gauge"), ("Ch 1 Dehnung", "extensometer"), ("Weg Ch 1", "gauge"),
+])
+def test_an_mts_controller_channels_displacement_is_its_actuators(name, kind):
+    assert gauge_kind(name) == kind
+
+
 @pytest.mark.parametrize(("name", "role", "kind"), [
     # PicoLog writes each channel's statistic after its name: a qualifier
     ("Force Ave.", "force", None), ("Load Ave.", "force", None), ("Force Min.", "force", None),
