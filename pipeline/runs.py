@@ -447,7 +447,9 @@ def process_wear_run(sheet: RunSheet, run: RunDef, raw_sha256: str,
                else None)
     log, notes = condition_wear(table, pitches=run.section_pitches, pitch=chain["t"],
                                 reference=run.elongation_reference,
-                                abscissa=run.wear_abscissa, channel=channel)
+                                abscissa=run.wear_abscissa, channel=channel,
+                                columns={column.role: column.name
+                                         for column in metadata.columns if column.role})
     progress(run.id, "fit")
     fit = fit_wear(log, model=run.wear_model)
     pin = _pin_criterion(run, chain)

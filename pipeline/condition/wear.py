@@ -46,6 +46,7 @@ Paper 004, eq. (3) (allowed pitch growth); ``docs/models/paper-004-pin-criterion
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -315,6 +316,7 @@ def condition_wear(
     reference: str,
     abscissa: str | None = None,
     channel: str | None = None,
+    columns: Mapping[str, str] | None = None,
 ) -> tuple[WearLog, list[str]]:
     """The :class:`WearLog` of a canonical wear table, and the choices made on the way.
 
@@ -331,6 +333,9 @@ def condition_wear(
         The running coordinate; default the running time, else the cycles.
     channel : {"length", "elongation"}, optional
         The channel to read; default the one the table holds.
+    columns : mapping, optional
+        Canonical column -> the file's column name, for messages; default the
+        canonical name.
 
     Returns
     -------
@@ -349,7 +354,7 @@ def condition_wear(
         As :func:`wear_from_length`.
     """
     abscissa, notes = _running(table, abscissa)
-    name = _channel(table, channel)
+    name = _channel(table, channel, columns or {})
     values = table[name].to_numpy(dtype=float)
     if name.startswith("strain_"):
         values = values * _section_length(pitches, pitch, reference)
@@ -374,8 +379,9 @@ def _running(table: pd.DataFrame, abscissa: str | None) -> tuple[str, list[str]]
                     "over the cycles)"]
 
 
-def _channel(table: pd.DataFrame, channel: str | None) -> str:
-    """The column of `table` holding the readings: ``length``, or its one elongation."""
+def _channel(table: pd.DataFrame, channel: str | None, columns: Mapping[str, str]) -> str:
+    """The column of `table` holding the readings: ``length``, or its one elongation
+    (`columns` the file's name of each, for messages)."""
     if channel not in (None, *CHANNELS):
         raise ValueError(f"channel must be one of {', '.join(CHANNELS)}, got {channel!r}")
     elongations = [name for name in table.columns if re.fullmatch(r"(gauge|strain)_\d+", name)]
@@ -388,5 +394,6 @@ def _channel(table: pd.DataFrame, channel: str | None) -> str:
     if not chosen:
         wanted = channel or " or ".join(CHANNELS)
         raise SignalError(f"the log has no {wanted} column", column=wanted, hint=hint)
+    shown = [columns.get(name, name) for name in chosen]
     raise SignalError(f"the log holds {len(chosen)} columns that could be the readings: "
-                      + ", ".join(chosen), column=chosen[0], hint=hint)
+                      + ", ".join(map(repr, shown)), column=shown[0], hint=hint)

@@ -177,6 +177,17 @@ def test_condition_wear_refuses_what_it_cannot_tell(columns, options, words):
     assert "run sheet" in raised.value.hint
 
 
+def test_the_channels_that_could_be_the_readings_are_named_as_the_file_names_them():
+    table = pd.DataFrame({"time": TIME, "gauge_1": PITCHES * GROWTH,
+                          "gauge_2": PITCHES * GROWTH})
+    with pytest.raises(SignalError) as raised:
+        condition_wear(table, pitches=PITCHES, pitch=PITCH, reference="nominal",
+                       columns={"gauge_1": "Piezo position", "gauge_2": "MEMS displ."})
+    assert raised.value.message == ("the log holds 2 columns that could be the readings: "
+                                    "'Piezo position', 'MEMS displ.'")
+    assert raised.value.column == "Piezo position"
+
+
 def test_condition_wear_takes_the_channel_named():
     table = pd.DataFrame({"time": TIME, "length": LENGTH, "gauge_1": 2 * PITCHES * GROWTH})
     log, _ = condition_wear(table, pitches=PITCHES, pitch=PITCH, reference="nominal",
