@@ -326,10 +326,10 @@ def numeric_candidates(spec: TableSpec, candidates: Candidates, names: list[str]
 
 def _why_set_aside(name: str, cell: str, what: str) -> str:
     """Why column `name`, whose first cell is `cell`, takes no role: it holds `what`."""
-    if what == "text" and is_unread_clock(cell) and stops_at_minute(cell):
-        return (f"column {name!r} holds clock readings to the minute ({cell!r}...): "
-                f"{MINUTE_READINGS}")
     if what == "text" and is_unread_clock(cell):
+        if stops_at_minute(cell):
+            return (f"column {name!r} holds clock readings to the minute ({cell!r}...): "
+                    f"{MINUTE_READINGS}")
         return (f"column {name!r} holds clock readings in a form the reader does not guess "
                 f"({cell!r}...; it reads {READ_FORMS}), to be exported as seconds")
     return f"column {name!r} holds {what} ({cell!r}...), not numbers"
