@@ -17,7 +17,10 @@ File defects handled
 * block header lines repeated before every block: removed in one regular
   expression pass over the bytes, the points of all blocks parsed by pyarrow
   as one table (line numbers in messages still refer to the file);
-* a later block naming other columns than the first: error naming the line;
+* a later block of other columns than the first (MTS 793 interleaves the
+  acquisition of the test's peaks, two rows of other channels, with the
+  timed samples; a last block may add or reorder channels): left out, with a
+  warning naming its lines, columns and rows;
 * Spanish or English names (``Tiempo``, ``Fuerza``, ``Desplazamiento``,
   ``Recuento``, ``Count``) and a separate units row (``Sec``, ``mm``, ``kgf``);
 * the counter in ``cycles`` (half cycles as ``99,5``) or ``segments`` (two per
@@ -30,10 +33,9 @@ File defects handled
 from __future__ import annotations
 
 import re
-from collections import Counter
 from collections.abc import Mapping
+from typing import NamedTuple
 
-from pipeline.errors import LayoutError
 from pipeline.ingest.delimited import raw_table, text_header
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
@@ -85,12 +87,21 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
     data = head.source.read(start, head.size)
     if not head.ascii_compatible:
         data = data.decode(head.codec, errors="replace").encode("utf-8")
-    header.metadata.preamble["blocks"] = str(1 + _check_blocks(head, spec, data))
+    blocks = _later_blocks(head, spec, data)
+    same = [block for block in blocks if not block.other]
+    header.metadata.preamble["blocks"] = str(1 + sum(block.opens for block in same))
+    header.metadata.warnings += [block.note for block in blocks if block.other]
+    if any(block.other for block in blocks):
+        ends = [block.start for block in blocks] + [len(data)]
+        data = b"".join([data[: ends[0]]] + [data[block.start : end] for block, end
+                                             in zip(blocks, ends[1:], strict=True)
+                                             if not block.other])
     points = BufferSource(_HEADER_LINE.sub(b"", data), head.name)
     del data
     kept, truncated = trim_truncated_tail(Region(points, 0, points.size, 1, "utf-8"),
                                           spec.width, spec.delimiter, spec.decimal)
-    region = Region(head.source, start, head.size, spec.data_index + 1, head.codec, _is_data)
+    region = Region(head.source, start, head.size, spec.data_index + 1, head.codec, _is_data,
+                    frozenset(line for block in blocks if block.other for line in block.lines))
     table, _ = parse_body(  # comment lines are not data lines: filtered out above
         kept,
         region,
@@ -108,26 +119,57 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
     return raw_table(parsed, region, header)
 
 
-def _check_blocks(head: Head, spec: TableSpec, data: bytes) -> int:
-    """Count the later blocks (by their names rows, else by the lines that open them); raise
-    if one names other columns than the first."""
+class _Block(NamedTuple):
+    """A block after the first: its header lines, then its points."""
+
+    start: int  #: offset of its first header line in the data
+    lines: range  #: its lines in the file
+    opens: bool  #: whether its header repeats the first block's names or opening line
+    other: bool  #: whether it holds other columns than the first block
+    note: str  #: the warning that it is left out, when it is
+
+
+def _later_blocks(head: Head, spec: TableSpec, data: bytes) -> list[_Block]:
+    """The blocks after the first in `data` (the file from the first block's points on):
+    each a run of header lines and the points up to the next."""
+    codec = head.codec if head.ascii_compatible else "utf-8"
+    groups: list[list[int]] = []  # [start, end) of each run of header lines
+    for match in _HEADER_LINE.finditer(data):
+        if groups and groups[-1][1] == match.start():
+            groups[-1][1] = match.end()
+        else:
+            groups.append([match.start(), match.end()])
+    ends = [start for start, _ in groups[1:]] + [len(data)] if groups else []
+    blocks, line, counted = [], spec.data_index + 1, 0  # the file's line at offset `counted`
+    for (start, header_end), end in zip(groups, ends, strict=True):
+        line += data.count(b"\n", counted, start)
+        last = line + data.count(b"\n", start, max(end - 1, start))
+        blocks.append(_block(head, spec, data[start:header_end].decode(codec, errors="replace"),
+                             data[header_end:end], start, range(line, last + 1)))
+        counted = start
+    return blocks
+
+
+def _block(head: Head, spec: TableSpec, header_text: str, points: bytes, start: int,
+           lines: range) -> _Block:
+    """The block at offset `start` of the data, on file `lines`: its header lines
+    `header_text`, then its `points`."""
     names_row = head.lines[spec.header_index].strip()
     units_row = head.lines[spec.units_index].strip() if spec.units_index is not None else None
     openers = _block_openers(head, spec)
-    codec = head.codec if head.ascii_compatible else "utf-8"
-    later, opened = 0, Counter()
-    for match in _HEADER_LINE.finditer(data):
-        line = match.group().decode(codec, errors="replace").strip()
-        if line in openers:
-            opened[line] += 1
-            continue
-        if len(split_fields(line, spec.delimiter)) != spec.width or line == units_row:
-            continue
-        if line != names_row:
-            raise LayoutError(
-                "a block names other columns than the first block",
-                file=head.name, row=spec.data_index + 1 + data.count(b"\n", 0, match.start()),
-                hint="the export joins different tests: split it into one file per test",
-            )
-        later += 1
-    return later or max(opened.values(), default=0)
+    header = [line.strip() for line in header_text.splitlines()]
+    widths = {line: len(split_fields(line, spec.delimiter)) for line in header}
+    first = points.lstrip(b"\r\n").split(b"\n", 1)[0].rstrip(b"\r")
+    width = len(split_fields(first.decode("latin-1"), spec.delimiter)) if first else spec.width
+    renamed = [line for line in header if widths[line] == spec.width
+               and line not in openers and line not in (names_row, units_row)]
+    other = bool(renamed) or width != spec.width
+    names = next((line for line in header if widths[line] == width and line not in openers),
+                 header[-1] if header else "")
+    rows = sum(1 for line in points.splitlines() if line.strip()) if other else 0
+    note = (f"lines {lines.start} to {lines.stop - 1}: a block of other columns than the "
+            f"first ({', '.join(split_fields(names, spec.delimiter))}: {rows} row(s), another "
+            "acquisition of the test, such as its peaks) is left out; the samples are the "
+            "points of the blocks of the first block's columns")
+    return _Block(start, lines, any(line == names_row or line in openers for line in header),
+                  other, note)

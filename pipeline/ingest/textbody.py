@@ -83,6 +83,9 @@ class Region:
         Tells a data line from a line pyarrow does not see (blank lines by
         default; block headers for layouts that filter them out). Comment lines
         (:data:`~pipeline.ingest.sniff.COMMENT_MARK` first) are never rows.
+    left_out : frozenset of int
+        Line numbers of lines that are no rows whatever they hold (the blocks of
+        other columns an MTS export interleaves, taken out before parsing).
     """
 
     source: Source
@@ -91,6 +94,7 @@ class Region:
     first_line: int
     codec: str
     is_data: Callable[[str], bool] | None = None
+    left_out: frozenset[int] = frozenset()
 
     @property
     def name(self) -> str:
@@ -102,7 +106,7 @@ class Region:
         keep = self.is_data or bool
         lines = text_lines(self.source, self.start, self.end, self.codec)
         for number, line in enumerate(lines, start=self.first_line):
-            if keep(line):
+            if keep(line) and number not in self.left_out:
                 yield number, line
 
     def read(self, start: int, stop: int) -> bytes:
@@ -115,7 +119,7 @@ class Region:
 
     def line_of(self, row: int) -> int | None:
         """1-based line number of table row `row` (0-based), or None if past the end."""
-        if self.is_data is None and not self._has_skipped_lines:
+        if self.is_data is None and not self.left_out and not self._has_skipped_lines:
             return self.first_line + row
         rows = (number for number, line in self.lines() if not line.startswith(COMMENT_MARK))
         for index, number in enumerate(rows):

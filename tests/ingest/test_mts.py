@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from pipeline.errors import LayoutError, ValueParseError
+from pipeline.errors import ValueParseError
 from pipeline.ingest import read_table
 from pipeline.units import STANDARD_GRAVITY
 
@@ -67,12 +67,46 @@ def test_line_numbers_refer_to_the_file(write):
     assert (caught.value.row, caught.value.column) == (10, "Fuerza")
 
 
-def test_block_naming_other_columns(write):
+def test_a_block_of_other_columns_is_left_out_with_its_lines(write):
+    # the second of three blocks names a strain where the others name the displacement
     text = mts().replace("Desplazamiento", "Deformación", 2).replace("Deformación",
                                                                      "Desplazamiento", 1)
-    with pytest.raises(LayoutError, match="other columns") as caught:
-        read_table(write("m.dat", text, "latin-1"))
-    assert caught.value.row == 16
+    table, meta = read_table(write("m.dat", text, "latin-1"))
+    assert len(table) == 8 and meta.preamble["blocks"] == "2"
+    np.testing.assert_allclose(table["time"], [0, 0.01, 0.02, 0.03, 20, 20.01, 20.02, 20.03])
+    assert ("lines 13 to 22: a block of other columns than the first (Tiempo, Fuerza, "
+            "Deformación, Recuento: 4 row(s), another acquisition of the test, such as its "
+            "peaks) is left out") in meta.warnings[0]
+
+
+def test_peaks_between_and_after_the_samples_are_left_out(write):
+    """A real German MTS 793 export: the acquisition of the test's peaks (two rows of two
+    channels) between two blocks of timed samples, and at the end one of the channels
+    reordered; the lines of a bad value after them are still the file's."""
+    def timed(first: int, rows: int) -> list[str]:
+        return ["Datenerfassung\t\t\tZeit:\t233,6\ts\t18.03.2014 14:44:26",
+                "Laufzeit\tCh 1 Kraft\tCh 1 Weg", "s\tkN\tmm"] + [
+            f"{0.2 * row:.1f}\t-{row},5\t-0,0{row}".replace(".", ",")
+            for row in range(first, first + rows)] + [""]
+    peaks = ["Datenerfassung\t\t\tZeit:\t272,1\ts\t18.03.2014 14:45:04",
+             "Ch 1 Weg\tCh 1 Kraft", "mm\tkN", "1,9872092\t1,5674793",
+             "-1,2559063\t-942,45343", ""]
+    reordered = ["Datenerfassung\t\t\tZeit:\t272,2\ts\t18.03.2014 14:45:04",
+                 "Laufzeit\tCh 1 Weg\tCh 1 Kraft", "s\tmm\tkN", "272,1\t4,84\t-0,02",
+                 "43,85\t-0,41\t-119,56"]
+    lines = ["MTS793|MPT|DEU|1|2|,|.|:|49|1|1|A", "", *timed(0, 5), *peaks, *timed(5, 5),
+             *reordered]
+    table, meta = read_table(write("specimen.dat", "\r\n".join(lines) + "\r\n", "latin-1"),
+                             kind="engagement")
+    np.testing.assert_allclose(table["time"], 0.2 * np.arange(10))
+    np.testing.assert_allclose(table["force"], -(np.arange(10) + 0.5) * 1e3)
+    assert [warning.split(":")[0] for warning in meta.warnings[:2]] == [
+        "lines 12 to 17", "lines 27 to 31"]
+    assert "(Ch 1 Weg, Ch 1 Kraft: 2 row(s)," in meta.warnings[0]
+    with pytest.raises(ValueParseError) as caught:
+        read_table(write("bad.dat", "\r\n".join(lines).replace("1,4\t-7,5", "1,4\tx")
+                         + "\r\n", "latin-1"), kind="engagement")
+    assert caught.value.row == 23 and lines[22].startswith("1,4\t")
 
 
 def test_truncated_last_point(write):
