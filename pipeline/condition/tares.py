@@ -12,6 +12,9 @@ A zeroing is a step that
   sample, the loading having begun);
 * stands out of the steps before it (at least :data:`MIN_BEFORE` of them):
   :data:`STANDS_OUT` times their median, and more than the channel's noise;
+* comes before the force's maximum, as a lab zeroes its gauges before the
+  test (a reading that happens to land near zero as it jumps in the fall
+  after the maximum is none);
 * comes while the force holds: up to the sample before the step, over
   :data:`HOLD_SPAN` of the record, the force moves by no more than
   :data:`HOLD` of its range or :data:`HOLD_NOISE` times its noise (a gauge
@@ -93,8 +96,9 @@ def find_tares(channel: np.ndarray, force: np.ndarray) -> list[Tare]:
                               & (np.abs(channel[1:]) <= ZERO_LANDING * size))
     before = JUMP_NEIGHBOURHOOD // 2
     held = max(before, int(HOLD_SPAN * channel.size))
+    peak = int(np.argmax(np.abs(force)))
     return [Tare(int(step) + 1, float(-steps[step])) for step in landings
-            if step >= MIN_BEFORE
+            if MIN_BEFORE <= step < peak
             and size[step] > STANDS_OUT * np.median(size[max(step - before, 0) : step])
             and np.ptp(force[max(step - held, 0) : step + 1]) <= hold]
 

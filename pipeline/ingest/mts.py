@@ -20,7 +20,9 @@ File defects handled
 * a later block of other columns than the first (MTS 793 interleaves the
   acquisition of the test's peaks, two rows of other channels, with the
   timed samples; a last block may add or reorder channels): left out, with a
-  warning naming its lines, columns and rows;
+  warning naming its lines, columns and rows; so is a block of two rows in the
+  first block's columns that are each column's largest and smallest value (the
+  peaks again);
 * Spanish or English names (``Tiempo``, ``Fuerza``, ``Desplazamiento``,
   ``Recuento``, ``Count``) and a separate units row (``Sec``, ``mm``, ``kgf``);
 * the counter in ``cycles`` (half cycles as ``99,5``) or ``segments`` (two per
@@ -34,6 +36,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping
+from itertools import islice
 from typing import NamedTuple
 
 from pipeline.ingest.delimited import raw_table, text_header
@@ -55,6 +58,8 @@ LAYOUT = "mts"
 _DATA_START = r"[ \t]*(?:[-+.\d]|(?i:nan|n/a|na|null) *(?=[\t;,|\r\n]|$)|(?=[\t;,|\r\n]|$))"
 _HEADER_LINE = re.compile(rb"(?m)^(?!" + _DATA_START.encode() + rb")[^\r\n]*(?:\r\n|\r|\n|\Z)")
 _DATA_LINE = re.compile(_DATA_START)
+#: A line that is not blank.
+_ROW = re.compile(rb"[^\r\n]*[^\s][^\r\n]*")
 
 
 def _is_data(line: str) -> bool:
@@ -163,13 +168,33 @@ def _block(head: Head, spec: TableSpec, header_text: str, points: bytes, start: 
     width = len(split_fields(first.decode("latin-1"), spec.delimiter)) if first else spec.width
     renamed = [line for line in header if widths[line] == spec.width
                and line not in openers and line not in (names_row, units_row)]
-    other = bool(renamed) or width != spec.width
-    names = next((line for line in header if widths[line] == width and line not in openers),
-                 header[-1] if header else "")
-    rows = sum(1 for line in points.splitlines() if line.strip()) if other else 0
-    note = (f"lines {lines.start} to {lines.stop - 1}: a block of other columns than the "
-            f"first ({', '.join(split_fields(names, spec.delimiter))}: {rows} row(s), another "
+    rows = [row.group().decode("latin-1") for row in islice(_ROW.finditer(points), 3)]
+    opens = any(line == names_row or line in openers for line in header)
+    where = f"lines {lines.start} to {lines.stop - 1}"
+    if renamed or width != spec.width:
+        names = next((line for line in header if widths[line] == width and line not in openers),
+                     header[-1] if header else "")
+        return _Block(start, lines, opens, True, (
+            f"{where}: a block of other columns than the first "
+            f"({', '.join(split_fields(names, spec.delimiter))}: "
+            f"{sum(1 for _ in _ROW.finditer(points))} row(s), another "
             "acquisition of the test, such as its peaks) is left out; the samples are the "
-            "points of the blocks of the first block's columns")
-    return _Block(start, lines, any(line == names_row or line in openers for line in header),
-                  other, note)
+            "points of the blocks of the first block's columns"))
+    if _peaks(rows, spec):
+        return _Block(start, lines, opens, True, (
+            f"{where}: a block of two rows, each column's largest value then its smallest, "
+            "is the test's peaks, not samples: left out"))
+    return _Block(start, lines, opens, False, "")
+
+
+def _peaks(rows: list[str], spec: TableSpec) -> bool:
+    """Whether a block's `rows` are the peaks MTS 793 acquires: two rows, the first at
+    least the second in every column (time included: it steps back)."""
+    if len(rows) != 2:
+        return False
+    try:
+        high, low = ([float(field.strip().replace(spec.decimal, ".")) for field
+                      in split_fields(row, spec.delimiter)] for row in rows)
+    except ValueError:
+        return False
+    return len(high) == len(low) and all(a >= b for a, b in zip(high, low, strict=True))

@@ -129,3 +129,22 @@ def test_the_date_in_days_beside_the_running_time_is_not_the_time(write):
     np.testing.assert_allclose(table["time"], 15.679688 + 0.5 * np.arange(6))
     np.testing.assert_allclose(table["force"], (np.arange(6) + 1.5) * 1e3)
     assert not any("could be the time" in warning for warning in meta.warnings)
+
+
+def test_peaks_of_the_same_columns_are_no_samples(write):
+    """A real MTS 793 export ends with the peaks' acquisition in the samples' own columns:
+    each column's largest value, then its smallest (the time steps back). Read as rows,
+    they put the peak force beside other channels' extremes; they are left out."""
+    names = ["Laufzeit\tCh 1 Kraft\tCh 1 Weg", "Sec\tkN\tmm"]
+    samples = [f"{110 + 0.5 * row:.1f}\t-{row}0,5\t-0,{row}1".replace(".", ",")
+               for row in range(8)]
+    lines = ["MTS793|MPT|DEU|1|2|,|.|:|49|1|1|A", "",
+             "Datenerfassung\t\t\tZeit:\t556,4\tSec\t05.07.2010 15:30:12", *names, *samples,
+             "", "Datenerfassung\t\t\tZeit:\t556,5\tSec\t05.07.2010 15:30:12", *names,
+             "113,5\t0,34\t0,98", "110,0\t-71,36\t-0,74"]
+    table, meta = read_table(write("specimen.dat", "\r\n".join(lines) + "\r\n", "latin-1"),
+                             kind="engagement")
+    np.testing.assert_allclose(table["time"], 110 + 0.5 * np.arange(8))
+    assert meta.time_monotonic
+    assert meta.warnings == ["lines 15 to 19: a block of two rows, each column's largest value "
+                             "then its smallest, is the test's peaks, not samples: left out"]
