@@ -145,31 +145,41 @@ def _later_blocks(head: Head, spec: TableSpec, data: bytes) -> list[_Block]:
         else:
             groups.append([match.start(), match.end()])
     ends = [start for start, _ in groups[1:]] + [len(data)] if groups else []
+    first = _FirstBlock(head.lines[spec.header_index].strip(),
+                        head.lines[spec.units_index].strip() if spec.units_index is not None
+                        else None, _block_openers(head, spec))
+    view = memoryview(data)  # the blocks' points read in place, not copied
     blocks, line, counted = [], spec.data_index + 1, 0  # the file's line at offset `counted`
     for (start, header_end), end in zip(groups, ends, strict=True):
         line += data.count(b"\n", counted, start)
         last = line + data.count(b"\n", start, max(end - 1, start))
-        blocks.append(_block(head, spec, data[start:header_end].decode(codec, errors="replace"),
-                             data[header_end:end], start, range(line, last + 1)))
+        blocks.append(_block(spec, first, data[start:header_end].decode(codec, errors="replace"),
+                             view[header_end:end], start, range(line, last + 1)))
         counted = start
     return blocks
 
 
-def _block(head: Head, spec: TableSpec, header_text: str, points: bytes, start: int,
-           lines: range) -> _Block:
+class _FirstBlock(NamedTuple):
+    """What the later blocks are compared with: the first block's names and units rows,
+    and the lines that open a block (:func:`_block_openers`)."""
+
+    names: str
+    units: str | None
+    openers: set[str]
+
+
+def _block(spec: TableSpec, first: _FirstBlock, header_text: str, points: memoryview,
+           start: int, lines: range) -> _Block:
     """The block at offset `start` of the data, on file `lines`: its header lines
     `header_text`, then its `points`."""
-    names_row = head.lines[spec.header_index].strip()
-    units_row = head.lines[spec.units_index].strip() if spec.units_index is not None else None
-    openers = _block_openers(head, spec)
+    openers = first.openers
     header = [line.strip() for line in header_text.splitlines()]
     widths = {line: len(split_fields(line, spec.delimiter)) for line in header}
-    first = points.lstrip(b"\r\n").split(b"\n", 1)[0].rstrip(b"\r")
-    width = len(split_fields(first.decode("latin-1"), spec.delimiter)) if first else spec.width
-    renamed = [line for line in header if widths[line] == spec.width
-               and line not in openers and line not in (names_row, units_row)]
     rows = [row.group().decode("latin-1") for row in islice(_ROW.finditer(points), 3)]
-    opens = any(line == names_row or line in openers for line in header)
+    width = len(split_fields(rows[0], spec.delimiter)) if rows else spec.width
+    renamed = [line for line in header if widths[line] == spec.width
+               and line not in openers and line not in (first.names, first.units)]
+    opens = any(line == first.names or line in openers for line in header)
     where = f"lines {lines.start} to {lines.stop - 1}"
     if renamed or width != spec.width:
         names = next((line for line in header if widths[line] == width and line not in openers),
