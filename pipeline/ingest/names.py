@@ -169,6 +169,14 @@ TRANSVERSE_NAMES = (
 #: wherever the word stands.
 COMMAND_NAMES = ("sollwert", "soll", "setpoint", "set point", "command", "cmd", "demand",
                  "target", "consigne", "consigna", "zadana")
+#: Words of a channel the machine's software worked out from others, not one a sensor
+#: measured: WaveMatrix's ``"Elastic Strain(Static Plastic & Elastic Strain
+#: Calculation)"``, a strain split into its elastic part (the stress over an assumed
+#: modulus) and its plastic rest. Such a column takes no role: a stiffness fitted to it
+#: returns the modulus it was computed with.
+DERIVED_NAMES = ("calculation", "berechnung", "calcul", "cálculo", "calcolo", "obliczenia",
+                 "elastic strain", "plastic strain", "elastische dehnung",
+                 "plastische dehnung", "déformation élastique", "déformation plastique")
 #: Names of one part of a clock reading split into columns (``Hour [h]``, ``Minute [m]``,
 #: ``Second [sec]``, as a LabVIEW logger writes them; the date, as MTS 793 writes
 #: ``Datum [d]``, the spreadsheet's day number): no elapsed time, and no length whatever
@@ -358,10 +366,11 @@ def match_role(name: str) -> str | None:
     if tokens(name)[-1:] == ("id",):
         return None
     role = _best_match(name, _KEYWORDS)
-    return None if role == _TRANSVERSE or is_command(name) else role
+    return None if role == _TRANSVERSE or is_command(name) or is_derived(name) else role
 
 
 _COMMAND_KEYWORDS = tuple((tokens(word), "command") for word in COMMAND_NAMES)
+_DERIVED_KEYWORDS = tuple((tokens(word), "derived") for word in DERIVED_NAMES)
 
 
 def is_command(name: str) -> bool:
@@ -372,6 +381,18 @@ def is_command(name: str) -> bool:
     [True, True, False]
     """
     return _best_match(name, _COMMAND_KEYWORDS) is not None
+
+
+def is_derived(name: str) -> bool:
+    """Whether a column name says the software worked it out from other channels
+    (:data:`DERIVED_NAMES`): such a column takes no role, not even from its unit.
+
+    >>> [is_derived(name) for name in (
+    ...     "Elastic Strain(Static Plastic & Elastic Strain Calculation)",
+    ...     "Total Energy(Energy Calculation)", "Strain(8801MTB12548:SGE-57)")]
+    [True, True, False]
+    """
+    return _best_of(tokens(name), _DERIVED_KEYWORDS) is not None
 
 
 def is_clock_part(name: str) -> bool:

@@ -297,7 +297,7 @@ def test_wavematrix_total_and_elapsed_counts_are_a_choice_in_either_language(wri
 # the names of a real Instron WaveMatrix tracking export: derived channels are named
 # after the channel they come from ("Stress(...:Load)") or a count ("Cycle Energy")
 TRACKING = ('"Total Time (s)","Total Cycles","Load(8801:Load) (kN)","Stress(8801:Load) (MPa)",'
-            '"Cycle Energy(Energy Calculation) (J)","Position(8801:Position) (mm)"\n'
+            '"Cycle Energy (J)","Position(8801:Position) (mm)"\n'
             "5.08,1,4.3857,108.77,0,8.0699\n5.12,1,4.6882,116.27,0.0332,8.0772\n")
 
 
@@ -309,7 +309,7 @@ def test_a_candidate_whose_unit_is_not_of_its_role_makes_no_ambiguity(write):
     np.testing.assert_array_equal(table["cycle_count"], [1, 1])
     assert "column 'Stress(8801:Load)': unit 'MPa' is not a unit of force: column not used" \
         in meta.warnings
-    assert ("column 'Cycle Energy(Energy Calculation)': unit 'J' is not a unit of "
+    assert ("column 'Cycle Energy': unit 'J' is not a unit of "
             "cycle_count: column not used") in meta.warnings
 
 

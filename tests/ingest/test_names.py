@@ -8,6 +8,7 @@ from pipeline.ingest.names import (
     gauge_kind,
     is_clock_part,
     is_command,
+    is_derived,
     is_transverse,
     match_role,
     repeats,
@@ -122,6 +123,21 @@ def test_a_channel_across_the_specimen_takes_no_role(name):
                                   "a1 position cmd", "force_cmd"])  # a motor controller's
 def test_a_setpoint_or_command_channel_takes_no_role(name):
     assert match_role(name) is None and is_command(name)
+
+
+@pytest.mark.parametrize("name", [
+    # Instron WaveMatrix: a strain split at an assumed modulus into its elastic and
+    # plastic parts; fitting the elastic part returns that modulus
+    "Elastic Strain(Static Plastic & Elastic Strain Calculation)",
+    "Plastic Strain(Static Plastic & Elastic Strain Calculation)",
+    "Plastische Dehnung", "Déformation élastique", "Kraft (Berechnung)"])
+def test_a_channel_worked_out_from_others_takes_no_role(name):
+    assert match_role(name) is None and is_derived(name)
+
+
+def test_a_measured_channel_is_not_derived():
+    assert not is_derived("Strain(8801MTB12548:SGE-57)")
+    assert match_role("Strain(8801MTB12548:SGE-57)") is not None
 
 
 @pytest.mark.parametrize("name", ["actuator_a_id", "Load cell ID", "Specimen id"])
