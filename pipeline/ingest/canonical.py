@@ -627,6 +627,17 @@ def _past_midnight(raw: RawTable, step: float) -> str:
             "date and time in one column, year first, or the time in seconds)")
 
 
+def _starts_again(time: np.ndarray, backwards: np.ndarray) -> str:
+    """What a step back to the first sample's time (within two of its first steps) means:
+    tests one after another."""
+    first_step = float(time[1] - time[0])
+    landed = time[1:][backwards]
+    if not (first_step > 0 and np.any(np.abs(landed - time[0]) <= 2 * first_step)):
+        return ""
+    return (" (back to the first sample's time: the file may hold tests one after another, "
+            "to be exported each to a file of its own)")
+
+
 def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tuple[bool | None, int]:
     """Report missing values and time problems of `table` in `warnings`.
 
@@ -651,7 +662,8 @@ def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tupl
         if count:
             first = int(np.argmax(backwards)) + 1
             warnings.append(f"time: steps back {count} times, first at {raw.where(first)}"
-                            + _past_midnight(raw, steps[first - 1]))
+                            + (_past_midnight(raw, steps[first - 1])
+                               or _starts_again(time, backwards)))
         repeated = steps == 0
         if repeated.any():
             first = int(np.argmax(repeated)) + 1

@@ -29,6 +29,10 @@ File defects handled
   cycle): kept as counted in ``cycle_count`` with its unit;
 * the time gap between blocks (reported as time gaps, see
   :mod:`pipeline.ingest.canonical`);
+* a later block whose time starts again (at or before the first block's first
+  time): several tests one after another, as a logger writes that appends
+  each test to one file with its names row: refused, naming the block's
+  lines, rather than read as one test whose time steps back;
 * no line end after the last point; a truncated last point (dropped, warned).
 """
 
@@ -39,6 +43,7 @@ from collections.abc import Mapping
 from itertools import islice
 from typing import NamedTuple
 
+from pipeline.errors import LayoutError
 from pipeline.ingest.delimited import raw_table, text_header
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
@@ -92,8 +97,10 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
     data = head.source.read(start, head.size)
     if not head.ascii_compatible:
         data = data.decode(head.codec, errors="replace").encode("utf-8")
-    blocks = _later_blocks(head, spec, data)
+    times = header.candidates.roles.get("time", [])
+    blocks = _later_blocks(head, spec, data, times[0] if len(times) == 1 else None)
     same = [block for block in blocks if not block.other]
+    _refuse_tests_one_after_another(head, same)
     header.metadata.preamble["blocks"] = str(1 + sum(block.opens for block in same))
     header.metadata.warnings += [block.note for block in blocks if block.other]
     if any(block.other for block in blocks):
@@ -124,6 +131,20 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
     return raw_table(parsed, region, header)
 
 
+def _refuse_tests_one_after_another(head: Head, blocks: list[_Block]) -> None:
+    """Refuse a file whose later blocks start their time again: tests one after another."""
+    restarts = [block for block in blocks if block.restarts]
+    if restarts:
+        first = restarts[0].lines
+        raise LayoutError(
+            f"the block of lines {first.start} to {first.stop - 1} starts its time again, at "
+            "or before the first block's first time: the file holds "
+            f"{len(restarts) + 1} tests one after another, not one test in blocks",
+            file=head.name, row=first.start,
+            hint="export each test to a file of its own, or delete the other tests' lines in "
+                 "a copy of the file")
+
+
 class _Block(NamedTuple):
     """A block after the first: its header lines, then its points."""
 
@@ -132,11 +153,13 @@ class _Block(NamedTuple):
     opens: bool  #: whether its header repeats the first block's names or opening line
     other: bool  #: whether it holds other columns than the first block
     note: str  #: the warning that it is left out, when it is
+    restarts: bool = False  #: whether its time starts again (a test of its own)
 
 
-def _later_blocks(head: Head, spec: TableSpec, data: bytes) -> list[_Block]:
+def _later_blocks(head: Head, spec: TableSpec, data: bytes, time: int | None) -> list[_Block]:
     """The blocks after the first in `data` (the file from the first block's points on):
-    each a run of header lines and the points up to the next."""
+    each a run of header lines and the points up to the next. `time` is the column of
+    the time, if one column may be it."""
     codec = head.codec if head.ascii_compatible else "utf-8"
     groups: list[list[int]] = []  # [start, end) of each run of header lines
     for match in _HEADER_LINE.finditer(data):
@@ -147,7 +170,8 @@ def _later_blocks(head: Head, spec: TableSpec, data: bytes) -> list[_Block]:
     ends = [start for start, _ in groups[1:]] + [len(data)] if groups else []
     first = _FirstBlock(head.lines[spec.header_index].strip(),
                         head.lines[spec.units_index].strip() if spec.units_index is not None
-                        else None, _block_openers(head, spec))
+                        else None, _block_openers(head, spec), time,
+                        _number(head.lines[spec.data_index], time, spec))
     view = memoryview(data)  # the blocks' points read in place, not copied
     blocks, line, counted = [], spec.data_index + 1, 0  # the file's line at offset `counted`
     for (start, header_end), end in zip(groups, ends, strict=True):
@@ -166,6 +190,8 @@ class _FirstBlock(NamedTuple):
     names: str
     units: str | None
     openers: set[str]
+    time: int | None  #: the time's column, if one column may be it
+    start_time: float | None  #: its first reading
 
 
 def _block(spec: TableSpec, first: _FirstBlock, header_text: str, points: memoryview,
@@ -194,7 +220,20 @@ def _block(spec: TableSpec, first: _FirstBlock, header_text: str, points: memory
         return _Block(start, lines, opens, True, (
             f"{where}: a block of two rows, each column's largest value then its smallest, "
             "is the test's peaks, not samples: left out"))
-    return _Block(start, lines, opens, False, "")
+    time = _number(rows[0], first.time, spec) if rows else None
+    restarts = time is not None and first.start_time is not None and time <= first.start_time
+    return _Block(start, lines, opens, False, "", restarts)
+
+
+def _number(row: str, column: int | None, spec: TableSpec) -> float | None:
+    """The number in field `column` of a data `row`, or None (no column, not a number)."""
+    fields = split_fields(row, spec.delimiter)
+    if column is None or column >= len(fields):
+        return None
+    try:
+        return float(fields[column].strip().replace(spec.decimal, "."))
+    except ValueError:
+        return None
 
 
 def _peaks(rows: list[str], spec: TableSpec) -> bool:

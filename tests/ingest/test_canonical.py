@@ -55,7 +55,9 @@ def test_a_time_without_unit_is_still_checked_for_steps_back(write):
     assert "time" not in table
     assert meta.time_monotonic is False
     assert any("no unit for the time column" in warning for warning in meta.warnings)
-    assert "time: steps back 1 times, first at line 5" in meta.warnings
+    assert ("time: steps back 1 times, first at line 5 (back to the first sample's time: "
+            "the file may hold tests one after another, to be exported each to a file of "
+            "its own)") in meta.warnings
 
 
 def test_none_marks_a_missing_value(write):
@@ -168,7 +170,12 @@ def _time_warnings_step_by_step(time: list[float]) -> tuple[bool, int, list[str]
     found = []  # the step into row r (0-based) is on line r + 2
     back = [line for line, step in enumerate(steps, 3) if step < 0]
     if back:
-        found.append(f"time: steps back {len(back)} times, first at line {back[0]}")
+        first_step = time[1] - time[0]  # row r is on line r + 2
+        again = first_step > 0 and any(abs(time[line - 2] - time[0]) <= 2 * first_step
+                                       for line in back)
+        found.append(f"time: steps back {len(back)} times, first at line {back[0]}" + (
+            " (back to the first sample's time: the file may hold tests one after another, "
+            "to be exported each to a file of its own)" if again else ""))
     repeated = [line for line, step in enumerate(steps, 3) if step == 0]
     if repeated:
         found.append(f"time: {len(repeated)} repeated time stamp(s), first at line "

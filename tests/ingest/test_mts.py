@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from pipeline.errors import ValueParseError
+from pipeline.errors import LayoutError, ValueParseError
 from pipeline.ingest import read_table
 from pipeline.units import STANDARD_GRAVITY
 
@@ -148,3 +148,33 @@ def test_peaks_of_the_same_columns_are_no_samples(write):
     assert meta.time_monotonic
     assert meta.warnings == ["lines 15 to 19: a block of two rows, each column's largest value "
                              "then its smallest, is the test's peaks, not samples: left out"]
+
+
+
+def appended(tests: int, points: int, runs_on: bool = False) -> str:
+    """Blocks as a logger writes that appends each test to one file: a title, the names
+    row, and the test's samples from time 0 again (`runs_on`: from where the last ended)."""
+    lines = []
+    for test in range(tests):
+        lines += [f"Specimen {test + 1}", "Time [s];Force [kN];Extension [mm]"]
+        start = test * points if runs_on else 0
+        lines += [f"{(start + point) / 10:.1f};{(test + 1) * point:.1f};{point / 100:.2f}"
+                  .replace(".", ",") for point in range(points)]
+        lines.append("")
+    return "\n".join(lines)
+
+
+def test_tests_one_after_another_are_refused_not_joined(write):
+    # joined, the second pull followed the first as one test whose time steps back once
+    # (a warning only), and its force drop read as the fracture
+    with pytest.raises(LayoutError) as caught:
+        read_table(write("appended.csv", appended(tests=3, points=20)))
+    assert caught.value.row == 24  # "Specimen 2": 2 lines, 20 samples and a blank line above
+    assert "the file holds 3 tests one after another" in caught.value.message
+    assert "a file of its own" in caught.value.hint
+
+
+def test_blocks_whose_time_runs_on_are_one_test(write):
+    table, meta = read_table(write("blocks.csv", appended(tests=2, points=20, runs_on=True)))
+    assert meta.layout == "mts" and meta.preamble["blocks"] == "2" and len(table) == 40
+    np.testing.assert_allclose(table["time"], np.arange(40) / 10)
