@@ -634,8 +634,9 @@ def _starts_again(time: np.ndarray, backwards: np.ndarray) -> str:
     landed = time[1:][backwards]
     if not (first_step > 0 and np.any(np.abs(landed - time[0]) <= 2 * first_step)):
         return ""
-    return (" (back to the first sample's time: the file may hold tests one after another, "
-            "to be exported each to a file of its own)")
+    return (" (back to the first sample's time: the time starts again, as a cycle's or a "
+            "step's own time does, or as the next test's in a file of tests one after "
+            "another)")
 
 
 def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tuple[bool | None, int]:

@@ -56,8 +56,8 @@ def test_a_time_without_unit_is_still_checked_for_steps_back(write):
     assert meta.time_monotonic is False
     assert any("no unit for the time column" in warning for warning in meta.warnings)
     assert ("time: steps back 1 times, first at line 5 (back to the first sample's time: "
-            "the file may hold tests one after another, to be exported each to a file of "
-            "its own)") in meta.warnings
+            "the time starts again, as a cycle's or a step's own time does, or as the next "
+            "test's in a file of tests one after another)") in meta.warnings
 
 
 def test_none_marks_a_missing_value(write):
@@ -174,8 +174,9 @@ def _time_warnings_step_by_step(time: list[float]) -> tuple[bool, int, list[str]
         again = first_step > 0 and any(abs(time[line - 2] - time[0]) <= 2 * first_step
                                        for line in back)
         found.append(f"time: steps back {len(back)} times, first at line {back[0]}" + (
-            " (back to the first sample's time: the file may hold tests one after another, "
-            "to be exported each to a file of its own)" if again else ""))
+            " (back to the first sample's time: the time starts again, as a cycle's or a "
+            "step's own time does, or as the next test's in a file of tests one after "
+            "another)" if again else ""))
     repeated = [line for line, step in enumerate(steps, 3) if step == 0]
     if repeated:
         found.append(f"time: {len(repeated)} repeated time stamp(s), first at line "
