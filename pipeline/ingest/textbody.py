@@ -41,6 +41,10 @@ TAIL_BYTES = 1 << 16
 #: Bytes read to quote a comment line in a warning (its first 60 characters are quoted).
 _QUOTED_BYTES = 512
 
+#: The allocator of the tables the body parser makes: the C library's, so that the memory a
+#: converted column frees is at once free for the next numpy array. pyarrow's default pool
+#: keeps freed pages for itself until asked to release them, a pass over its heaps per column.
+POOL = pa.system_memory_pool()
 _INVALID = re.compile(r"column #(\d+).*invalid value '(.*)'", re.DOTALL)
 _WRONG_WIDTH = re.compile(r"Expected \d+ columns, got \d+: (.*)", re.DOTALL)
 #: A number with thousands separators, by decimal mark: ``1,004.80328`` (Bluehill's quoted
@@ -440,7 +444,7 @@ def _read(body: Region, delimiter: str, decimal: str, read_options: pacsv.ReadOp
                                convert_options, thousands, decimal)
     with _stream(body, delimiter) as source:
         return pacsv.read_csv(source, read_options=read_options, parse_options=parse_options,
-                              convert_options=convert_options)
+                              convert_options=convert_options, memory_pool=POOL)
 
 
 def _comment_row(error: Exception) -> bool:
@@ -504,8 +508,8 @@ def _with_thousands(body: pa.NativeFile, read_options: pacsv.ReadOptions,
     convert_options.column_types = (dict(convert_options.column_types)
                                     | dict.fromkeys(labels, pa.string()))
     with body as source:
-        table = pacsv.read_csv(source, read_options=read_options,
-                               parse_options=parse_options, convert_options=convert_options)
+        table = pacsv.read_csv(source, read_options=read_options, parse_options=parse_options,
+                               convert_options=convert_options, memory_pool=POOL)
     for label in labels:
         position = table.schema.get_field_index(label)
         text = table.column(position)
@@ -640,16 +644,14 @@ def split_table(
 def float_arrays(chunks: dict[int, pa.ChunkedArray]) -> dict[int, np.ndarray]:
     """Float columns as writable numpy arrays (NaN for missing), emptying `chunks`.
 
-    Each pyarrow column is released, and its memory handed back by pyarrow's
-    pool, as soon as it is converted, so that the peak memory holds one column
-    twice, not the whole table.
+    Each pyarrow column is released as soon as it is converted (its memory, of
+    :data:`POOL`, is then free for the next), so that the peak memory holds one
+    column twice, not the whole table.
     """
     arrays = {}
-    pool = pa.default_memory_pool()
     for index in sorted(chunks):
         array = chunks.pop(index).to_numpy()
         arrays[index] = array if array.flags.writeable else array.copy()
-        pool.release_unused()
     return arrays
 
 
