@@ -503,10 +503,30 @@ def _gauge_lines(run: DraftRun) -> list[str]:
     if len(strains) == len(gauges):
         return [*lines, "# no gauge_length_mm needed: every gauge channel reads a strain"]
     lines.append("# gauge_length_mm = ...  # TODO: the length the gauges measure over")
+    lines += [comment(f"the file's header says {quoted(key)} = {value}")
+              for key, value in _stated_gauge_lengths(run.metadata.preamble)]
     if strains:
         lines.append(comment(f"(without it only the strain channel(s) "
                              f"{', '.join(map(quoted, strains))} are used)"))
     return lines
+
+
+#: Words of a header entry that gives a gauge length, folded (Bluehill's ``Tensile strain
+#: (Extension) gauge length``, ``... distancia inicial``, ``Odkształcenie 1 długość
+#: pomiarowa``; Zwick's ``Gage length, standard travel``, ``Messlänge Standardweg``).
+GAUGE_LENGTH_WORDS = ("gauge length", "gage length", "messlange", "dlugosc pomiarowa",
+                      "distancia inicial", "longitud calibrada", "longueur de jauge",
+                      "longueur de reference", "lunghezza calibrata", "lunghezza di misura")
+
+
+def _stated_gauge_lengths(preamble: dict[str, str]) -> list[tuple[str, str]]:
+    """The entries of a file's header that give a gauge length (:data:`GAUGE_LENGTH_WORDS`):
+    shown beside the TODO, not filled in, as which channel each belongs to is the lab's to
+    say."""
+    from pipeline.ingest.names import fold
+
+    return [(key, value) for key, value in preamble.items()
+            if any(word in fold(key) for word in GAUGE_LENGTH_WORDS)]
 
 
 #: What a drafted run of each kind but a tensile one still needs, as TODO comments.

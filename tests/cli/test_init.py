@@ -140,6 +140,29 @@ def test_print_writes_nothing_and_is_allowed_over_a_sheet(tmp_path):
     assert sorted(path.name for path in tmp_path.iterdir()) == ["campaign.toml", "t.csv"]
 
 
+def test_the_gauge_lengths_the_header_states_are_shown_not_filled_in(tmp_path):
+    # a Bluehill export in Polish states the extensometer's gauge length and the one its
+    # strain from the crosshead travel was computed over: which one the run's gauges
+    # measure over is the lab's to say
+    preamble = ("Odkształcenie : Odkształcenie 1 długość pomiarowa;\"10,00000\";mm\n"
+                "Odkształcenie : Odkształcenie przy rozciąganiu (Przemieszczenie) długość "
+                "pomiarowa;\"25,00000\";mm\nWłaściwości próbki : Szerokość;\"6,66000\";mm\n\n")
+    body = "Godzina;Przemieszczenie;Obciążenie\n(s);(mm);(N)\n" + "".join(
+        f"{i / 10:.1f};{load / 100:.3f};{load * 100}\n".replace(".", ",")
+        for i, load in enumerate(LOAD))
+    (tmp_path / "pl.csv").write_bytes((preamble + body).encode("cp1250"))
+    result = init("--print", str(tmp_path))
+    assert result.exit_code == 0, result.output
+    lines = result.stdout.splitlines()
+    todo = lines.index("# gauge_length_mm = ...  # TODO: the length the gauges measure over")
+    assert lines[todo + 1 : todo + 3] == [
+        '# the file\'s header says "Odkształcenie 1 długość pomiarowa" = 10,00000 mm',
+        '# the file\'s header says "Odkształcenie przy rozciąganiu (Przemieszczenie) długość '
+        'pomiarowa" = 25,00000 mm']
+    assert "Szerokość" not in result.stdout
+    assert "gauge_length_mm" not in tomllib.loads(result.stdout)["runs"][0]
+
+
 def test_odd_column_names_round_trip(tmp_path):
     (tmp_path / "odd.csv").write_text(ODD, encoding="utf-8")
     assert init(str(tmp_path)).exit_code == 0
