@@ -34,6 +34,9 @@ RESIDUAL_BINS = 30
 #: Most specimens of a chain named on the stiffness overview's axis; more are numbered by
 #: their place alone (the run table names them).
 MAX_SPECIMEN_LABELS = 24
+#: Longest specimen label drawn whole [characters]: a longer one (an id drafted from a file
+#: name) keeps its start and end around an ellipsis; the run table names it whole.
+MAX_LABEL_CHARS = 16
 
 #: The variables of a tensile run file the stiffness overview draws.
 OVERVIEW_VARIABLES = ("fit_E0", "fit_E0_ci_low", "fit_E0_ci_high", "single_pull")
@@ -187,7 +190,16 @@ def fit_residuals(run: xr.Dataset) -> Figure:
 
 
 def _specimen_label(run: xr.Dataset) -> str:
-    return plain(str(run.attrs.get("specimen") or run.attrs.get("run_id", "?")))
+    """The specimen's name, shortened in the middle past :data:`MAX_LABEL_CHARS`.
+
+    >>> _specimen_label(xr.Dataset(attrs={"specimen": "Specimen_RawData_12_Zugversuch"}))
+    'Specimen…versuch'
+    """
+    label = plain(str(run.attrs.get("specimen") or run.attrs.get("run_id", "?")))
+    if len(label) <= MAX_LABEL_CHARS:
+        return label
+    head = MAX_LABEL_CHARS // 2
+    return label[:head] + "…" + label[len(label) - (MAX_LABEL_CHARS - head) + 1:]
 
 
 def _loading_points(runs: Sequence[xr.Dataset]) -> dict[tuple[bool, int], np.ndarray]:
@@ -215,8 +227,10 @@ def _loading_points(runs: Sequence[xr.Dataset]) -> dict[tuple[bool, int], np.nda
 def _specimen_axis(ax, runs: Sequence[xr.Dataset]) -> None:
     """One tick per specimen, labelled up to :data:`MAX_SPECIMEN_LABELS` specimens."""
     ax.set_xlim(-0.6, len(runs) - 0.4)
-    if len(runs) <= MAX_SPECIMEN_LABELS:
-        ax.set_xticks(range(len(runs)), [_specimen_label(run) for run in runs])
+    labels = [_specimen_label(run) for run in runs]
+    if len(runs) <= MAX_SPECIMEN_LABELS and len(set(labels)) == len(labels):
+        ax.set_xticks(range(len(runs)), labels, rotation=30 if len(runs) > 3 else 0,
+                      ha="right" if len(runs) > 3 else "center")
         ax.set_xlabel("specimen")
     else:
         ax.set_xticks([])
