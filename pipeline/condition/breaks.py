@@ -81,6 +81,13 @@ JUMP_NEIGHBOURHOOD = 21
 #: two steps from a flicker up is noise, not a gauge running backwards.
 RESOLUTION_STEPS = 3.0
 
+#: Samples a channel must have followed the specimen, before it ran backwards or jumped,
+#: for its freeze tolerance to be taken from those samples alone: the readings after
+#: such an event (an extensometer taken off, hanging at -0.13) widen its range, and half a
+#: per cent of that range can exceed what the extensometer moved over a twentieth of the
+#: record while it was on.
+MIN_FOLLOWED = 10
+
 
 @dataclass(frozen=True)
 class Removal:
@@ -308,6 +315,11 @@ def find_removal(oriented_force: np.ndarray, oriented_channel: np.ndarray,
     if force.size < 3:
         return None
     tolerance = channel_tolerance(channel)
+    backwards, jump = _backwards(force, channel, tolerance), _jump(channel, tolerance)
+    followed = min((position for position in (backwards, jump) if position is not None),
+                   default=channel.size)
+    if followed >= MIN_FOLLOWED:  # a reading off the specimen widens the range: not its own
+        tolerance = min(tolerance, channel_tolerance(channel[:followed]))
     rise = FREEZE_RISE * whole[peak]
     # past the maximum the specimen still lengthens while the force falls (necking)
     falling = _freeze(whole[peak] - whole[peak:], oriented_channel[peak:], tolerance, rise,
@@ -315,8 +327,8 @@ def find_removal(oriented_force: np.ndarray, oriented_channel: np.ndarray,
     found = [
         (position, reason)
         for position, reason in (
-            (_backwards(force, channel, tolerance), "runs backwards"),
-            (_jump(channel, tolerance), "jumps"),
+            (backwards, "runs backwards"),
+            (jump, "jumps"),
             (_freeze(force, channel, tolerance, rise, 0.1 * whole[peak]), "freezes"),
             (None if falling is None else peak + falling, "freezes"),
             (_still_while_others_move(np.asarray(oriented_channel, dtype=float), others,

@@ -60,6 +60,22 @@ def test_a_slip_is_named_as_such():
     assert removal.cause == "taken off or slipped"
 
 
+@pytest.mark.parametrize("seed", range(5))
+def test_an_extensometer_taken_off_far_below_is_cut_there_not_at_the_start(seed):
+    # a real Bluehill pull in Polish: the extensometer hangs at -0.13 (strain) once taken
+    # off, far below its travel on the specimen; half a per cent of that whole range
+    # exceeded what it moved over the first twentieth of the record while the crosshead
+    # took up its travel, and it was cut as frozen from sample 0
+    force, channel = _loading(seed)
+    crosshead = 3.0 * channel + 2e-3  # the machine's travel: the specimen and the frame's
+    off = channel.copy()
+    rng = np.random.default_rng(seed)
+    off[4000:] = -30 * np.ptp(channel[:4000]) + rng.normal(0.0, 20 * RESOLUTION, 2000)
+    removal = find_removal(force, off, [crosshead])
+    assert removal is not None and removal.position == 4000
+    assert removal.reason in ("jumps", "runs backwards")
+
+
 def test_reading_step_is_the_resolution_of_a_quantised_reading():
     _, channel = _loading(1)
     assert reading_step(channel) == pytest.approx(RESOLUTION, rel=1e-9)
