@@ -111,6 +111,14 @@ TANGENT_STEP = 0.025
 #: this fraction below its linear-region (largest) value, beyond its noise.
 YIELD_SLOPE_DROP = 0.05
 
+#: The part of a loading's force range [1] over which a start steeper than what follows
+#: (an extensometer's knife edges seating) is looked for by :func:`yield_onset`.
+SEATING_SPAN = 0.25
+
+#: Bands of one slope that must follow a steep start for it to be a seating, not a
+#: specimen softening from its start (see :func:`yield_onset`).
+SEATED_BANDS = 4
+
 #: Level of every interval of this module: of a fit, of a specimen's and of a chain's E0.
 CONFIDENCE = 0.95
 
@@ -311,6 +319,12 @@ def yield_onset(force: np.ndarray, strain: np.ndarray) -> float:
     the onset of yield it falls. The onset is the lower edge of the first band
     above the steepest one whose slope is more than :data:`YIELD_SLOPE_DROP`
     below the steepest, and by more than three standard errors of the two.
+    Bands at the start whose slope the next band does not hold (falls more
+    than :data:`YIELD_SLOPE_DROP` below), within :data:`SEATING_SPAN` of the
+    range and followed by :data:`SEATED_BANDS` bands of one slope (within
+    :data:`YIELD_SLOPE_DROP`), are left out of that search: a start
+    steeper than what follows, an extensometer's knife edges seating, is no
+    linear region, as a toe flatter than what follows is none.
 
     Parameters
     ----------
@@ -340,7 +354,16 @@ def yield_onset(force: np.ndarray, strain: np.ndarray) -> float:
     slope, variance, _ = _Windows(force, strain).fit(lower, lower + TANGENT_BAND * span)
     if not np.any(np.isfinite(slope)):
         return np.inf
-    steepest = int(np.nanargmax(slope))
+    with np.errstate(invalid="ignore"):
+        held = np.append(slope[1:] >= (1.0 - YIELD_SLOPE_DROP) * slope[:-1], True)
+    seated = int(np.argmax(held))  # the first band whose slope the next one holds
+    plateau = slope[seated : seated + SEATED_BANDS]
+    with np.errstate(invalid="ignore"):
+        flat = plateau.size == SEATED_BANDS and bool(np.all(
+            np.abs(plateau - plateau[0]) <= YIELD_SLOPE_DROP * plateau[0]))
+    if lower[seated] - low > SEATING_SPAN * span or not flat:
+        seated = 0  # no straight stretch after a steep start: curved throughout
+    steepest = seated + int(np.nanargmax(slope[seated:]))
     with np.errstate(invalid="ignore"):
         fallen = ((slope < (1.0 - YIELD_SLOPE_DROP) * slope[steepest])
                   & (slope[steepest] - slope > 3.0 * np.sqrt(variance + variance[steepest])))

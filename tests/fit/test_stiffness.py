@@ -22,6 +22,7 @@ from pipeline.fit.stiffness import (
     integrated_autocorrelation,
     scan_windows,
     specimen_stiffness,
+    yield_onset,
 )
 from pipeline.simulate.tensile import TensileTruth, simulate_tensile
 from pipeline.units import to_si
@@ -241,6 +242,26 @@ def test_too_few_samples_per_branch_are_refused_with_the_count():
     assert fullest < MIN_POINTS
     with pytest.raises(FitError, match=f"the fullest holds {fullest} with a strain"):
         fit_stiffness(run)
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_an_extensometer_seating_at_the_start_is_no_linear_region(seed):
+    """A real Bluehill pull in Polish: the clip-on extensometer reads a tenth of the strain
+    up to 0.3 kN while its knife edges seat, then follows the coupon straight up to its
+    yield. That steep start was the steepest band, the branch 'bent' right after it, and
+    the run was refused."""
+    rng = np.random.default_rng(seed)
+    force = np.linspace(0.0, 7e3, 600)
+    e0, seat = 1.28e6, 300.0
+    strain = np.where(force < seat, 0.1 * force, force - 0.9 * seat) / e0
+    strain += np.where(force > 4.5e3, 0.01 * ((force - 4.5e3) / 2.5e3) ** 2, 0.0)  # yield
+    strain = np.round((strain + rng.normal(0.0, 2e-6, force.size)) / 1e-5) * 1e-5
+    onset = yield_onset(force, strain)
+    assert 3e3 < onset <= 4.5e3
+    below = force <= onset
+    fit = fit_line(force, strain, scan_windows(force[below], strain[below]))
+    assert fit.window_low >= seat
+    assert fit.E0 == pytest.approx(e0, rel=0.01)
 
 
 def test_a_loading_curved_from_its_start_is_refused_with_where_it_bends():
