@@ -45,6 +45,7 @@ _QUOTED_BYTES = 512
 #: converted column frees is at once free for the next numpy array. pyarrow's default pool
 #: keeps freed pages for itself until asked to release them, a pass over its heaps per column.
 POOL = pa.system_memory_pool()
+
 _INVALID = re.compile(r"column #(\d+).*invalid value '(.*)'", re.DOTALL)
 _WRONG_WIDTH = re.compile(r"Expected \d+ columns, got \d+: (.*)", re.DOTALL)
 #: A number with thousands separators, by decimal mark: ``1,004.80328`` (Bluehill's quoted
