@@ -47,7 +47,16 @@ from pipeline.errors import (
     UnitError,
 )
 from pipeline.ingest.decimalshift import decimal_shifts, step_blocks
-from pipeline.ingest.names import gauge_kind, peak_partner, repeats, tokens
+from pipeline.ingest.names import (
+    gauge_kind,
+    is_command,
+    is_derived,
+    is_humidity,
+    is_transverse,
+    peak_partner,
+    repeats,
+    tokens,
+)
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import SHEET_KEY, display_name, role_of_key
 from pipeline.ingest.table import GAP_FACTOR, ROLES, ColumnInfo, TableMetadata
@@ -226,6 +235,8 @@ def settle(
             "the file has: " + ", ".join(display_name(raw.names, i)
                                           for i in range(len(raw.names))),
         ))
+    if kind == "tensile":
+        _warn_unnamed_strains(raw, empty)
     canonical = _canonical_names(assigned, strains)
     columns = tuple((index, canonical[index], factors[index]) for role in ROLES
                     for index in assigned.get(role, []) if index in factors)
@@ -244,6 +255,22 @@ def settle(
     unitless_time = next((index for index in assigned.get("time", []) if index not in factors),
                          None)
     return Conversion(columns, infos, unitless_time)
+
+
+def _warn_unnamed_strains(raw: RawColumns, empty: set[int]) -> None:
+    """Warn of each column in a strain unit whose name gives it no role: an extensometer
+    named in a language the readers do not know (``Rek 1``, ``Töjning 1``) would be passed
+    over for the crosshead without a word."""
+    candidates = raw.candidates.indexes()
+    for index, name in enumerate(raw.names):
+        if (index not in candidates and index not in empty and is_strain_unit(raw.units[index])
+                and not (is_transverse(name) or is_command(name) or is_derived(name)
+                         or is_humidity(name))):
+            shown = display_name(raw.names, index)
+            raw.metadata.warnings.append(
+                f"column {shown!r} reads in {raw.units[index]!r}, a strain's unit, but its name "
+                "is not one the readers know: not used (if it is an extensometer's strain, "
+                f"name it in the run sheet, columns = {{gauges = [\"{shown}\"]}})")
 
 
 def _refuse_a_table_of_peaks(raw: RawColumns) -> None:

@@ -168,7 +168,7 @@ TRANSVERSE_NAMES = (
 #: ``"Valeur de consigne"``, a controller's ``"a1 torque cmd"``. Such a column takes no role,
 #: wherever the word stands.
 COMMAND_NAMES = ("sollwert", "soll", "setpoint", "set point", "command", "cmd", "demand",
-                 "target", "consigne", "consigna", "zadana")
+                 "target", "consigne", "commande", "consigna", "zadana")
 #: Words of a channel the machine's software worked out from others, not one a sensor
 #: measured: WaveMatrix's ``"Elastic Strain(Static Plastic & Elastic Strain
 #: Calculation)"``, a strain split into its elastic part (the stress over an assumed
@@ -177,6 +177,10 @@ COMMAND_NAMES = ("sollwert", "soll", "setpoint", "set point", "command", "cmd", 
 DERIVED_NAMES = ("calculation", "berechnung", "calcul", "cálculo", "calcolo", "obliczenia",
                  "elastic strain", "plastic strain", "elastische dehnung",
                  "plastische dehnung", "déformation élastique", "déformation plastique")
+#: Names of an air's humidity, logged in % beside the channels (a climate chamber's ``RH``):
+#: no strain, whatever its unit says.
+HUMIDITY_NAMES = ("rh", "humidity", "relative humidity", "feuchte", "luftfeuchte",
+                  "luftfeuchtigkeit", "humidité", "humedad", "wilgotność", "umidità", "umidade")
 #: Names of one part of a clock reading split into columns (``Hour [h]``, ``Minute [m]``,
 #: ``Second [sec]``, as a LabVIEW logger writes them; the date, as MTS 793 writes
 #: ``Datum [d]``, the spreadsheet's day number): no elapsed time, and no length whatever
@@ -393,6 +397,18 @@ def is_derived(name: str) -> bool:
     [True, True, False]
     """
     return _best_of(tokens(name), _DERIVED_KEYWORDS) is not None
+
+
+def is_humidity(name: str) -> bool:
+    """Whether a column name is an air's humidity (:data:`HUMIDITY_NAMES`).
+
+    >>> [is_humidity(name) for name in ("RH", "Rel. Luftfeuchte", "Strain 1")]
+    [True, True, False]
+    """
+    return _best_of(tokens(name), _HUMIDITY_KEYWORDS) is not None
+
+
+_HUMIDITY_KEYWORDS = tuple((tokens(word), "humidity") for word in HUMIDITY_NAMES)
 
 
 def is_clock_part(name: str) -> bool:

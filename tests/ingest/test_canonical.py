@@ -235,3 +235,19 @@ def test_a_strain_without_unit_is_refused_with_a_hint_that_works(write):
     assert table["strain_1"].tolist() == [0.004, 0.008]
     table, _ = read_table(path, kind="tensile", columns={"gauges": ["Displacement"]})
     assert table["gauge_1"].tolist() == pytest.approx([1e-4, 2e-4])
+
+
+def test_a_strain_column_of_an_unknown_name_is_warned_of_not_passed_over_silently(write):
+    # a Bluehill export in Dutch: 'Rek 1' is the extensometer's strain; unread, the run
+    # takes its stiffness from the crosshead's 'Verlenging' without a word
+    text = "Tijd [s],Verlenging [mm],Belasting [kN],Rek 1 [%],RH [%]\n" + "".join(
+        f"{i / 10},{i / 100},{i / 2},{i / 50},45\n" for i in range(20))
+    table, meta = read_table(write("nl.csv", text))
+    assert list(table.columns) == ["time", "force", "gauge_1"]
+    assert meta.warnings == [
+        "column 'Rek 1' reads in '%', a strain's unit, but its name is not one the readers "
+        "know: not used (if it is an extensometer's strain, name it in the run sheet, "
+        'columns = {gauges = ["Rek 1"]})']
+    table, meta = read_table(write("nl.csv", text),
+                             columns={"gauges": ["Verlenging", "Rek 1"]})
+    assert "strain_1" in table and meta.warnings == []
