@@ -49,10 +49,8 @@ from pipeline.errors import (
 from pipeline.ingest.decimalshift import decimal_shifts, step_blocks
 from pipeline.ingest.names import (
     gauge_kind,
-    is_command,
-    is_derived,
     is_humidity,
-    is_transverse,
+    is_unmeasured,
     peak_partner,
     repeats,
     tokens,
@@ -264,8 +262,7 @@ def _warn_unnamed_strains(raw: RawColumns, empty: set[int]) -> None:
     candidates = raw.candidates.indexes()
     for index, name in enumerate(raw.names):
         if (index not in candidates and index not in empty and is_strain_unit(raw.units[index])
-                and not (is_transverse(name) or is_command(name) or is_derived(name)
-                         or is_humidity(name))):
+                and not (is_unmeasured(name) or is_humidity(name))):
             shown = display_name(raw.names, index)
             raw.metadata.warnings.append(
                 f"column {shown!r} reads in {raw.units[index]!r}, a strain's unit, but its name "

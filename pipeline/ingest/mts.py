@@ -171,7 +171,8 @@ def _later_blocks(head: Head, spec: TableSpec, data: bytes, time: int | None) ->
     first = _FirstBlock(head.lines[spec.header_index].strip(),
                         head.lines[spec.units_index].strip() if spec.units_index is not None
                         else None, _block_openers(head, spec), time,
-                        _number(head.lines[spec.data_index], time, spec))
+                        _number(split_fields(head.lines[spec.data_index], spec.delimiter),
+                                time, spec))
     view = memoryview(data)  # the blocks' points read in place, not copied
     blocks, line, counted = [], spec.data_index + 1, 0  # the file's line at offset `counted`
     for (start, header_end), end in zip(groups, ends, strict=True):
@@ -202,7 +203,8 @@ def _block(spec: TableSpec, first: _FirstBlock, header_text: str, points: memory
     header = [line.strip() for line in header_text.splitlines()]
     widths = {line: len(split_fields(line, spec.delimiter)) for line in header}
     rows = [row.group().decode("latin-1") for row in islice(_ROW.finditer(points), 3)]
-    width = len(split_fields(rows[0], spec.delimiter)) if rows else spec.width
+    fields = split_fields(rows[0], spec.delimiter) if rows else []
+    width = len(fields) if rows else spec.width
     renamed = [line for line in header if widths[line] == spec.width
                and line not in openers and line not in (first.names, first.units)]
     opens = any(line == first.names or line in openers for line in header)
@@ -220,14 +222,13 @@ def _block(spec: TableSpec, first: _FirstBlock, header_text: str, points: memory
         return _Block(start, lines, opens, True, (
             f"{where}: a block of two rows, each column's largest value then its smallest, "
             "is the test's peaks, not samples: left out"))
-    time = _number(rows[0], first.time, spec) if rows else None
+    time = _number(fields, first.time, spec)
     restarts = time is not None and first.start_time is not None and time <= first.start_time
     return _Block(start, lines, opens, False, "", restarts)
 
 
-def _number(row: str, column: int | None, spec: TableSpec) -> float | None:
-    """The number in field `column` of a data `row`, or None (no column, not a number)."""
-    fields = split_fields(row, spec.delimiter)
+def _number(fields: list[str], column: int | None, spec: TableSpec) -> float | None:
+    """The number in `fields[column]` of a data row, or None (no column, not a number)."""
     if column is None or column >= len(fields):
         return None
     try:
@@ -241,9 +242,7 @@ def _peaks(rows: list[str], spec: TableSpec) -> bool:
     least the second in every column (time included: it steps back)."""
     if len(rows) != 2:
         return False
-    try:
-        high, low = ([float(field.strip().replace(spec.decimal, ".")) for field
-                      in split_fields(row, spec.delimiter)] for row in rows)
-    except ValueError:
-        return False
-    return len(high) == len(low) and all(a >= b for a, b in zip(high, low, strict=True))
+    high, low = ([_number(fields, column, spec) for column in range(len(fields))]
+                 for fields in (split_fields(row, spec.delimiter) for row in rows))
+    return (len(high) == len(low) and None not in high + low
+            and all(a >= b for a, b in zip(high, low, strict=True)))

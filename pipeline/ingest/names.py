@@ -399,6 +399,17 @@ def is_derived(name: str) -> bool:
     return _best_of(tokens(name), _DERIVED_KEYWORDS) is not None
 
 
+def is_unmeasured(name: str) -> bool:
+    """Whether a column name says it holds no measurement along the specimen: a transverse
+    channel, a setpoint or command, a value worked out from others, or one part of a clock
+    reading. Such a column takes no role, not even from its unit.
+
+    >>> [is_unmeasured(name) for name in ("Querdehnung", "Load Command", "Minute", "Load")]
+    [True, True, True, False]
+    """
+    return is_transverse(name) or is_command(name) or is_derived(name) or is_clock_part(name)
+
+
 def is_humidity(name: str) -> bool:
     """Whether a column name is an air's humidity (:data:`HUMIDITY_NAMES`).
 

@@ -12,14 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from pipeline.errors import ColumnError
-from pipeline.ingest.names import (
-    fold,
-    is_clock_part,
-    is_command,
-    is_derived,
-    is_transverse,
-    match_role,
-)
+from pipeline.ingest.names import fold, is_unmeasured, match_role
 from pipeline.ingest.unitparse import unit_role
 
 #: Keys accepted in the run sheet's ``columns`` and ``units``, and the role each names.
@@ -163,10 +156,7 @@ def find_candidates(
     for index, name in enumerate(names):
         if index in claimed:
             continue
-        role = match_role(name) or (
-            None if is_transverse(name) or is_command(name) or is_derived(name)
-            or is_clock_part(name)
-            else unit_role(units[index]))
+        role = match_role(name) or (None if is_unmeasured(name) else unit_role(units[index]))
         if role == "gauge" and unit_role(units[index]) == "angle":
             role = "angle"  # a position in degrees is a rotary one (an encoder's)
         if role is not None and role not in explicit:
