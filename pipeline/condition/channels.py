@@ -20,6 +20,12 @@ channel is used: of the kind first in :data:`PREFERENCE`, the stiffer one when
 in doubt (a channel that includes more of the machine reads more elongation),
 and every channel left out is named in a warning with its stiffness relative
 to the one used. Never a silent average of different kinds.
+
+A strain column may be no measurement of its own but a length channel of the
+file divided by a length (Bluehill's ``Tensile strain``, a NanoSuite's
+``Engineering Strain``: the crosshead's extension over the gauge length). Its
+name then says nothing of what it measures; :func:`find_copies` finds it by
+its readings, which follow the length channel's to the last digit.
 """
 
 from __future__ import annotations
@@ -42,6 +48,17 @@ COMPARISON_RANGE = (0.1, 0.4)
 
 #: Fewest samples a channel needs in the comparison range.
 MIN_COMPARED = 5
+
+#: A strain column is a copy of a length channel when no sample departs from the straight
+#: line through both by more than this many times what rounding both to their printed
+#: digits can explain (a copy departs by up to 0.67 of it; two sensors on a real
+#: specimen, 4 times or more).
+COPY_MARGIN = 1.5
+#: Departure always allowed, as a fraction of the strain's range (values printed with
+#: varying significant digits have no decimal grid to take their rounding from).
+COPY_FLOOR = 1e-6
+#: Fewest samples two channels need in common to be found one the other's copy.
+MIN_COPY_SAMPLES = 20
 
 
 @dataclass(frozen=True)
@@ -84,6 +101,73 @@ def compared_slopes(force: np.ndarray, strains: dict[str, np.ndarray],
             continue
         slopes[name] = float(np.polyfit(strain[usable], force[usable], 1)[0])
     return slopes
+
+
+def find_copies(readings: dict[str, np.ndarray]) -> dict[str, tuple[str, float]]:
+    """The strain channels that are a length channel divided by a length.
+
+    Parameters
+    ----------
+    readings : dict of numpy.ndarray
+        Channel -> readings in SI (``strain_1``... [1], ``gauge_1``... [m]; NaN where
+        missing).
+
+    Returns
+    -------
+    dict
+        Strain channel -> (the length channel it was worked out from, the length it
+        divides it by [m]), for each strain whose readings lie on a straight line through
+        that channel's to within their rounding (:data:`COPY_MARGIN`). A copy's offset
+        (another zero) and sign do not matter.
+
+    Examples
+    --------
+    >>> extension = np.round(np.linspace(0.0, 2e-3, 50) + 1e-5 * np.sin(np.arange(50)), 7)
+    >>> strain = np.round(extension / 0.05, 5)  # printed to 5 decimals, as Bluehill does
+    >>> extensometer = np.round(0.8 * extension / 0.05 + 2e-5 * np.cos(np.arange(50)), 5)
+    >>> copies = find_copies({"gauge_1": extension, "strain_1": strain,
+    ...                       "strain_2": extensometer})
+    >>> {name: (source, round(length, 4)) for name, (source, length) in copies.items()}
+    {'strain_1': ('gauge_1', 0.05)}
+    """
+    lengths = [name for name in readings if name.startswith("gauge_")]
+    copies = {}
+    for name, strain in readings.items():
+        if not name.startswith("strain_"):
+            continue
+        for source in lengths:
+            scale = _copy_scale(strain, readings[source])
+            if scale is not None:
+                copies[name] = (source, 1.0 / abs(scale))
+                break
+    return copies
+
+
+def _copy_scale(copy: np.ndarray, source: np.ndarray) -> float | None:
+    """The slope of `copy` over `source` if `copy` is `source` rescaled (to within their
+    rounding, :data:`COPY_MARGIN`), else None."""
+    both = np.isfinite(copy) & np.isfinite(source)
+    if both.sum() < MIN_COPY_SAMPLES:
+        return None
+    y, x = copy[both] - copy[both].mean(), source[both] - source[both].mean()
+    if not (np.ptp(x) > 0 and np.ptp(y) > 0):
+        return None
+    scale = float(x @ y / (x @ x))
+    allowed = (COPY_MARGIN * (_rounding(copy[both]) + abs(scale) * _rounding(source[both])) / 2
+               + COPY_FLOOR * np.ptp(y))
+    return scale if np.abs(y - scale * x).max() <= allowed else None
+
+
+def _rounding(values: np.ndarray) -> float:
+    """The decimal step every value of `values` is a multiple of (the last digit printed,
+    in the unit the values are in now), or 0 if none is found: the coarsest of 10^-d
+    (at least 20 steps to the range) within a thousandth of which every value lies."""
+    first = int(np.ceil(-np.log10(np.ptp(values) / 20)))
+    for digits in range(first, first + 13):
+        scaled = values * 10.0**digits
+        if np.all(np.abs(scaled - np.round(scaled)) < 1e-3):
+            return 10.0**-digits
+    return 0.0
 
 
 def _agree(slopes: list[float]) -> bool:

@@ -12,7 +12,8 @@
 - turns each channel into strain (a length over the gauge length, a strain as
   read), and chooses the channels that give the specimen's strain: averaged
   only when they measure the same thing (:mod:`pipeline.condition.channels`),
-  the spread of the averaged ones kept as a quality figure;
+  the spread of the averaged ones kept as a quality figure; a strain column
+  worked out from a length channel counts as that channel, whatever its name;
 - segments the force into cycles and branches
   (:func:`pipeline.condition.segmentation.segment_cycles`);
 - computes per cycle the hysteresis energy (loop area) [J] and the permanent
@@ -28,13 +29,17 @@ import numpy as np
 import pandas as pd
 
 from pipeline.condition.breaks import find_fracture, find_removal
-from pipeline.condition.channels import choose_channels, compared_slopes
+from pipeline.condition.channels import choose_channels, compared_slopes, find_copies
 from pipeline.condition.segmentation import BRANCHES, Segmentation, load_sign, segment_cycles
 from pipeline.condition.tares import join_tares
 from pipeline.errors import SignalError
 
 #: Longest run of missing samples that is dropped rather than reported [samples].
 MAX_NAN_RUN = 3
+
+#: Largest relative difference between the length a file's strain column divides a length
+#: channel by and the run sheet's gauge length that goes without a warning.
+GAUGE_LENGTH_TOLERANCE = 0.01
 
 #: A gauge resting at its extreme while the force changes by more than this
 #: fraction of its range is saturated (clipped).
@@ -230,6 +235,31 @@ def _channel_strains(
     return strains
 
 
+def _settle_copies(copies: Mapping[str, tuple[str, float]], strains: dict[str, np.ndarray],
+                   kinds: dict[str, str], gauge_length: float | None,
+                   columns: Mapping[str, str], warnings: list[str]) -> None:
+    """Give each strain column worked out from a length channel (:func:`~pipeline.condition.
+    channels.find_copies`) that channel's kind, whatever its name says; leave it out where
+    that channel gives a strain of its own (the run sheet sets the gauge length), warning
+    when the two lengths differ."""
+    for name, (source, length) in copies.items():
+        kinds[name] = kinds[source]
+        said = (f"channel {columns[name]!r} is {columns[source]!r} ({kinds[source]}) over "
+                f"{length * 1e3:.4g} mm to the last digit: a strain worked out from it, not "
+                "measured by itself")
+        if source not in strains:
+            warnings.append(f"{said}; E0 from it is the {kinds[source]}'s")
+            continue
+        del strains[name]
+        warnings.append(f"{said}; not used")
+        if abs(length / gauge_length - 1) > GAUGE_LENGTH_TOLERANCE:
+            warnings.append(
+                f"the file divides {columns[source]!r} by {length * 1e3:.4g} mm for its strain "
+                f"{columns[name]!r}, the run sheet's gauge_length_mm is "
+                f"{gauge_length * 1e3:.4g}: E0 scales with the gauge length, check which is "
+                "right")
+
+
 def _cut_removed(force: np.ndarray, strains: dict[str, np.ndarray],
                  readings: dict[str, np.ndarray], loading: slice, sign: int,
                  columns: Mapping[str, str], warnings: list[str]) -> dict:
@@ -356,6 +386,8 @@ def condition_tensile(
         _check_clipping(force[:end], samples[name].to_numpy()[:end], columns[name],
                         samples.index)
     strains = _channel_strains(samples, channels, gauge_length, columns, warnings)
+    _settle_copies(find_copies({name: samples[name].to_numpy()[:end] for name in channels}),
+                   strains, kinds, gauge_length, columns, warnings)
     first = slice(0, int(segmentation.turns[0, 1]) + 1)  # up to the first peak
     readings = {name: samples[name].to_numpy() for name in channels}
     removals = _cut_removed(force, strains, readings, slice(0, end) if single_pull else first,

@@ -10,6 +10,7 @@ import pytest
 
 from pipeline.condition.tensile import condition_tensile, loop_energy
 from pipeline.errors import SignalError
+from pipeline.simulate.pull import PullTruth, simulate_pull
 from pipeline.simulate.tensile import TensileTruth, simulate_tensile
 
 LOW, HIGH = 1e3, 11e3  # N
@@ -228,3 +229,50 @@ def test_a_gauge_unplugged_to_zero_in_a_loading_is_cut_where_it_dropped():
     assert not any("zeroed" in warning for warning in run.warnings)
     assert run.channels.loc["gauge_2", "removed_at"] == drop
     assert np.isnan(run.channel_strains["gauge_2"].to_numpy()[drop:]).all()
+
+
+def bluehill_pull(seed: int = 2) -> tuple[pd.DataFrame, PullTruth]:
+    """A simulated 18x64 pull as a Bluehill export without an extensometer logs it: the
+    crosshead's ``Extension`` (gauge_1) and the method's ``Tensile strain`` (strain_1), that
+    extension over 50 mm printed to 6 decimals."""
+    truth = PullTruth.for_chain("18x64")
+    log = simulate_pull(truth, seed)
+    crosshead = log["crosshead"].to_numpy()
+    table = pd.DataFrame({"time": log["time"], "force": log["force"], "gauge_1": crosshead,
+                          "strain_1": np.round(crosshead / 0.05, 6)})
+    return table, truth
+
+
+BLUEHILL = {"kinds": {"gauge_1": "crosshead", "strain_1": "extensometer"},
+            "columns": {"gauge_1": "Extension", "strain_1": "Tensile strain"}}
+
+
+def test_a_strain_worked_out_from_the_crosshead_is_the_crosshead_whatever_its_name():
+    # 'Tensile strain' is named like an extensometer's strain; its readings are the
+    # crosshead's over 50 mm, and E0 from it includes the machine
+    table, _ = bluehill_pull()
+    run = condition_tensile(table, None, n_cycles=1, **BLUEHILL)
+    assert run.channels.loc["strain_1", "kind"] == "crosshead"
+    assert run.channels.loc["strain_1", "used"]
+    assert ("channel 'Tensile strain' is 'Extension' (crosshead) over 50 mm to the last digit: "
+            "a strain worked out from it, not measured by itself; E0 from it is the "
+            "crosshead's") in run.warnings
+    assert any(warning.startswith("E0 from the crosshead travel 'Tensile strain'")
+               for warning in run.warnings)
+
+
+def test_a_strain_worked_out_from_a_channel_used_itself_is_left_out():
+    table, _ = bluehill_pull()
+    run = condition_tensile(table, 0.05, n_cycles=1, **BLUEHILL)
+    assert run.channels["used"].to_dict() == {"gauge_1": True, "strain_1": False}
+    assert [warning for warning in run.warnings if "Tensile strain" in warning] == [
+        "channel 'Tensile strain' is 'Extension' (crosshead) over 50 mm to the last digit: a "
+        "strain worked out from it, not measured by itself; not used"]
+
+
+def test_a_run_sheets_gauge_length_unlike_the_files_is_warned_of():
+    table, _ = bluehill_pull()
+    run = condition_tensile(table, 0.0512, n_cycles=1, **BLUEHILL)
+    assert ("the file divides 'Extension' by 50 mm for its strain 'Tensile strain', the run "
+            "sheet's gauge_length_mm is 51.2: E0 scales with the gauge length, check which is "
+            "right") in run.warnings

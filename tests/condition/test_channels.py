@@ -1,0 +1,75 @@
+"""Tests of pipeline.condition.channels: strain columns worked out from a length channel."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from pipeline.condition.channels import find_copies
+from pipeline.simulate.pull import PullTruth, simulate_pull
+
+#: The gauge length a Bluehill method divides the crosshead's extension by [m].
+METHOD_GAUGE_LENGTH = 0.05
+
+
+def extension_and_strain(seed: int) -> tuple[np.ndarray, np.ndarray]:
+    """A crosshead's extension as Bluehill prints it (5 decimals of a mm) [m], and its
+    ``Tensile strain``: that extension over 50 mm, printed to 5 decimals [1]."""
+    rng = np.random.default_rng(seed)
+    extension_mm = np.round(np.linspace(0.0, 2.0, 400) + rng.normal(0.0, 2e-3, 400), 5)
+    return extension_mm * 1e-3, np.round(extension_mm / 50.0, 5)
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_a_strain_printed_from_a_length_channel_is_found_its_copy(seed):
+    extension, strain = extension_and_strain(seed)
+    copies = find_copies({"gauge_1": extension, "strain_1": strain})
+    assert list(copies) == ["strain_1"]
+    source, length = copies["strain_1"]
+    assert source == "gauge_1"
+    assert length == pytest.approx(METHOD_GAUGE_LENGTH, rel=1e-4)
+
+
+def test_a_copys_own_zero_and_sign_do_not_matter():
+    extension, _ = extension_and_strain(0)
+    strain = np.round(-(extension - extension[100]) / METHOD_GAUGE_LENGTH, 6)
+    source, length = find_copies({"gauge_1": extension, "strain_1": strain})["strain_1"]
+    assert (source, length) == ("gauge_1", pytest.approx(METHOD_GAUGE_LENGTH, rel=1e-4))
+
+
+def test_a_copy_kept_at_full_precision_is_found():
+    extension, _ = extension_and_strain(1)
+    extension = extension + 1e-9 * np.sqrt(np.arange(extension.size))  # no decimal grid
+    copies = find_copies({"gauge_1": extension, "strain_1": extension / 0.08})
+    assert copies["strain_1"] == ("gauge_1", pytest.approx(0.08, rel=1e-9))
+
+
+def test_missing_readings_are_left_out_of_the_comparison():
+    extension, strain = extension_and_strain(2)
+    strain[300:] = np.nan  # taken off
+    assert find_copies({"gauge_1": extension, "strain_1": strain})["strain_1"][0] == "gauge_1"
+
+
+def test_a_strain_off_its_length_channel_by_three_printed_digits_once_is_no_copy():
+    extension, strain = extension_and_strain(3)
+    strain[200] += 3e-5
+    assert find_copies({"gauge_1": extension, "strain_1": strain}) == {}
+
+
+def test_too_few_samples_in_common_make_no_copy():
+    extension, strain = extension_and_strain(4)
+    assert find_copies({"gauge_1": extension[:19], "strain_1": strain[:19]}) == {}
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_an_extensometer_beside_the_crosshead_is_no_copy_of_it(seed):
+    # two sensors on one pull: each reads its own noise, quantised to its own division
+    truth = PullTruth.for_chain("18x64", strain_channel=True)
+    log = simulate_pull(truth, seed)
+    assert find_copies({"gauge_1": log["crosshead"].to_numpy(),
+                        "strain_1": log["extensometer_strain"].to_numpy()}) == {}
+
+
+def test_two_length_channels_are_not_compared():
+    extension, _ = extension_and_strain(5)
+    assert find_copies({"gauge_1": extension, "gauge_2": 2 * extension}) == {}
