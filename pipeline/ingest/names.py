@@ -84,8 +84,8 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
     "pt": {
         "time": ("tempo",),
         "force": ("força", "carga"),
-        "gauge": ("deslocamento", "extensão", "alongamento", "extensômetro", "travessa",
-                  "atuador", "pistão"),
+        "gauge": ("deslocamento", "extensão", "alongamento", "deformação", "extensômetro",
+                  "travessa", "atuador", "pistão"),
         "cycle_count": ("ciclo", "ciclos"),
         "length": ("comprimento",),
         "speed": ("velocidade",),
@@ -105,11 +105,10 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "gauge": ("uzama", "deplasman", "ekstansometre"),
         "cycle_count": ("çevrim", "çevrim sayısı"),
     },
-    # "деформация" (like Portuguese "deformação") is left to its unit: a strain or millimetres
     "ru": {
         "time": ("время", "время испытания"),
         "force": ("усилие", "нагрузка", "сила"),
-        "gauge": ("перемещение", "удлинение", "абсолютное удлинение", "экстензометр",
+        "gauge": ("перемещение", "удлинение", "абсолютное удлинение", "деформация", "экстензометр",
                   "траверса", "перемещение траверсы", "ход", "ход поршня"),
         "cycle_count": ("цикл", "циклы", "число циклов", "количество циклов"),
         "length": ("длина",),

@@ -43,9 +43,10 @@ from pipeline.ingest.names import (
         ("Course_Traverse", "gauge"), ("C_1_Déform1", "gauge"), ("Déplacement", "gauge"),
         ("C_1_Valeur de consigne", None), ("Nombre de cycles", "cycle_count"),
         # real Portuguese exports (MTS TestSuite, Bluehill): Travessa Horizontal, Carga,
-        # Tempo; Extensão; the computed Deformação à tracção and Esforço à tracção
+        # Tempo; Extensão; the computed Deformação à tracção (a strain, whatever it was
+        # worked out from) and Esforço à tracção (a stress)
         ("Travessa Horizontal", "gauge"), ("Carga", "force"), ("Tempo", "time"),
-        ("Extensão", "gauge"), ("Deformação à tracção", None), ("Esforço à tracção", None),
+        ("Extensão", "gauge"), ("Deformação à tracção", "gauge"), ("Esforço à tracção", None),
         # a real Turkish rebar tester (PCM304): Test no, Zaman, Kuvvet, Cetvel, Kanal3
         ("Zaman", "time"), ("Kuvvet", "force"), ("Test no", None), ("Kanal3", None),
         ("Forza", "force"), ("Spostamento", "gauge"), ("試験力", "force"),
@@ -54,7 +55,7 @@ from pipeline.ingest.names import (
         ("Standard travel", "gauge"), ("Standard force", "force"), ("System time", "time"),
         # a real Russian export: Время [с], Перемещение [мм], Усилие [Н]
         ("Время", "time"), ("Перемещение", "gauge"), ("Усилие", "force"),
-        ("Нагрузка", "force"), ("Деформация", None),
+        ("Нагрузка", "force"), ("Деформация", "gauge"),
         # an Arduino load-cell logger, Campbell Scientific's TOA5
         ("Timestamp", "time"), ("TIMESTAMP", "time"), ("Time stamp", "time"),
     ],
