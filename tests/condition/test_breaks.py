@@ -106,3 +106,53 @@ def test_a_real_slow_fracture_is_the_sample_before_the_fall():
     fall = [415.53741, 376.14471, 249.9745, 133.22809, 46.494553, 1.6429368, -0.24702586,
             -0.2255328, -0.21011196, -0.22306107, -0.20575896]
     assert find_fracture(np.concatenate([ramp, fall]) * 1e3) == ramp.size
+
+
+def _set_up_then_loading(seed: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A real MTS 793 compression test's record, in its direction of load [N], [m], [m]:
+    the crosshead approaches the specimen at no load (400 samples), the extensometer is
+    clipped on and adjusted at a preload of 1.5 % of the maximum after a seating knock to
+    9.6 % (its readings jump about, then it is zeroed), and then the loading itself."""
+    rng = np.random.default_rng(seed)
+    force, extensometer = _loading(seed)
+    top = force.max()
+    approach = rng.normal(0.0, FORCE_NOISE, 400)
+    knock = np.interp(np.arange(100), [0, 10, 30, 100], [0.0, 0.096, 0.015, 0.015]) * top
+    hold = 0.015 * top + rng.normal(0.0, FORCE_NOISE, 400)
+    adjusting = np.repeat(rng.uniform(-2e-3, 2e-3, 8), 50)  # clipped on, set, zeroed
+    set_up_force = np.concatenate([approach, knock, hold])
+    set_up_extensometer = np.concatenate([np.full(500, 0.4e-3), adjusting])
+    set_up_crosshead = np.concatenate([np.linspace(-5e-3, 0.0, 400), np.zeros(500)])
+    travel = 2.0 * np.linspace(0.0, 29e3, force.size) / E0 * GAUGE  # the machine's as much
+    crosshead = np.round((travel + rng.normal(0.0, GAUGE_NOISE, force.size)) / 1e-6) * 1e-6
+    return (np.concatenate([set_up_force, force]),
+            np.concatenate([set_up_extensometer, extensometer]),
+            np.concatenate([set_up_crosshead, crosshead]))
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_the_set_up_before_the_loading_is_not_judged(seed):
+    # a real MTS 793 export: every channel was cut in its set-up and the run refused
+    force, extensometer, crosshead = _set_up_then_loading(seed)
+    assert find_removal(force, extensometer, [crosshead]) is None
+    assert find_removal(force, crosshead, [extensometer]) is None
+
+
+def test_an_extensometer_taken_off_after_the_set_up_is_still_found():
+    force, extensometer, crosshead = _set_up_then_loading(0)
+    extensometer[5000:] -= 0.5e-3  # falls off, far into the loading
+    removal = find_removal(force, extensometer, [crosshead])
+    assert removal is not None and removal.reason == "runs backwards"
+    assert removal.position == 5000
+
+
+def test_a_gauge_zeroed_after_a_first_load_cycle_is_judged_on_the_loading_after_it():
+    # a real MTS 793 compression test: a first cycle to 28 % of the maximum, unloaded to
+    # 0.4 %, the gauges zeroed, then loaded to fracture; the gauges read less on the
+    # reloading than at the first peak and were all cut there, "running backwards"
+    first_up, down, reload = np.linspace(0, 0.28, 300), np.linspace(0.28, 0.004, 300), \
+        np.linspace(0.004, 1.0, 1000)
+    force = 400e3 * np.concatenate([first_up, down, reload])
+    zeroed = np.concatenate([first_up, down, reload - 0.004]) * 1e-3
+    zeroed[:600] += 0.05e-3  # the first cycle's set, taken off by the zeroing
+    assert find_removal(force, zeroed) is None
