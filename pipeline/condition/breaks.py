@@ -25,7 +25,7 @@ Channel removal (:func:`find_removal`)
     jumps (a single step far larger than its neighbours), or freezes (it stays
     within its noise while the force rises, or past the maximum falls, by
     :data:`FREEZE_RISE` of the maximum, or while another displacement channel
-    keeps moving: the specimen lengthens all the while).
+    that follows the force keeps moving: the specimen lengthens all the while).
     The first sample where one of these happens ends the channel's usable
     data. A channel is judged from where the force rises through
     :data:`LOADED` of its maximum for the last time before reaching it: before
@@ -79,6 +79,11 @@ STILL_WINDOW = 0.05
 
 #: See :data:`STILL_WINDOW`.
 OTHERS_MOVE = 0.02
+
+#: Another channel witnesses the specimen lengthening only if it follows the force: the
+#: rank correlation of the two up to the maximum is at least this (a crosshead rises with
+#: the force, through yield too; an input left unconnected wanders with its noise).
+WITNESS_CORRELATION = 0.8
 
 #: A channel step this many times the median of its neighbouring steps is a jump.
 JUMP_FACTOR = 30.0
@@ -259,6 +264,15 @@ def _still_while_others_move(channel: np.ndarray, others: Sequence[np.ndarray],
     return None
 
 
+def _follows(force: np.ndarray, other: np.ndarray) -> bool:
+    """Whether a channel rises with the force (:data:`WITNESS_CORRELATION`)."""
+    both = np.isfinite(force) & np.isfinite(other)
+    if both.sum() < 3 or not (np.ptp(force[both]) > 0 and np.ptp(other[both]) > 0):
+        return False
+    ranks = [np.argsort(np.argsort(values[both])) for values in (force, other)]
+    return bool(np.corrcoef(*ranks)[0, 1] >= WITNESS_CORRELATION)
+
+
 def reading_step(channel: np.ndarray) -> float:
     """Resolution of a quantised reading: its smallest change between samples [channel's unit].
 
@@ -337,8 +351,9 @@ def find_removal(oriented_force: np.ndarray, oriented_channel: np.ndarray,
     falling = _freeze(whole[peak] - whole[peak:], oriented_channel[peak:], tolerance, rise,
                       -np.inf)
     frozen = _freeze(force, channel, tolerance, rise, 0.1 * whole[peak])
+    witnesses = [other for other in others if _follows(force, other[loaded : peak + 1])]
     still = _still_while_others_move(np.asarray(oriented_channel[loaded:], dtype=float),
-                                     [other[loaded:] for other in others], tolerance)
+                                     [other[loaded:] for other in witnesses], tolerance)
     found = [
         (loaded + position, reason)
         for position, reason in ((backwards, "runs backwards"), (jump, "jumps"),

@@ -156,3 +156,36 @@ def test_a_gauge_zeroed_after_a_first_load_cycle_is_judged_on_the_loading_after_
     zeroed = np.concatenate([first_up, down, reload - 0.004]) * 1e-3
     zeroed[:600] += 0.05e-3  # the first cycle's set, taken off by the zeroing
     assert find_removal(force, zeroed) is None
+
+
+def _dwell(seed: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A loading [N] that dwells a fifth of its record at 20 kN, its extensometer [m] still
+    through the dwell, and its crosshead [m] creeping on through it."""
+    rng = np.random.default_rng(seed)
+    force, extensometer = _loading(seed)
+    start = int(np.searchsorted(force, 20e3))
+    hold = force.size // 5
+    force = np.concatenate([force[:start], 20e3 + rng.normal(0.0, FORCE_NOISE, hold),
+                            force[start:]])
+    extensometer = np.concatenate([extensometer[:start], np.full(hold, extensometer[start]),
+                                   extensometer[start:]])
+    travel = 2.0 * extensometer + np.concatenate(
+        [np.zeros(start), np.linspace(0.0, 0.5e-3, hold), np.full(force.size - start - hold,
+                                                                  0.5e-3)])
+    return force, extensometer, travel
+
+
+def test_an_extensometer_still_while_the_crosshead_moves_on_is_cut():
+    force, extensometer, crosshead = _dwell(0)
+    removal = find_removal(force, extensometer, [crosshead])
+    assert removal is not None and removal.reason == "freezes"
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_a_channel_left_unconnected_witnesses_nothing(seed):
+    # a real MTS export: auxiliary inputs wandering with their noise, or standing at one
+    # reading, beside the displacement; it was cut as frozen while they "moved"
+    force, extensometer, _ = _dwell(seed)
+    wandering = np.cumsum(np.random.default_rng(seed).normal(0.0, GAUGE_NOISE, force.size))
+    standing = np.full(force.size, -1.14e-4)
+    assert find_removal(force, extensometer, [wandering, standing]) is None
