@@ -96,6 +96,9 @@ class DraftRun:
     notes: list[str] = field(default_factory=list)  #: remarks on the columns and the cycles
     #: of several specimens side by side in the file, the one read (its label or place)
     specimen_in_file: str | None = None
+    #: strain column -> (the length column it is worked out from, the length it divides
+    #: that one by [m]), by their names in the file
+    copies: dict[str, tuple[str, float]] = field(default_factory=dict)
 
     @property
     def gauges(self) -> list[ColumnInfo]:
@@ -355,9 +358,22 @@ def draft_run(path: Path, folder: Path, taken: set[str], specimen: str | None = 
         # the cycle counts disagreeing (a wear log's counter logs a few cycles: no news)
         notes=report["warnings"][len(metadata.warnings):] if kind != "wear" else [],
         specimen_in_file=specimen,
+        copies=_copies(table, metadata),
     )
     _as_drafted(run, path, metadata)
     return run
+
+
+def _copies(table: pd.DataFrame, metadata: TableMetadata) -> dict[str, tuple[str, float]]:
+    """The strain columns worked out from a length column of the file
+    (:func:`~pipeline.condition.channels.find_copies`), by their names in the file."""
+    from pipeline.condition.channels import find_copies
+
+    names = {column.role: column.name for column in metadata.columns
+             if _is_gauge(column) and column.role in table}
+    found = find_copies({role: table[role].to_numpy(dtype=float) for role in names})
+    return {names[strain]: (names[source], length)
+            for strain, (source, length) in found.items()}
 
 
 def draft_runs(folder: Path, *, debug: bool = False) -> tuple[list[DraftRun], list[tuple]]:
@@ -481,6 +497,13 @@ def _is_strain(column: ColumnInfo) -> bool:
     return column.role.startswith("strain_")
 
 
+def _reads(column: ColumnInfo, copies: dict[str, tuple[str, float]]) -> str:
+    """What a gauge column reads: a length, a strain, or a strain worked out from another."""
+    if column.name in copies:
+        return f"strain worked out from {quoted(copies[column.name][0])}"
+    return "strain" if _is_strain(column) else "length"
+
+
 def _gauge_lines(run: DraftRun) -> list[str]:
     """The gauge channels' kinds, the one chainbench prefers, and the gauge length."""
     from pipeline.condition.channels import PREFERENCE
@@ -488,13 +511,16 @@ def _gauge_lines(run: DraftRun) -> list[str]:
     gauges = run.gauges
     if not gauges:
         return ['# TODO: no gauge column found: name it, columns = {gauges = ["..."]}']
-    kinds = [(column, column.kind or "gauge") for column in gauges]
+    kind_of = {column.name: column.kind or "gauge" for column in gauges}
+    kinds = [(column, kind_of[run.copies[column.name][0]] if column.name in run.copies
+              else kind_of[column.name]) for column in gauges]
     preferred = next(kind for kind in PREFERENCE if any(k == kind for _, k in kinds))
-    chosen = [column.name for column, kind in kinds if kind == preferred]
+    chosen = [column.name for column, kind in kinds  # a copy is its source
+              if kind == preferred and column.name not in run.copies]
     together = " (averaged when their stiffnesses agree)" if len(chosen) > 1 else ""
     lines = [
         comment("gauge channels: " + "; ".join(
-            f"{quoted(column.name)} {kind} ({'strain' if _is_strain(column) else 'length'})"
+            f"{quoted(column.name)} {kind} ({_reads(column, run.copies)})"
             for column, kind in kinds)),
         comment(f"chainbench prefers {', '.join(map(quoted, chosen))}{together} "
                 f"({preferred}; extensometer over plain gauge over crosshead)"),
@@ -505,6 +531,9 @@ def _gauge_lines(run: DraftRun) -> list[str]:
     lines.append("# gauge_length_mm = ...  # TODO: the length the gauges measure over")
     lines += [comment(f"the file's header says {quoted(key)} = {value}")
               for key, value in _stated_gauge_lengths(run.metadata.preamble)]
+    lines += [comment(f"the file's {quoted(strain)} is {quoted(source)} over "
+                      f"{length * 1e3:.4g} mm, the gauge length its software used")
+              for strain, (source, length) in run.copies.items()]
     if strains:
         lines.append(comment(f"(without it only the strain channel(s) "
                              f"{', '.join(map(quoted, strains))} are used)"))

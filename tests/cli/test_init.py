@@ -394,3 +394,22 @@ def test_roller_logs_drafted_as_engagement_runs_validate_as_roller_runs_the_draf
     validates(tmp_path / "roller", "[[runs]]\n".join(entries).replace(
         '# catalog = "..."', 'catalog = "16B"').replace("\n[[runs]]", sprockets + "\n[[runs]]",
                                                         1), runs=6)
+
+
+def test_a_strain_worked_out_from_a_length_column_shows_the_length_it_divides_by(tmp_path):
+    # a real Portuguese Bluehill export: 'Deformação à tracção' is 'Extensão' over the
+    # 190 mm its method was given, the gauge length the lab fills in
+    rows = [(i / 10, load / 100 + i * 3e-4, load * 10) for i, load in enumerate(LOAD)]
+    text = "Tempo;Extensão;Carga;Deformação à tracção\n(sec);(mm);(N);(mm/mm)\n" + "".join(
+        f"{time:.1f};{extension:.4f};{force};{extension / 190:.7f}\n".replace(".", ",")
+        for time, extension, force in rows)
+    (tmp_path / "pt.csv").write_text(text, encoding="utf-8")
+    result = init("--print", str(tmp_path))
+    assert result.exit_code == 0, result.output
+    lines = result.stdout.splitlines()
+    assert ('# gauge channels: "Extensão" gauge (length); "Deformação à tracção" gauge (strain '
+            'worked out from "Extensão")') in lines
+    assert lines[lines.index("# gauge_length_mm = ...  # TODO: the length the gauges measure "
+                             "over") + 1] == (
+        '# the file\'s "Deformação à tracção" is "Extensão" over 190 mm, the gauge length its '
+        "software used")
