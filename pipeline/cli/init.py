@@ -96,9 +96,12 @@ class DraftRun:
     notes: list[str] = field(default_factory=list)  #: remarks on the columns and the cycles
     #: of several specimens side by side in the file, the one read (its label or place)
     specimen_in_file: str | None = None
-    #: strain column -> (the length column it is worked out from, the length it divides
-    #: that one by [m]), by their names in the file
-    copies: dict[str, tuple[str, float]] = field(default_factory=dict)
+
+    @property
+    def copies(self) -> dict[str, tuple[str, float]]:
+        """Strain column -> (the length column it is worked out from, the length it divides
+        that one by [m]), by their names in the file (``inspect``'s ``copies``)."""
+        return {name: (source, length) for name, (source, length) in self.report["copies"].items()}
 
     @property
     def gauges(self) -> list[ColumnInfo]:
@@ -358,22 +361,9 @@ def draft_run(path: Path, folder: Path, taken: set[str], specimen: str | None = 
         # the cycle counts disagreeing (a wear log's counter logs a few cycles: no news)
         notes=report["warnings"][len(metadata.warnings):] if kind != "wear" else [],
         specimen_in_file=specimen,
-        copies=_copies(table, metadata),
     )
     _as_drafted(run, path, metadata)
     return run
-
-
-def _copies(table: pd.DataFrame, metadata: TableMetadata) -> dict[str, tuple[str, float]]:
-    """The strain columns worked out from a length column of the file
-    (:func:`~pipeline.condition.channels.find_copies`), by their names in the file."""
-    from pipeline.condition.channels import find_copies
-
-    names = {column.role: column.name for column in metadata.columns
-             if _is_gauge(column) and column.role in table}
-    found = find_copies({role: table[role].to_numpy(dtype=float) for role in names})
-    return {names[strain]: (names[source], length)
-            for strain, (source, length) in found.items()}
 
 
 def draft_runs(folder: Path, *, debug: bool = False) -> tuple[list[DraftRun], list[tuple]]:

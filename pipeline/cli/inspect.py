@@ -62,6 +62,20 @@ def counted_cycles(table: pd.DataFrame, metadata: TableMetadata) -> np.ndarray |
     return np.unique(np.floor(counts / per_cycle)) if counts.size else None
 
 
+def worked_out(table: pd.DataFrame, metadata: TableMetadata) -> dict[str, tuple[str, float]]:
+    """The strain columns worked out from a length column of the file
+    (:func:`~pipeline.condition.channels.find_copies`): strain column -> (the length column,
+    the length it divides that one by [m]), by their names in the file."""
+    from pipeline.condition.channels import find_copies
+
+    names = {column.role: column.name for column in metadata.columns
+             if column.role and column.role.startswith(("gauge_", "strain_"))
+             and column.role in table}
+    found = find_copies({role: table[role].to_numpy(dtype=float) for role in names})
+    return {names[strain]: (names[source], length)
+            for strain, (source, length) in found.items()}
+
+
 def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
     """What ``inspect`` prints, as a JSON-ready mapping."""
     from pipeline.condition.segmentation import count_cycles
@@ -79,6 +93,8 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
         warnings.append(
             f"the force signal shows {cycles} load cycle(s), the machine's counter {counted}"
         )
+    copies = worked_out(table, metadata)
+    kinds = {column.name: column.kind for column in metadata.columns}
     return {
         "file": metadata.file,
         "layout": metadata.layout,
@@ -90,9 +106,11 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
         "rows": metadata.rows,
         "columns": [
             {"name": column.name, "role": column.role, "unit": column.unit,
-             "si_unit": column.si_unit, "kind": column.kind}
+             "si_unit": column.si_unit,
+             "kind": kinds[copies[column.name][0]] if column.name in copies else column.kind}
             for column in metadata.columns
         ],
+        "copies": {name: [source, length] for name, (source, length) in copies.items()},
         "cycles": cycles if cycles is not None else counted,
         "machine_cycles": counted,
         "preamble": metadata.preamble,
@@ -116,6 +134,10 @@ def _show(report: dict) -> None:
         table.add_row(*(escape(str(column[key])) if column[key] is not None else "-"
                         for key in ("name", "role", "unit", "si_unit", "kind")))
     console.print(table)
+    for name, (source, length) in report["copies"].items():
+        console.print(f"note: {escape(repr(name))} is {escape(repr(source))} over "
+                      f"{length * 1e3:.4g} mm to the last digit: a strain worked out from it, "
+                      "counted as its kind", highlight=False)
     for warning in report["warnings"]:
         console.print(f"[yellow]warning:[/yellow] {escape(warning)}", highlight=False)
 

@@ -131,3 +131,20 @@ def test_the_new_kinds_are_checked_as_run_reads_them(tmp_path, kind, header, rol
     report = inspect_json(str(path), "--kind", kind)
     assert [column["role"] for column in report["columns"]] == roles
     assert report["columns"][1]["si_unit"] == "N"
+
+
+def test_a_strain_worked_out_from_the_crosshead_shows_as_the_crosshead(tmp_path):
+    # Bluehill's 'Tensile strain' is named like an extensometer's strain; its readings are
+    # the crosshead's 'Extension' over the method's 50 mm, to the last digit
+    rows = [(i / 10, load / 100 + i * 3e-4, load * 1000) for i, load in enumerate(LOAD)]
+    path = tmp_path / "bluehill.csv"
+    path.write_text("Time,Crosshead,Load,Tensile strain\n(s),(mm),(N),(mm/mm)\n" + "".join(
+        f"{time:.1f},{extension:.4f},{force},{extension / 50:.6f}\n"
+        for time, extension, force in rows))
+    report = inspect_json(str(path))
+    assert [column["kind"] for column in report["columns"]] == [
+        None, "crosshead", None, "crosshead"]
+    assert report["copies"] == {"Tensile strain": ["Crosshead", pytest.approx(0.05, rel=1e-4)]}
+    shown = runner.invoke(app, ["inspect", str(path)], env={"COLUMNS": "200"})
+    assert ("note: 'Tensile strain' is 'Crosshead' over 50 mm to the last digit: a strain "
+            "worked out from it, counted as its kind") in shown.stdout
