@@ -41,6 +41,11 @@ MAX_NAN_RUN = 3
 #: channel by and the run sheet's gauge length that goes without a warning.
 GAUGE_LENGTH_TOLERANCE = 0.01
 
+#: Shortest length a file's strain column may divide a length channel by [m]: no gauge is
+#: shorter, and a strain whose numbers are off by a power of ten (a ratio read as %, a
+#: lost decimal mark) divides by such a length.
+MIN_GAUGE_LENGTH = 1e-3
+
 #: A gauge resting at its extreme while the force changes by more than this
 #: fraction of its range is saturated (clipped).
 CLIPPING_FORCE_FRACTION = 0.1
@@ -247,6 +252,10 @@ def _settle_copies(copies: Mapping[str, tuple[str, float]], strains: dict[str, n
         said = (f"channel {columns[name]!r} is {columns[source]!r} ({kinds[source]}) over "
                 f"{length * 1e3:.4g} mm to the last digit: a strain worked out from it, not "
                 "measured by itself")
+        if length < MIN_GAUGE_LENGTH:
+            warnings.append(f"no gauge is {length * 1e3:.4g} mm long: the numbers of "
+                            f"{columns[name]!r} are likely off by a power of ten (a ratio "
+                            "written as %, a lost decimal mark); check its unit in the export")
         if source not in strains:
             warnings.append(f"{said}; E0 from it is the {kinds[source]}'s")
             continue

@@ -276,3 +276,15 @@ def test_a_run_sheets_gauge_length_unlike_the_files_is_warned_of():
     assert ("the file divides 'Extension' by 50 mm for its strain 'Tensile strain', the run "
             "sheet's gauge_length_mm is 51.2: E0 scales with the gauge length, check which is "
             "right") in run.warnings
+
+
+def test_a_strain_that_divides_by_no_gauges_length_is_warned_of():
+    # a real export's 'Strain (%)' reads 8 where the extension is 0.00188 mm: over 0.0235 mm
+    table, _ = bluehill_pull()
+    table["strain_1"] = np.round(table["gauge_1"] / 2.35e-5, 2)
+    run = condition_tensile(table, None, n_cycles=1, **BLUEHILL)
+    assert ("no gauge is 0.0235 mm long: the numbers of 'Tensile strain' are likely off by a "
+            "power of ten (a ratio written as %, a lost decimal mark); check its unit in the "
+            "export") in run.warnings
+    run = condition_tensile(bluehill_pull()[0], None, n_cycles=1, **BLUEHILL)
+    assert not any(warning.startswith("no gauge is") for warning in run.warnings)
