@@ -21,7 +21,8 @@ Fracture (:func:`find_fracture`)
 
 Channel removal (:func:`find_removal`)
     A clip-on extensometer is often taken off before fracture. From then on
-    its signal runs backwards while the force keeps rising (it falls off),
+    its signal runs backwards while the force keeps rising, by
+    :data:`BACKWARDS_RISE` of its maximum at least (it falls off),
     jumps (a single step far larger than its neighbours), or freezes (it stays
     within its noise while the force rises, or past the maximum falls, by
     :data:`FREEZE_RISE` of the maximum, or while another displacement channel
@@ -72,6 +73,10 @@ LOADED = 0.05
 #: A channel that stays within its noise while the force rises by this fraction of
 #: the maximum force has frozen (it no longer follows the specimen).
 FREEZE_RISE = 0.05
+
+#: A channel runs backwards when it reads less than at its running maximum while the force
+#: stands at least this fraction of the maximum force above its level there.
+BACKWARDS_RISE = 0.01
 
 #: A channel that stands still for this fraction of the record while another channel
 #: moves by :data:`OTHERS_MOVE` of its range has frozen.
@@ -201,13 +206,21 @@ def _envelope(force: np.ndarray) -> np.ndarray:
     return np.flatnonzero(new)
 
 
-def _backwards(force: np.ndarray, channel: np.ndarray, tolerance: float) -> int | None:
-    """First sample where the channel fell back from its running maximum by more than
-    `tolerance` while the force is at least as high as when that maximum was reached."""
+def _backwards(force: np.ndarray, channel: np.ndarray, tolerance: float, rise: float
+               ) -> int | None:
+    """First sample of a fall of the channel from its running maximum by more than
+    `tolerance` that lasts until the force has risen by `rise` above its level when that
+    maximum was reached (a knife edge settling by a few steps while the force stands is
+    no fall)."""
     running = np.maximum.accumulate(channel)
     at = np.maximum.accumulate(np.where(channel >= running, np.arange(channel.size), 0))
-    hits = np.flatnonzero((channel < running - tolerance) & (force >= force[at]))
-    return int(hits[0]) if hits.size else None
+    below = channel < running - tolerance
+    hits = np.flatnonzero(below & (force >= force[at] + rise))
+    if not hits.size:
+        return None
+    hit = int(hits[0])
+    above = np.flatnonzero(~below[: hit + 1])  # the fall began after the last sample above
+    return int(above[-1]) + 1 if above.size else 0
 
 
 def _jump(channel: np.ndarray, tolerance: float) -> int | None:
@@ -341,7 +354,8 @@ def find_removal(oriented_force: np.ndarray, oriented_channel: np.ndarray,
     if force.size < 3:
         return None
     tolerance = channel_tolerance(channel)
-    backwards, jump = _backwards(force, channel, tolerance), _jump(channel, tolerance)
+    backwards = _backwards(force, channel, tolerance, BACKWARDS_RISE * whole[peak])
+    jump = _jump(channel, tolerance)
     followed = min((position for position in (backwards, jump) if position is not None),
                    default=channel.size)
     if followed >= MIN_FOLLOWED:  # a reading off the specimen widens the range: not its own

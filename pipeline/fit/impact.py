@@ -234,7 +234,8 @@ def _ringing_errors(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: 
 
     Central differences of the medians over the events given (the same data, so
     the noise cancels) by one standard error of each parameter, combined with
-    their correlation: ``sqrt(J C J^T)`` relative to the medians.
+    their correlation: ``sqrt(J C J^T)`` relative to the medians (NaN for a median of 0,
+    relative to which nothing is defined).
     """
     if not ringing.fitted:
         return dict.fromkeys(("N_u1", "N_u2", "peak1", "peak2"), 0.0)
@@ -259,10 +260,12 @@ def _ringing_errors(y: np.ndarray, onset1: np.ndarray, onset2: np.ndarray, geo: 
     for name, step in steps.items():
         up = medians(replace(ringing, **{name: getattr(ringing, name) + step}))
         down = medians(replace(ringing, **{name: getattr(ringing, name) - step}))
-        slopes.append((up - down) / 2 / base)  # relative change per standard error
+        with np.errstate(divide="ignore", invalid="ignore"):  # a median of 0: undefined
+            slopes.append((up - down) / 2 / base)  # relative change per standard error
     omega_part, zeta_part = slopes
-    variance = (omega_part**2 + zeta_part**2
-                + 2 * ringing.correlation * omega_part * zeta_part)
+    with np.errstate(invalid="ignore"):
+        variance = (omega_part**2 + zeta_part**2
+                    + 2 * ringing.correlation * omega_part * zeta_part)
     relative = np.sqrt(np.maximum(variance, 0.0))
     return dict(zip(("N_u1", "N_u2", "peak1", "peak2"), relative.tolist(), strict=True))
 

@@ -189,3 +189,15 @@ def test_a_channel_left_unconnected_witnesses_nothing(seed):
     wandering = np.cumsum(np.random.default_rng(seed).normal(0.0, GAUGE_NOISE, force.size))
     standing = np.full(force.size, -1.14e-4)
     assert find_removal(force, extensometer, [wandering, standing]) is None
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_an_extensometer_settling_back_while_the_force_stands_is_not_taken_off(seed):
+    # the knife edges settle at the preload: the reading falls four steps of its
+    # resolution while the force stands, then follows the loading
+    rng = np.random.default_rng(seed)
+    force, channel = _loading(seed)
+    standing = 5e3 + rng.normal(0.0, FORCE_NOISE, 200)
+    settling = channel[0] + RESOLUTION * np.repeat([2.0, 1.0, 0.0, -1.0, -2.0], 40)
+    assert find_removal(np.concatenate([standing, force]),
+                        np.concatenate([settling, channel])) is None
