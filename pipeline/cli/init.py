@@ -101,7 +101,7 @@ class DraftRun:
     def copies(self) -> dict[str, tuple[str, float]]:
         """Strain column -> (the length column it is worked out from, the length it divides
         that one by [m]), by their names in the file (``inspect``'s ``copies``)."""
-        return {name: (source, length) for name, (source, length) in self.report["copies"].items()}
+        return {name: tuple(copy) for name, copy in self.report["copies"].items()}
 
     @property
     def gauges(self) -> list[ColumnInfo]:
@@ -501,9 +501,8 @@ def _gauge_lines(run: DraftRun) -> list[str]:
     gauges = run.gauges
     if not gauges:
         return ['# TODO: no gauge column found: name it, columns = {gauges = ["..."]}']
-    kind_of = {column.name: column.kind or "gauge" for column in gauges}
-    kinds = [(column, kind_of[run.copies[column.name][0]] if column.name in run.copies
-              else kind_of[column.name]) for column in gauges]
+    kind_of = {column["name"]: column["kind"] for column in run.report["columns"]}
+    kinds = [(column, kind_of[column.name] or "gauge") for column in gauges]
     preferred = next(kind for kind in PREFERENCE if any(k == kind for _, k in kinds))
     chosen = [column.name for column, kind in kinds  # a copy is its source
               if kind == preferred and column.name not in run.copies]

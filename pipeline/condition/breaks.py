@@ -33,9 +33,9 @@ Channel removal (:func:`find_removal`)
     that the specimen barely carries load, and the readings of the set-up (the
     crosshead's approach, an extensometer being clipped on, adjusted and zeroed
     at the preload, a seating knock) say nothing of whether the channel follows
-    it. A channel is judged to within
-    :data:`RESOLUTION_STEPS` steps of its resolution (:func:`reading_step`): a
-    quantised reading flickers a step either way, and that is noise.
+    it. A channel is judged to within :data:`RESOLUTION_STEPS` steps of its
+    resolution (:func:`reading_step`): a quantised reading flickers a step
+    either way, and that is noise.
 """
 
 from __future__ import annotations
