@@ -149,11 +149,12 @@ def _copy_scale(copy: np.ndarray, source: np.ndarray) -> float | None:
     both = np.isfinite(copy) & np.isfinite(source)
     if both.sum() < MIN_COPY_SAMPLES:
         return None
-    y, x = copy[both] - copy[both].mean(), source[both] - source[both].mean()
+    copy, source = copy[both], source[both]
+    y, x = copy - copy.mean(), source - source.mean()
     if not (np.ptp(x) > 0 and np.ptp(y) > 0):
         return None
     scale = float(x @ y / (x @ x))
-    allowed = (COPY_MARGIN * (_rounding(copy[both]) + abs(scale) * _rounding(source[both])) / 2
+    allowed = (COPY_MARGIN * (_rounding(copy) + abs(scale) * _rounding(source)) / 2
                + COPY_FLOOR * np.ptp(y))
     return scale if np.abs(y - scale * x).max() <= allowed else None
 
