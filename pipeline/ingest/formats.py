@@ -19,6 +19,7 @@ from pathlib import PurePath
 
 from pipeline.ingest import (
     canonical,
+    catman,
     delimited,
     gwinstek,
     lvm,
@@ -32,11 +33,12 @@ from pipeline.ingest.raw import RawTable
 from pipeline.ingest.sniff import Head, TableSpec, detect_dialect, find_table, read_head
 from pipeline.ingest.source import Source
 
-#: Text layouts, in the order they are tried on a file (a LabVIEW measurement file and a
-#: Rigol, Tektronix or GW Instek oscilloscope's export are known by their first lines,
-#: before a table is looked for).
-TEXT_LAYOUTS = {lvm.LAYOUT: lvm, rigol.LAYOUT: rigol, tektronix.LAYOUT: tektronix.TEXT,
-                gwinstek.LAYOUT: gwinstek.TEXT, mts.LAYOUT: mts,
+#: Text layouts, in the order they are tried on a file (a LabVIEW measurement file, an HBM
+#: catman export and a Rigol, Tektronix or GW Instek oscilloscope's export are known by
+#: their first lines, before a table is looked for).
+TEXT_LAYOUTS = {lvm.LAYOUT: lvm, catman.LAYOUT: catman.TEXT, rigol.LAYOUT: rigol,
+                tektronix.LAYOUT: tektronix.TEXT, gwinstek.LAYOUT: gwinstek.TEXT,
+                mts.LAYOUT: mts,
                 **{layout.name: layout for layout in delimited.LAYOUTS}}
 
 #: Values of ``format``: auto-detection, a file format, or one text layout.
@@ -98,7 +100,7 @@ def sniff(source: Source, format: str = "auto") -> Sniffed:
     if layout in (*xlsx.LAYOUTS, "tdms"):
         return Sniffed(layout)
     head = read_head(source)
-    for known in (lvm, rigol, tektronix, gwinstek):  # known by their first lines
+    for known in (lvm, catman, rigol, tektronix, gwinstek):  # known by their first lines
         if layout == known.LAYOUT or (layout == "csv" and known.matches(head)):
             return Sniffed(known.LAYOUT, head, known.table_spec(head))
     delimiter, decimal, width = detect_dialect(head.lines, source.name)
