@@ -104,6 +104,12 @@ class DraftRun:
         return {name: tuple(copy) for name, copy in self.report["copies"].items()}
 
     @property
+    def duplicates(self) -> dict[str, str]:
+        """Length column -> the length column whose readings it repeats, by their names in
+        the file (``inspect``'s ``duplicates``)."""
+        return dict(self.report["duplicates"])
+
+    @property
     def gauges(self) -> list[ColumnInfo]:
         """The gauge and strain columns, in file order."""
         return [column for column in self.metadata.columns if _is_gauge(column)]
@@ -487,10 +493,13 @@ def _is_strain(column: ColumnInfo) -> bool:
     return column.role.startswith("strain_")
 
 
-def _reads(column: ColumnInfo, copies: dict[str, tuple[str, float]]) -> str:
-    """What a gauge column reads: a length, a strain, or a strain worked out from another."""
-    if column.name in copies:
-        return f"strain worked out from {quoted(copies[column.name][0])}"
+def _reads(column: ColumnInfo, run: DraftRun) -> str:
+    """What a gauge column reads: a length, a strain, a strain worked out from another, or
+    another's readings."""
+    if column.name in run.copies:
+        return f"strain worked out from {quoted(run.copies[column.name][0])}"
+    if column.name in run.duplicates:
+        return f"repeats {quoted(run.duplicates[column.name])}"
     return "strain" if _is_strain(column) else "length"
 
 
@@ -505,11 +514,11 @@ def _gauge_lines(run: DraftRun) -> list[str]:
     kinds = [(column, kind_of[column.name] or "gauge") for column in gauges]
     preferred = next(kind for kind in PREFERENCE if any(k == kind for _, k in kinds))
     chosen = [column.name for column, kind in kinds  # a copy is its source
-              if kind == preferred and column.name not in run.copies]
+              if kind == preferred and column.name not in run.copies | run.duplicates]
     together = " (averaged when their stiffnesses agree)" if len(chosen) > 1 else ""
     lines = [
         comment("gauge channels: " + "; ".join(
-            f"{quoted(column.name)} {kind} ({_reads(column, run.copies)})"
+            f"{quoted(column.name)} {kind} ({_reads(column, run)})"
             for column, kind in kinds)),
         comment(f"chainbench prefers {', '.join(map(quoted, chosen))}{together} "
                 f"({preferred}; extensometer over plain gauge over crosshead)"),

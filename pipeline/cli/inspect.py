@@ -62,18 +62,35 @@ def counted_cycles(table: pd.DataFrame, metadata: TableMetadata) -> np.ndarray |
     return np.unique(np.floor(counts / per_cycle)) if counts.size else None
 
 
+def _channels(table: pd.DataFrame, metadata: TableMetadata) -> dict[str, str]:
+    """Role -> the file's name of each gauge and strain column read."""
+    return {column.role: column.name for column in metadata.columns
+            if column.role and column.role.startswith(("gauge_", "strain_"))
+            and column.role in table}
+
+
 def worked_out(table: pd.DataFrame, metadata: TableMetadata) -> dict[str, tuple[str, float]]:
     """The strain columns worked out from a length column of the file
     (:func:`~pipeline.condition.channels.find_copies`): strain column -> (the length column,
     the length it divides that one by [m]), by their names in the file."""
     from pipeline.condition.channels import find_copies
 
-    names = {column.role: column.name for column in metadata.columns
-             if column.role and column.role.startswith(("gauge_", "strain_"))
-             and column.role in table}
+    names = _channels(table, metadata)
     found = find_copies({role: table[role].to_numpy(dtype=float) for role in names})
     return {names[strain]: (names[source], length)
             for strain, (source, length) in found.items()}
+
+
+def repeated(table: pd.DataFrame, metadata: TableMetadata) -> dict[str, str]:
+    """The length columns that repeat another's readings
+    (:func:`~pipeline.condition.channels.find_duplicates`): column -> the column it
+    repeats, by their names in the file."""
+    from pipeline.condition.channels import find_duplicates
+
+    names = _channels(table, metadata)
+    kinds = {column.role: column.kind for column in metadata.columns if column.role in names}
+    found = find_duplicates({role: table[role].to_numpy(dtype=float) for role in names}, kinds)
+    return {names[name]: names[source] for name, source in found.items()}
 
 
 def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
@@ -93,8 +110,11 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
         warnings.append(
             f"the force signal shows {cycles} load cycle(s), the machine's counter {counted}"
         )
-    copies = worked_out(table, metadata)
-    kinds = {column.name: column.kind for column in metadata.columns}
+    duplicates = repeated(table, metadata)
+    copies = {name: (duplicates.get(source, source), length)
+              for name, (source, length) in worked_out(table, metadata).items()}
+    kinds = {column.name: column.kind for column in metadata.columns if column.role}
+    sources = {name: source for name, (source, _) in copies.items()} | duplicates
     return {
         "file": metadata.file,
         "layout": metadata.layout,
@@ -107,10 +127,11 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
         "columns": [
             {"name": column.name, "role": column.role, "unit": column.unit,
              "si_unit": column.si_unit,
-             "kind": kinds[copies[column.name][0]] if column.name in copies else column.kind}
+             "kind": kinds[sources[column.name]] if column.name in sources else column.kind}
             for column in metadata.columns
         ],
         "copies": {name: [source, length] for name, (source, length) in copies.items()},
+        "duplicates": duplicates,
         "cycles": cycles if cycles is not None else counted,
         "machine_cycles": counted,
         "preamble": metadata.preamble,
@@ -138,6 +159,10 @@ def _show(report: dict) -> None:
         console.print(f"note: {escape(repr(name))} is {escape(repr(source))} over "
                       f"{length * 1e3:.4g} mm to the last digit: a strain worked out from it, "
                       "counted as its kind", highlight=False)
+    for name, source in report["duplicates"].items():
+        console.print(f"note: {escape(repr(name))} repeats {escape(repr(source))} to the last "
+                      "digit: one transducer written twice, counted as its kind",
+                      highlight=False)
     for warning in report["warnings"]:
         console.print(f"[yellow]warning:[/yellow] {escape(warning)}", highlight=False)
 

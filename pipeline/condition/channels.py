@@ -25,7 +25,10 @@ A strain column may be no measurement of its own but a length channel of the
 file divided by a length (Bluehill's ``Tensile strain``, a NanoSuite's
 ``Engineering Strain``: the crosshead's extension over the gauge length). Its
 name then says nothing of what it measures; :func:`find_copies` finds it by
-its readings, which follow the length channel's to the last digit.
+its readings, which follow the length channel's to the last digit. A length
+column may likewise repeat another's readings (MTS TestSuite's ``Extension``
+beside ``Crosshead`` when no extensometer is fitted): :func:`find_duplicates`
+finds it, and it counts as the kind of the two that claims least.
 """
 
 from __future__ import annotations
@@ -59,6 +62,9 @@ COPY_MARGIN = 1.5
 COPY_FLOOR = 1e-6
 #: Fewest samples two channels need in common to be found one the other's copy.
 MIN_COPY_SAMPLES = 20
+#: Two length channels on one straight line (to within their rounding) repeat one
+#: another when its slope is 1 (or -1) to within this: the same readings to another zero.
+DUPLICATE_SCALE_TOLERANCE = 1e-3
 
 
 @dataclass(frozen=True)
@@ -141,6 +147,50 @@ def find_copies(readings: dict[str, np.ndarray]) -> dict[str, tuple[str, float]]
                 copies[name] = (source, 1.0 / abs(scale))
                 break
     return copies
+
+
+def find_duplicates(readings: dict[str, np.ndarray], kinds: dict[str, str]) -> dict[str, str]:
+    """The length channels that repeat another's readings: one transducer written twice.
+
+    Parameters
+    ----------
+    readings : dict of numpy.ndarray
+        Channel -> readings in SI (``gauge_1``... [m]; NaN where missing); strain
+        channels are passed over.
+    kinds : dict
+        Channel -> its kind as the name says (``"extensometer"``, ``"gauge"``,
+        ``"crosshead"``; ``"gauge"`` when missing).
+
+    Returns
+    -------
+    dict
+        Repeating channel -> the channel it repeats, for each length channel whose
+        readings are another's to within their rounding (:data:`COPY_MARGIN`), another
+        zero and sign allowed. Of two such channels the one of the kind last in
+        :data:`PREFERENCE` is the source: an ``Extension`` that repeats the
+        ``Crosshead`` to the last digit is the crosshead's travel, whatever its name.
+
+    Examples
+    --------
+    >>> crosshead = np.round(np.linspace(0.0, 2e-3, 50) + 1e-5 * np.sin(np.arange(50)), 7)
+    >>> find_duplicates({"gauge_1": crosshead, "gauge_2": crosshead + 1e-4},
+    ...                 {"gauge_1": "crosshead", "gauge_2": "gauge"})
+    {'gauge_2': 'gauge_1'}
+    """
+    def claims(name: str) -> int:
+        return -PREFERENCE.index(kinds.get(name) or "gauge")
+
+    lengths = sorted((name for name in readings if name.startswith("gauge_")), key=claims)
+    duplicates: dict[str, str] = {}
+    for index, source in enumerate(lengths):
+        if source in duplicates:
+            continue
+        for name in lengths[index + 1:]:
+            scale = (None if name in duplicates
+                     else _copy_scale(readings[name], readings[source]))
+            if scale is not None and abs(abs(scale) - 1) <= DUPLICATE_SCALE_TOLERANCE:
+                duplicates[name] = source
+    return duplicates
 
 
 def _copy_scale(copy: np.ndarray, source: np.ndarray) -> float | None:

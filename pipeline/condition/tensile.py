@@ -29,7 +29,12 @@ import numpy as np
 import pandas as pd
 
 from pipeline.condition.breaks import find_fracture, find_removal
-from pipeline.condition.channels import choose_channels, compared_slopes, find_copies
+from pipeline.condition.channels import (
+    choose_channels,
+    compared_slopes,
+    find_copies,
+    find_duplicates,
+)
 from pipeline.condition.segmentation import BRANCHES, Segmentation, load_sign, segment_cycles
 from pipeline.condition.tares import join_tares
 from pipeline.errors import SignalError
@@ -240,6 +245,19 @@ def _channel_strains(
     return strains
 
 
+def _settle_duplicates(duplicates: Mapping[str, str], strains: dict[str, np.ndarray],
+                       kinds: dict[str, str], columns: Mapping[str, str],
+                       warnings: list[str]) -> None:
+    """Give each length channel that repeats another (:func:`~pipeline.condition.channels.
+    find_duplicates`) that one's kind, and leave it out: it measures nothing more."""
+    for name, source in duplicates.items():
+        kinds[name] = kinds[source]
+        if strains.pop(name, None) is not None:
+            warnings.append(f"channel {columns[name]!r} repeats {columns[source]!r} "
+                            f"({kinds[source]}) to the last digit: one transducer written "
+                            "twice; not used")
+
+
 def _settle_copies(copies: Mapping[str, tuple[str, float]], strains: dict[str, np.ndarray],
                    kinds: dict[str, str], gauge_length: float | None,
                    columns: Mapping[str, str], warnings: list[str]) -> None:
@@ -395,7 +413,11 @@ def condition_tensile(
         _check_clipping(force[:end], samples[name].to_numpy()[:end], columns[name],
                         samples.index)
     strains = _channel_strains(samples, channels, gauge_length, columns, warnings)
-    _settle_copies(find_copies({name: samples[name].to_numpy()[:end] for name in channels}),
+    analysed = {name: samples[name].to_numpy()[:end] for name in channels}
+    duplicates = find_duplicates(analysed, kinds)
+    _settle_duplicates(duplicates, strains, kinds, columns, warnings)
+    _settle_copies({name: (duplicates.get(source, source), length)
+                    for name, (source, length) in find_copies(analysed).items()},
                    strains, kinds, gauge_length, columns, warnings)
     first = slice(0, int(segmentation.turns[0, 1]) + 1)  # up to the first peak
     readings = {name: samples[name].to_numpy() for name in channels}

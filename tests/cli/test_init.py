@@ -413,3 +413,20 @@ def test_a_strain_worked_out_from_a_length_column_shows_the_length_it_divides_by
                              "over") + 1] == (
         '# the file\'s "Deformação à tracção" is "Extensão" over 190 mm, the gauge length its '
         "software used")
+
+
+def test_a_length_column_repeating_the_crosshead_is_drafted_as_the_crosshead(tmp_path):
+    # MTS TestSuite's 'Extension' repeats 'Crosshead' when no extensometer is fitted: the
+    # draft says so, and that chainbench takes the crosshead
+    rows = [(i / 10, load / 100 + i * 3e-4, load * 1000) for i, load in enumerate(LOAD)]
+    (tmp_path / "testsuite.txt").write_text(
+        "Time\tLoad\tCrosshead\tExtension\nsec\tN\tmm\tmm\n" + "".join(
+            f"{time:.2f}\t{force}\t{travel:.6f}\t{travel:.6f}\n"
+            for time, travel, force in rows))
+    result = init("--print", str(tmp_path))
+    assert result.exit_code == 0, result.output
+    lines = result.stdout.splitlines()
+    assert ('# gauge channels: "Crosshead" crosshead (length); "Extension" crosshead (repeats '
+            '"Crosshead")') in lines
+    assert ('# chainbench prefers "Crosshead" (crosshead; extensometer over plain gauge over '
+            'crosshead)') in lines

@@ -148,3 +148,19 @@ def test_a_strain_worked_out_from_the_crosshead_shows_as_the_crosshead(tmp_path)
     shown = runner.invoke(app, ["inspect", str(path)], env={"COLUMNS": "200"})
     assert ("note: 'Tensile strain' is 'Crosshead' over 50 mm to the last digit: a strain "
             "worked out from it, counted as its kind") in shown.stdout
+
+
+def test_a_length_column_repeating_the_crosshead_shows_as_the_crosshead(tmp_path):
+    # MTS TestSuite's 'Extension' beside 'Crosshead', the same readings when no
+    # extensometer is fitted
+    rows = [(i / 10, load / 100 + i * 3e-4, load * 1000) for i, load in enumerate(LOAD)]
+    path = tmp_path / "testsuite.txt"
+    path.write_text("Time\tLoad\tCrosshead\tExtension\nsec\tN\tmm\tmm\n" + "".join(
+        f"{time:.2f}\t{force}\t{travel:.6f}\t{travel:.6f}\n" for time, travel, force in rows))
+    report = inspect_json(str(path))
+    assert [column["kind"] for column in report["columns"]] == [
+        None, None, "crosshead", "crosshead"]
+    assert report["duplicates"] == {"Extension": "Crosshead"}
+    shown = runner.invoke(app, ["inspect", str(path)], env={"COLUMNS": "200"})
+    assert ("note: 'Extension' repeats 'Crosshead' to the last digit: one transducer written "
+            "twice, counted as its kind") in shown.stdout

@@ -1,11 +1,12 @@
-"""Tests of pipeline.condition.channels: strain columns worked out from a length channel."""
+"""Tests of pipeline.condition.channels: strain columns worked out from a length channel,
+length columns that repeat another."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from pipeline.condition.channels import find_copies
+from pipeline.condition.channels import find_copies, find_duplicates
 from pipeline.simulate.pull import PullTruth, simulate_pull
 
 #: The gauge length a Bluehill method divides the crosshead's extension by [m].
@@ -73,3 +74,46 @@ def test_an_extensometer_beside_the_crosshead_is_no_copy_of_it(seed):
 def test_two_length_channels_are_not_compared():
     extension, _ = extension_and_strain(5)
     assert find_copies({"gauge_1": extension, "gauge_2": 2 * extension}) == {}
+
+
+def mts_testsuite_pull(seed: int) -> dict[str, np.ndarray]:
+    """A simulated pull's crosshead and extensometer as MTS TestSuite prints them (to 1e-6
+    mm) [m]."""
+    log = simulate_pull(PullTruth.for_chain("18x64"), seed)
+    return {name: np.round(log[name].to_numpy() * 1e3, 6) * 1e-3
+            for name in ("crosshead", "extensometer")}
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_a_length_column_repeating_the_crosshead_is_the_crosshead_whatever_its_name(seed):
+    crosshead = mts_testsuite_pull(seed)["crosshead"]
+    readings = {"gauge_1": crosshead - 2e-5, "gauge_2": crosshead}  # 'Extension' zeroed later
+    kinds = {"gauge_1": "gauge", "gauge_2": "crosshead"}
+    assert find_duplicates(readings, kinds) == {"gauge_1": "gauge_2"}
+    kinds = {"gauge_1": "extensometer", "gauge_2": "crosshead"}
+    assert find_duplicates(readings, kinds) == {"gauge_1": "gauge_2"}
+
+
+def test_a_repeat_with_the_other_sign_is_found_and_of_one_kind_the_first_is_the_source():
+    crosshead = mts_testsuite_pull(0)["crosshead"]
+    readings = {"gauge_1": crosshead, "gauge_2": -crosshead, "gauge_3": crosshead + 1e-6}
+    assert find_duplicates(readings, {}) == {"gauge_2": "gauge_1", "gauge_3": "gauge_1"}
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_an_extensometer_beside_the_crosshead_repeats_nothing(seed):
+    readings = mts_testsuite_pull(seed)
+    pair = {"gauge_1": readings["crosshead"], "gauge_2": readings["extensometer"]}
+    assert find_duplicates(pair, {"gauge_1": "crosshead", "gauge_2": "extensometer"}) == {}
+
+
+def test_a_length_column_on_a_line_of_another_slope_is_no_repeat():
+    # two LVDTs of one lever, or a unit slip: not the same readings
+    crosshead = mts_testsuite_pull(1)["crosshead"]
+    assert find_duplicates({"gauge_1": crosshead, "gauge_2": np.round(1.01 * crosshead, 9)},
+                           {}) == {}
+
+
+def test_strain_columns_are_not_compared_as_repeats():
+    extension, _ = extension_and_strain(6)
+    assert find_duplicates({"gauge_1": extension, "strain_1": extension.copy()}, {}) == {}

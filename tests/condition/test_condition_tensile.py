@@ -261,6 +261,36 @@ def test_a_strain_worked_out_from_the_crosshead_is_the_crosshead_whatever_its_na
                for warning in run.warnings)
 
 
+TESTSUITE = {"kinds": {"gauge_1": "crosshead", "gauge_2": "gauge"},
+             "columns": {"gauge_1": "Crosshead", "gauge_2": "Extension"}}
+
+
+def test_a_length_column_repeating_the_crosshead_is_left_out_and_e0_is_the_crosshead_s():
+    # MTS TestSuite writes 'Extension' beside 'Crosshead', the same readings when no
+    # extensometer is fitted; named as no kind, it was preferred to the crosshead, so that
+    # E0 came from the crosshead without a word of the machine's compliance
+    table, _ = bluehill_pull()
+    table = table.drop(columns="strain_1").assign(gauge_2=table["gauge_1"])
+    run = condition_tensile(table, 0.05, n_cycles=1, **TESTSUITE)
+    assert run.channels["used"].to_dict() == {"gauge_1": True, "gauge_2": False}
+    assert run.channels.loc["gauge_2", "kind"] == "crosshead"
+    assert ("channel 'Extension' repeats 'Crosshead' (crosshead) to the last digit: one "
+            "transducer written twice; not used") in run.warnings
+    assert any(warning.startswith("E0 from the crosshead travel 'Crosshead'")
+               for warning in run.warnings)
+
+
+def test_a_strain_worked_out_from_a_repeated_column_is_the_source_s():
+    table, _ = bluehill_pull()
+    table = table.assign(gauge_2=table["gauge_1"])
+    run = condition_tensile(table, 0.05, n_cycles=1,
+                            kinds={**TESTSUITE["kinds"], "strain_1": "extensometer"},
+                            columns={**TESTSUITE["columns"], "strain_1": "Tensile strain"})
+    assert run.channels["used"].to_dict() == {"gauge_1": True, "gauge_2": False,
+                                              "strain_1": False}
+    assert run.channels.loc["strain_1", "kind"] == "crosshead"
+
+
 def test_a_strain_worked_out_from_a_channel_used_itself_is_left_out():
     table, _ = bluehill_pull()
     run = condition_tensile(table, 0.05, n_cycles=1, **BLUEHILL)
