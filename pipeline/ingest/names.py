@@ -459,6 +459,8 @@ def repeats(names: list[str]) -> int:
     1
     >>> repeats(["Time Run 5", "Force Run 5", "Time Run 6", "Force Run 6"])  # PASCO
     2
+    >>> repeats(["Latest: Time", "Latest: Force", "Run 1: Time", "Run 1: Force"])  # Vernier
+    2
     """
     folded = [fold(_RUN_LABEL.sub("", name.strip())) for name in names]
     while folded and not folded[-1]:
@@ -472,12 +474,14 @@ def repeats(names: list[str]) -> int:
 
 #: A specimen's number in a column name: after it (``Force 1``, ``Force_2``, ``Load (S1)``,
 #: ``Kraft (Probe 3)``, pandas' ``Kraft.1`` for a repeated name) or before it
-#: (``Probe 1 Kraft``, ``Sample 2 Force``).
+#: (``Probe 1 Kraft``, ``Sample 2 Force``, Vernier's ``Run 1: Force``, whose newest run is
+#: ``Latest: Force``, unnumbered).
 _NUMBER_AFTER = re.compile(
     r"(?P<base>.*?[^\W\d_].*?)(?:\s*[#_.\-]\s*|\s+|\s*\(\s*(?:s|sample|specimen|probe|"
     r"probek|run)?\s*#?\s*)(?P<number>\d+)\s*\)?")
 _NUMBER_BEFORE = re.compile(
-    r"(?:sample|specimen|probe|probek|run)\s*#?\s*(?P<number>\d+)\s*[:_\-]?\s+(?P<base>.+)")
+    r"(?:(?:sample|specimen|probe|probek|run)\s*#?\s*(?P<number>\d+)|latest)\s*[:_\-]?\s+"
+    r"(?P<base>.+)")
 
 
 def _numbered(name: str) -> tuple[str, str | None]:

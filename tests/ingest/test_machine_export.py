@@ -473,6 +473,21 @@ def test_runs_side_by_side_are_refused_unless_the_run_sheet_says_which(write):
         "Time Run 6", "Force Run 6", "Position Run 6"]
 
 
+def test_vernier_runs_side_by_side_with_the_newest_unnumbered_are_refused(write):
+    # a real Vernier Graphical Analysis export: the newest run 'Latest', then 'Run 1'...;
+    # read as one test, a force named in the run sheet paired with every run's position
+    names = ",".join(f'"{run}: {name}"' for run in ("Latest", "Run 1", "Run 2")
+                     for name in ("Time (s)", "Force (N)", "Position (m)"))
+    rows = ["0.01,-0.05,,0.01,-0.05,,0.01,-0.02,", "0.02,0.4,0.001,0.02,0.6,0.002,0.02,0.8,0.003"]
+    path = write("dr_lee.csv", names + "\n" + "\n".join(rows) + "\n")
+    with pytest.raises(LayoutError, match="repeat 3 times side by side"):
+        read_table(path, kind="tensile")
+    table, meta = read_table(path, kind="tensile", specimen=2)
+    np.testing.assert_allclose(table["force"], [-0.05, 0.6])
+    assert [column.name for column in meta.columns] == [
+        "Run 1: Time", "Run 1: Force", "Run 1: Position"]
+
+
 def test_specimens_numbered_in_the_names_are_read_one_a_run(write):
     """``Force 1 [kN], Disp 1 [mm], Force 2 [kN], Disp 2 [mm]``: read as one specimen, the
     first force would pair with both displacements."""
