@@ -208,10 +208,11 @@ _BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^(
 _RUN_LABEL = re.compile(r"\s+(?:Run\s*#?\s*\d+|Auto)$")
 #: The channel a computed one was derived from, in trailing brackets.
 _SOURCE = re.compile(r"\((?P<source>[^()]+)\)\s*$")
-#: A displacement of an MTS controller's channel (``Ch 1 Weg``, ``Ch 1 Displacement``): the
-#: channel's own transducer on its actuator, so the machine's travel; the sensors on the
-#: specimen are named by the lab (``Extensometer``, a serial number).
-_CONTROLLER_TRAVEL = re.compile(r"ch\.? ?\d+ (?:weg|displacement|position)", re.IGNORECASE)
+#: A displacement of an MTS controller's channel (``Ch 1 Weg``, ``Ch 1 Displacement``,
+#: ``Ch 1 LVDT``): the channel's own transducer on its actuator, so the machine's travel;
+#: the sensors on the specimen are named by the lab (``Extensometer``, a serial number).
+_CONTROLLER_TRAVEL = re.compile(r"ch\.? ?\d+ (?:weg|displacement|position|lvdt|stroke)",
+                                re.IGNORECASE)
 _TOKEN = re.compile(r"[^\W\d_]+|\d+")
 
 
@@ -340,8 +341,8 @@ def gauge_kind(name: str) -> str:
     ('crosshead', 'extensometer', 'gauge')
     >>> gauge_kind("Tensile strain (Extension)"), gauge_kind("Tensile strain (AVE 2)")
     ('gauge', 'extensometer')
-    >>> gauge_kind("Ch 1 Weg"), gauge_kind("1470533")
-    ('crosshead', 'gauge')
+    >>> gauge_kind("Ch 1 Weg"), gauge_kind("Ch 1 LVDT"), gauge_kind("1470533")
+    ('crosshead', 'crosshead', 'gauge')
     """
     source = _SOURCE.search(name)
     if source is not None:

@@ -180,6 +180,8 @@ def test_what_a_displacement_channel_measures_in_more_languages(name, kind):
     # lab's displacement transducers on the specimen are named by their serial numbers
     ("Ch 1 Weg", "crosshead"), ("Ch 1 Displacement", "crosshead"), ("Ch2 Position", "crosshead"),
     ("1470533", "gauge"), ("Ch 1 Dehnung", "extensometer"), ("Weg Ch 1", "gauge"),
+    # a real MTS 793 single pull: the actuator's own LVDT; an LVDT on the specimen is the lab's
+    ("Ch 1 LVDT", "crosshead"), ("Ch 1 Stroke", "crosshead"), ("LVDT 2", "gauge"),
 ])
 def test_an_mts_controller_channels_displacement_is_its_actuators(name, kind):
     assert gauge_kind(name) == kind
