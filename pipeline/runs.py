@@ -19,7 +19,7 @@ import numpy as np
 import pandas as pd
 
 from pipeline.condition.segment_load import condition_segment_load
-from pipeline.condition.tensile import TensileRun, condition_tensile
+from pipeline.condition.tensile import TensileRun, condition_tensile, cuts_of_channels_used
 from pipeline.condition.wear import condition_wear
 from pipeline.engagement_log import (
     LogAnalysis,
@@ -164,7 +164,11 @@ def analyse_tensile_run(sheet: RunSheet, run: RunDef,
     if run.fit_window is not None:
         options["force_window"] = (to_si(run.fit_window.force_low_kN, "kN"),
                                    to_si(run.fit_window.force_high_kN, "kN"))
-    fits = fit_stiffness(conditioned, **options)
+    try:
+        fits = fit_stiffness(conditioned, **options)
+    except FitError as error:  # too few samples where a channel was cut: say where
+        error.message += cuts_of_channels_used(conditioned)
+        raise
     specimen = specimen_stiffness(fits, single_pull=conditioned.single_pull)
     strength = specimen_strength(conditioned, fits, yield_offset=run.yield_offset_pct / 100,
                                  proof_force=proof_force(sheet, run))

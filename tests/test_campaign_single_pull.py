@@ -9,6 +9,7 @@ readers: within 5 %, and never from an average of different kinds of channel.
 from __future__ import annotations
 
 import dataclasses
+import re
 import shutil
 import textwrap
 
@@ -241,3 +242,25 @@ def test_catalogue_preload_above_a_small_specimen_is_set_aside_with_a_warning(re
     assert int(run["specimen_n_cycles"]) == 2  # cycles 2 and 3 counted
     assert any("catalogue's preload of chain 18x64 (9.807 kN)" in warning
                for warning in warnings)
+
+
+def test_a_fit_with_too_few_samples_says_where_its_only_channel_was_cut(tmp_path):
+    # a real WaveMatrix export: its one position ran backwards early in a sparse log, and the run
+    # failed as "the fullest branch holds 0 samples with a strain", saying not why
+    truth = PullTruth.for_chain("18x64")
+    log = simulate_pull(truth, seed=3).iloc[::40].reset_index(drop=True)
+    force = log["force"].to_numpy()
+    crosshead = log["crosshead"].to_numpy().copy()
+    slip = int(np.argmax(force > 0.3 * force.max()))
+    crosshead[slip:] = crosshead[slip] - np.linspace(0.0, 2e-3, crosshead.size - slip)
+    folder = tmp_path / "slipped"
+    folder.mkdir()
+    pd.DataFrame({"Time": log["time"], "Load": force / 1e3,
+                  "Crosshead": crosshead * 1e3}).to_csv(folder / "p.csv", index=False)
+    campaign(folder, "p.csv", f"gauge_length_mm = {truth.gauge_length * 1e3}\n"
+                              'units = {time = "s", force = "kN", gauges = "mm"}\n')
+    result = process_campaign(folder, tmp_path / "processed" / "slipped")
+    [failure] = result.failures
+    # cut where it stopped following the specimen (frozen or running backwards)
+    assert re.search(r"a fit needs 10; 'Crosshead' (freezes|runs backwards) from "
+                     rf"{force[slip] / 1e3:.4g} kN on \(hint:", failure.message)

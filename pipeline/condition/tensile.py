@@ -323,6 +323,21 @@ def _label_after(segmentation: Segmentation, size: int, single_pull: bool,
     return cycle, branch
 
 
+def cuts_of_channels_used(run: TensileRun) -> str:
+    """Where the channels `run` takes its strain from were cut (the conditioning found them
+    taken off, slipping or stuck), as ``"; 'Ext' runs backwards from 1.2 kN on"`` for
+    each; empty when none was. For a fit that finds too few samples: they say why."""
+    cut = run.channels[run.channels["used"] & (run.channels["removed_at"] >= 0)]
+    force = run.samples["force"].to_numpy()
+    return "".join(_cut_said(row.column, row.removal, force[row.removed_at])
+                   for row in cut.itertuples())
+
+
+def _cut_said(column: str, reason: str, force: float) -> str:
+    """``"; 'Ext' runs backwards from 1.2 kN on"``: a channel cut at `force` [N]."""
+    return f"; {column!r} {reason} from {abs(force) / 1e3:.4g} kN on"
+
+
 def condition_tensile(
     table: pd.DataFrame,
     gauge_length: float | None,
@@ -434,8 +449,7 @@ def condition_tensile(
     if not choice.used:  # saying why, when the channels were cut where they misbehaved
         raise SignalError(
             "no gauge channel grows with the force on the first loading" + "".join(
-                f"; {columns[name]!r} {removal.reason} from "
-                f"{abs(force[removal.position]) / 1e3:.4g} kN on"
+                _cut_said(columns[name], removal.reason, force[removal.position])
                 for name, removal in removals.items()),
             hint="check the gauge columns, their sign and wiring, and the run sheet's columns",
         )
