@@ -24,8 +24,11 @@ Channel removal (:func:`find_removal`)
     its signal runs backwards while the force keeps rising, by
     :data:`BACKWARDS_RISE` of its maximum at least (it falls off),
     jumps (a single step far larger than its neighbours), or freezes (it stays
-    within its noise while the force rises, or past the maximum falls, by
-    :data:`FREEZE_RISE` of the maximum, or while another displacement channel
+    within its noise while the force rises by :data:`FREEZE_RISE` of the
+    maximum; or past the maximum, within its noise and resolution alone, while the
+    force falls by as much and from there to the fracture, since a necking specimen
+    can shed load faster than a channel that follows it moves by a share of its
+    range; or while another displacement channel
     that follows the force keeps moving: the specimen lengthens all the while).
     The first sample where one of these happens ends the channel's usable
     data. A channel is judged from where the force rises through
@@ -236,9 +239,10 @@ def _jump(channel: np.ndarray, tolerance: float) -> int | None:
 
 
 def _freeze(force: np.ndarray, channel: np.ndarray, tolerance: float, rise: float,
-            low: float) -> int | None:
+            low: float, to_end: bool = False) -> int | None:
     """First sample of a stretch of the rising envelope of `force` over which it rises by
-    `rise` from above `low` while the channel stays within `tolerance`."""
+    `rise` from above `low` while the channel stays within `tolerance` (with `to_end`:
+    and stays so to the last sample)."""
     rising = _envelope(force)
     if rising.size < 3:
         return None
@@ -252,7 +256,8 @@ def _freeze(force: np.ndarray, channel: np.ndarray, tolerance: float, rise: floa
         moving = (rise * np.abs(on_channel[starts] - on_channel[0])
                   / (on_force[starts] - on_force[0]) > 4.0 * tolerance)
     for start in starts[level & moving & (on_force[starts] > low)]:
-        if np.ptp(on_channel[start : ends[start] + 1]) <= tolerance:
+        still = channel[rising[start]:] if to_end else on_channel[start : ends[start] + 1]
+        if np.ptp(still) <= tolerance:
             return int(rising[start])
     return None
 
@@ -301,11 +306,11 @@ def reading_step(channel: np.ndarray) -> float:
     return float(steps.min()) if steps.size else 0.0
 
 
-def channel_tolerance(channel: np.ndarray) -> float:
+def channel_tolerance(channel: np.ndarray, share_of_range: float = 0.005) -> float:
     """How far a channel's reading may move and still be still [channel's unit]: five
-    times its noise, half a per cent of its range, or :data:`RESOLUTION_STEPS` steps of
+    times its noise, `share_of_range` of its range, or :data:`RESOLUTION_STEPS` steps of
     its resolution, whichever is largest."""
-    return max(5.0 * noise_level(channel), 0.005 * np.ptp(channel),
+    return max(5.0 * noise_level(channel), share_of_range * np.ptp(channel),
                RESOLUTION_STEPS * reading_step(channel))
 
 
@@ -361,9 +366,12 @@ def find_removal(oriented_force: np.ndarray, oriented_channel: np.ndarray,
     if followed >= MIN_FOLLOWED:  # a reading off the specimen widens the range: not its own
         tolerance = min(tolerance, channel_tolerance(channel[:followed]))
     rise = FREEZE_RISE * whole[peak]
-    # past the maximum the specimen still lengthens while the force falls (necking)
-    falling = _freeze(whole[peak] - whole[peak:], oriented_channel[peak:], tolerance, rise,
-                      -np.inf)
+    # past the maximum the specimen still lengthens while the force falls (necking); so fast
+    # can it fall before the fracture that a channel that follows moves less than a share
+    # of its range meanwhile: one taken off stands within its noise, to the fracture
+    falling = _freeze(whole[peak] - whole[peak:], oriented_channel[peak:],
+                      channel_tolerance(channel, share_of_range=0.0), rise, -np.inf,
+                      to_end=True)
     frozen = _freeze(force, channel, tolerance, rise, 0.1 * whole[peak])
     witnesses = [other for other in others if _follows(force, other[loaded : peak + 1])]
     still = _still_while_others_move(np.asarray(oriented_channel[loaded:], dtype=float),
