@@ -51,6 +51,9 @@ BLANKS = " "
 DELIMITERS = ("\t", ";", ",", "|", BLANKS)
 #: What separates the names of a table aligned by blanks when a name holds a blank.
 _WIDE_BLANKS = re.compile(r" {2,}|\t")
+#: A setting written ``KEY = value`` (an Imada force recorder's ``UNIT = gf,mm``,
+#: ``2ND PEAK FORCE = ---,---``).
+_SETTING = re.compile(r"\s*[^=,;\t]+? = ")
 #: Non-blank lines at the end of the head that the dialect is chosen on.
 DIALECT_LINES = 128
 #: Lines of the head first classified to find the table (more when they do not tell).
@@ -638,6 +641,10 @@ def find_table(
         units_index, above = above, above - 1
         if above >= 1 and _channel_states(rows[above]) and kinds[above - 1] == "text":
             above -= 1  # a row of channel states between the names and the units (MaCh3D)
+    preamble_end = above
+    if units_index is None and above >= 1 and all(
+            _SETTING.match(lines[index]) for index in (above - 1, above)):
+        preamble_end, above = data, -1  # the last of a block of settings: no names row
     if above >= 0 and kinds[above] != "text" and units_index is None:
         raise _no_names_row(name, data, delimiter)
     names_line = lines[above] if above >= 0 else ""
@@ -704,7 +711,7 @@ def find_table(
         data_index=data,
         width=width,
         units=units,
-        preamble=[line for index, line in enumerate(lines[:max(above, 0)])
+        preamble=[line for index, line in enumerate(lines[:max(preamble_end, 0)])
                   if line.strip() and index != labels_over
                   and not (results and results[0] <= index < results[1])],
         passed=[line for line in lines[slice(*results)] if line.strip()] if results else [],

@@ -321,3 +321,23 @@ def test_a_file_without_names_gets_no_role_from_a_position(write):
     with pytest.raises(ColumnError, match="no gauge column found") as missing:
         read_table(path, kind="tensile", columns={"force": "column 2"}, units={"force": "kN"})
     assert "the file has: column 1, column 2, column 3" in missing.value.hint
+
+
+# a real Imada force recorder's high-rate export: its settings as KEY = value, then the
+# force and displacement with no names row; its last setting was read as the names
+IMADA = ("MAX FORCE = 195.5,3.965\nMIN FORCE = -1.4,0.000\nUNIT = gf,mm\n"
+         "RECORDING RATE = 0.0005,\n1ST PEAK FORCE = ---,---\n2ND PEAK FORCE = ---,---\n"
+         "0.0,0.000\n12.5,0.125\n25.1,0.250\n37.4,0.375\n")
+
+
+def test_settings_as_key_equals_value_above_the_data_are_no_names_row(write):
+    path = write("X_Green_HighResolutionRaw.csv", IMADA)
+    with pytest.raises(LayoutError, match="no names row above the first data row") as caught:
+        read_table(path, kind="tensile")
+    assert caught.value.row == 7
+    table, meta = read_table(path, kind="tensile",
+                             columns={"force": "column 1", "gauges": ["column 2"]},
+                             units={"force": "gf", "gauges": "mm"})
+    np.testing.assert_allclose(table["force"], 9.80665e-3 * np.array([0.0, 12.5, 25.1, 37.4]))
+    np.testing.assert_allclose(table["gauge_1"], [0.0, 1.25e-4, 2.5e-4, 3.75e-4])
+    assert meta.header_line is None and meta.preamble["UNIT"] == "gf mm"
