@@ -62,35 +62,23 @@ def counted_cycles(table: pd.DataFrame, metadata: TableMetadata) -> np.ndarray |
     return np.unique(np.floor(counts / per_cycle)) if counts.size else None
 
 
-def _channels(table: pd.DataFrame, metadata: TableMetadata) -> dict[str, str]:
-    """Role -> the file's name of each gauge and strain column read."""
-    return {column.role: column.name for column in metadata.columns
-            if column.role and column.role.startswith(("gauge_", "strain_"))
-            and column.role in table}
+def derived(table: pd.DataFrame, metadata: TableMetadata
+            ) -> tuple[dict[str, str], dict[str, tuple[str, float]]]:
+    """The gauge and strain columns that measure nothing of their own
+    (:func:`~pipeline.condition.channels.find_derived`), by their names in the file: length
+    column -> the column it repeats, and strain column -> (the length column it is worked
+    out from, the length it divides that one by [m])."""
+    from pipeline.condition.channels import find_derived
 
-
-def worked_out(table: pd.DataFrame, metadata: TableMetadata) -> dict[str, tuple[str, float]]:
-    """The strain columns worked out from a length column of the file
-    (:func:`~pipeline.condition.channels.find_copies`): strain column -> (the length column,
-    the length it divides that one by [m]), by their names in the file."""
-    from pipeline.condition.channels import find_copies
-
-    names = _channels(table, metadata)
-    found = find_copies({role: table[role].to_numpy(dtype=float) for role in names})
-    return {names[strain]: (names[source], length)
-            for strain, (source, length) in found.items()}
-
-
-def repeated(table: pd.DataFrame, metadata: TableMetadata) -> dict[str, str]:
-    """The length columns that repeat another's readings
-    (:func:`~pipeline.condition.channels.find_duplicates`): column -> the column it
-    repeats, by their names in the file."""
-    from pipeline.condition.channels import find_duplicates
-
-    names = _channels(table, metadata)
+    names = {column.role: column.name for column in metadata.columns
+             if column.role and column.role.startswith(("gauge_", "strain_"))
+             and column.role in table}
     kinds = {column.role: column.kind for column in metadata.columns if column.role in names}
-    found = find_duplicates({role: table[role].to_numpy(dtype=float) for role in names}, kinds)
-    return {names[name]: names[source] for name, source in found.items()}
+    duplicates, copies = find_derived(
+        {role: table[role].to_numpy(dtype=float) for role in names}, kinds)
+    return ({names[name]: names[source] for name, source in duplicates.items()},
+            {names[strain]: (names[source], length)
+             for strain, (source, length) in copies.items()})
 
 
 def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
@@ -110,9 +98,7 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
         warnings.append(
             f"the force signal shows {cycles} load cycle(s), the machine's counter {counted}"
         )
-    duplicates = repeated(table, metadata)
-    copies = {name: (duplicates.get(source, source), length)
-              for name, (source, length) in worked_out(table, metadata).items()}
+    duplicates, copies = derived(table, metadata)
     kinds = {column.name: column.kind for column in metadata.columns if column.role}
     sources = {name: source for name, (source, _) in copies.items()} | duplicates
     return {

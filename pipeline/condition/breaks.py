@@ -255,9 +255,14 @@ def _freeze(force: np.ndarray, channel: np.ndarray, tolerance: float, rise: floa
     with np.errstate(divide="ignore", invalid="ignore"):
         moving = (rise * np.abs(on_channel[starts] - on_channel[0])
                   / (on_force[starts] - on_force[0]) > 4.0 * tolerance)
-    for start in starts[level & moving & (on_force[starts] > low)]:
-        still = channel[rising[start]:] if to_end else on_channel[start : ends[start] + 1]
-        if np.ptp(still) <= tolerance:
+    candidates = starts[level & moving & (on_force[starts] > low)]
+    if to_end:  # the range of the channel from each sample to the last, in one pass
+        ahead = channel[::-1]
+        span = (np.maximum.accumulate(ahead) - np.minimum.accumulate(ahead))[::-1]
+        still = candidates[span[rising[candidates]] <= tolerance]
+        return int(rising[still[0]]) if still.size else None
+    for start in candidates:
+        if np.ptp(on_channel[start : ends[start] + 1]) <= tolerance:
             return int(rising[start])
     return None
 

@@ -193,6 +193,18 @@ def find_duplicates(readings: dict[str, np.ndarray], kinds: dict[str, str]) -> d
     return duplicates
 
 
+def find_derived(readings: dict[str, np.ndarray], kinds: dict[str, str]
+                 ) -> tuple[dict[str, str], dict[str, tuple[str, float]]]:
+    """The channels that measure nothing of their own: the length channels that repeat
+    another (:func:`find_duplicates`) and the strain channels worked out from a length
+    channel (:func:`find_copies`), a copy's source being the channel its source repeats,
+    if it does (parameters as there)."""
+    duplicates = find_duplicates(readings, kinds)
+    copies = {name: (duplicates.get(source, source), length)
+              for name, (source, length) in find_copies(readings).items()}
+    return duplicates, copies
+
+
 def _copy_scale(copy: np.ndarray, source: np.ndarray) -> float | None:
     """The slope of `copy` over `source` if `copy` is `source` rescaled (to within their
     rounding, :data:`COPY_MARGIN`), else None."""

@@ -29,12 +29,7 @@ import numpy as np
 import pandas as pd
 
 from pipeline.condition.breaks import find_fracture, find_removal
-from pipeline.condition.channels import (
-    choose_channels,
-    compared_slopes,
-    find_copies,
-    find_duplicates,
-)
+from pipeline.condition.channels import choose_channels, compared_slopes, find_derived
 from pipeline.condition.segmentation import BRANCHES, Segmentation, load_sign, segment_cycles
 from pipeline.condition.tares import join_tares
 from pipeline.errors import SignalError
@@ -428,12 +423,10 @@ def condition_tensile(
         _check_clipping(force[:end], samples[name].to_numpy()[:end], columns[name],
                         samples.index)
     strains = _channel_strains(samples, channels, gauge_length, columns, warnings)
-    analysed = {name: samples[name].to_numpy()[:end] for name in channels}
-    duplicates = find_duplicates(analysed, kinds)
+    duplicates, copies = find_derived(
+        {name: samples[name].to_numpy()[:end] for name in channels}, kinds)
     _settle_duplicates(duplicates, strains, kinds, columns, warnings)
-    _settle_copies({name: (duplicates.get(source, source), length)
-                    for name, (source, length) in find_copies(analysed).items()},
-                   strains, kinds, gauge_length, columns, warnings)
+    _settle_copies(copies, strains, kinds, gauge_length, columns, warnings)
     first = slice(0, int(segmentation.turns[0, 1]) + 1)  # up to the first peak
     readings = {name: samples[name].to_numpy() for name in channels}
     removals = _cut_removed(force, strains, readings, slice(0, end) if single_pull else first,
