@@ -397,7 +397,17 @@ def draft_runs(folder: Path, *, debug: bool = False) -> tuple[list[DraftRun], li
                 skipped.append((name, f"unexpected failure ({type(error).__name__}: "
                                 f"{' '.join(str(error).split())}); rerun with --debug and "
                                 "report it"))
-    return runs, skipped
+    return _without_parts(runs, skipped)
+
+
+def _without_parts(runs: list[DraftRun], skipped: list[tuple]
+                   ) -> tuple[list[DraftRun], list[tuple]]:
+    """`runs` but those of files another run's test goes on in, which join `skipped`."""
+    parts = {part: run.file for run in runs for part in run.metadata.continued_in}
+    skipped += [(run.file, f"the rest of the test of {parts[run.file]} (its time runs on "
+                 "from there): join the parts into one file")
+                for run in runs if run.file in parts]
+    return [run for run in runs if run.file not in parts], skipped
 
 
 def _reason(error: ChainbenchError) -> str:

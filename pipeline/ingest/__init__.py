@@ -48,7 +48,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from pipeline.ingest import canonical
+from pipeline.ingest import canonical, continuation
 from pipeline.ingest.formats import FORMATS, check_options, read_raw, sniff
 from pipeline.ingest.source import BufferSource, Source, opened
 from pipeline.ingest.stream import LogReader, open_log
@@ -148,7 +148,11 @@ def read_table(
     """
     check_options(kind, format)
     with opened(Path(path)) as source:
-        return _table(source, kind, columns, units, format, sheet, specimen, strict)
+        table, metadata = _table(source, kind, columns, units, format, sheet, specimen, strict)
+    continuation.note_parts(Path(path), metadata, lambda: continuation.last_time_of(table),
+                            {"kind": kind, "columns": columns, "units": units, "format": format,
+                             "sheet": sheet, "specimen": specimen})
+    return table, metadata
 
 
 def parse_table(

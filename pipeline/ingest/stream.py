@@ -34,6 +34,7 @@ take no role are not scanned.
 
 from __future__ import annotations
 
+import math
 import operator
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
@@ -43,7 +44,7 @@ from typing import Protocol
 import pandas as pd
 
 from pipeline.errors import IngestError
-from pipeline.ingest import delimited, lvm, tdms
+from pipeline.ingest import continuation, delimited, lvm, tdms
 from pipeline.ingest.canonical import Conversion, clean, convert_rows, empty_warning, settle
 from pipeline.ingest.formats import TEXT_LAYOUTS, Sniffed, check_options, read_raw, sniff
 from pipeline.ingest.raw import RawColumns, RawTable
@@ -278,6 +279,16 @@ class LogReader:
             table, found = convert_rows(raw, self._conversion)
         return table, warnings + found
 
+    def last_time(self) -> float:
+        """The time of the last row [s]; NaN without a time, or where the row does not read
+        (:meth:`read` of it raises then)."""
+        if not self.n_rows:
+            return math.nan
+        try:
+            return continuation.last_time_of(self.read(self.n_rows - 1, self.n_rows)[0])
+        except IngestError:
+            return math.nan
+
 
 def _stamp(source: FileSource) -> tuple[int, int]:
     """Size [bytes] and modification time [ns] of an open file."""
@@ -329,7 +340,11 @@ def open_log(
     conversion = settle(rows.header, empty, kind=kind, units=units, specimen=specimen)
     meta.rows = rows.rows
     meta.columns = list(conversion.infos)
-    return LogReader(str(path), rows.rows, meta, conversion, rows, stamp)
+    reader = LogReader(str(path), rows.rows, meta, conversion, rows, stamp)
+    continuation.note_parts(path, meta, reader.last_time,
+                            {"kind": kind, "columns": columns, "units": units,
+                             "format": format, "sheet": sheet, "specimen": specimen})
+    return reader
 
 
 def _empty_candidates(source: Source, rows: _Rows) -> set[int]:

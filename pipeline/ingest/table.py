@@ -79,6 +79,8 @@ class TableMetadata:
     #: the labels of the specimens side by side in the file (none: one, or unlabelled)
     specimens: list[str] = field(default_factory=list)
     specimen: str | None = None  #: the one read of several side by side (its label or place)
+    #: the files the test goes on in, in order (a machine writing a long test in parts)
+    continued_in: list[str] = field(default_factory=list)
 
     def as_dict(self) -> dict:
         """A JSON-ready copy (as printed by ``chainbench inspect --json``)."""

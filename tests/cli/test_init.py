@@ -430,3 +430,23 @@ def test_a_length_column_repeating_the_crosshead_is_drafted_as_the_crosshead(tmp
             '"Crosshead")') in lines
     assert ('# chainbench prefers "Crosshead" (crosshead; extensometer over plain gauge over '
             'crosshead)') in lines
+
+
+def test_the_parts_a_test_goes_on_in_are_skipped_as_such(tmp_path):
+    # MTS TestSuite writes a long test in parts, the time running on: one run, for the
+    # first part, which warns that the test goes on; the other parts are no runs
+    header = "Crosshead \tLoad \tTime \nmm\tN\tsec\n"
+    for number, start in (("", 0), ("1", 60), ("2", 120)):
+        (tmp_path / f"DAQ - (Timed){number}.txt").write_text(header + "".join(
+            f"{load / 100:.4f}\t{load * 100}\t{start + i / 10:.1f}\n"
+            for i, load in enumerate(LOAD)))
+    result = init("--json", str(tmp_path))
+    assert result.exit_code == 0, result.output
+    document = json.loads(result.stdout)
+    assert [run["file"] for run in document["runs"]] == ["DAQ - (Timed).txt"]
+    assert sorted(item["file"] for item in document["skipped"]) == [
+        "DAQ - (Timed)1.txt", "DAQ - (Timed)2.txt"]
+    assert all(item["reason"].startswith("the rest of the test of DAQ - (Timed).txt")
+               for item in document["skipped"])
+    text = (tmp_path / "campaign.toml").read_text(encoding="utf-8")
+    assert "# reader: the test goes on in 'DAQ - (Timed)1.txt', 'DAQ - (Timed)2.txt'" in text
