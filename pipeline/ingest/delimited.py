@@ -235,6 +235,34 @@ def _units_of_a_preamble_row(spec: TableSpec, names: list[str], units: list[str 
     return units
 
 
+def _units_of_unit_columns(head: Head, spec: TableSpec, names: list[str],
+                           units: list[str | None], warnings: list[str]) -> list[str | None]:
+    """`units`, with the unit a column named as such (:data:`UNITS_ROW_KEYS`) gives the
+    column before it, as a force gauge writes it beside each value (Imada:
+    ``Force,Unit,Displacement,Unit`` over ``0.0,gf,0.000,mm``), with a note.
+
+    Only a column of text holding one unit in every row of the file's head, beside a
+    column that has no unit of its own.
+    """
+    rows = [split_fields(line, spec.delimiter) for line in head.lines[spec.data_index:]
+            if line.strip()]
+    filled = list(units)
+    for index in range(1, len(names)):
+        if (fold(names[index]) not in UNITS_ROW_KEYS or index not in spec.texts
+                or filled[index - 1] is not None):
+            continue
+        found = sorted({row[index].strip() for row in rows if len(row) > index})
+        column, beside = display_name(names, index - 1), display_name(names, index)
+        if len(found) == 1 and spellings(found[0]):
+            filled[index - 1] = found[0]
+            warnings.append(f"unit of {column!r} ({found[0]}) from the column {beside!r} "
+                            "beside it")
+        elif len(found) > 1 and all(map(spellings, found)):
+            warnings.append(f"the column {beside!r} beside {column!r} holds several units "
+                            f"({', '.join(found)}): none is taken as its unit")
+    return filled
+
+
 def _without_in(name: str) -> str:
     """A name without the ``in`` before its unit word (Rohde & Schwarz: ``C1 in V``)."""
     words = name.split()
@@ -296,6 +324,7 @@ def text_header(
     units = _time_unit_of_its_name(names, units, meta.warnings)
     if spec.units_index is None:
         units = _units_of_a_preamble_row(spec, names, units, meta.warnings)
+    units = _units_of_unit_columns(head, spec, names, units, meta.warnings)
     candidates, set_aside = numeric_candidates(
         spec, find_candidates(names, units, columns, file=head.name,
                               header_line=names_line(spec)),

@@ -41,7 +41,12 @@ from pipeline.ingest.clock import (
 )
 from pipeline.ingest.names import match_role, repeats
 from pipeline.ingest.source import Source
-from pipeline.ingest.unitparse import NO_UNIT_CELLS, is_sample_interval, looks_like_unit
+from pipeline.ingest.unitparse import (
+    NO_UNIT_CELLS,
+    is_measure_unit,
+    is_sample_interval,
+    looks_like_unit,
+)
 
 #: Bytes read to sniff a file.
 HEAD_BYTES = 1 << 16
@@ -537,16 +542,22 @@ def _numeric_row(row: list[str], decimal: str, blanks: bool = False) -> bool:
     """At least two fields, and more numbers (or clock readings, read or not) than texts.
 
     A text cell is allowed so that a table with a text column (a date, a
-    status) is still found; its text column takes no role. In a table aligned
+    status) is still found; its text column takes no role. A unit of force or
+    length right after a number counts for neither: a force gauge writes its
+    unit beside each value (``1,0.0,gf,0.000,mm,OK``). In a table aligned
     by blanks (`blanks`), where a line of words and numbers splits into fields
     too (``Cycles: 3 5``), none is.
     """
     numbers = texts = 0
+    after_number = False
     for cell in row:
         if is_number(cell, decimal) or looks_like_clock(cell):
             numbers += 1
-        elif not is_missing(cell):
+            after_number = True
+            continue
+        if not is_missing(cell) and not (after_number and is_measure_unit(cell.strip())):
             texts += 1
+        after_number = False
     return len(row) >= 2 and numbers > texts and not (blanks and texts)
 
 

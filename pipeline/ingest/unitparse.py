@@ -7,6 +7,7 @@ rest; only the *spelling* is helped (``"Sec"`` -> ``"sec"``, ``"KN"`` -> ``"kN"`
 
 from __future__ import annotations
 
+import functools
 import re
 
 from pipeline.errors import UnitError
@@ -171,6 +172,13 @@ def unit_fits(text: str | None, role: str) -> bool:
     (True, True, False)
     """
     return any(_fits(spelling, role) for spelling in spellings(text or ""))
+
+
+@functools.lru_cache(maxsize=256)
+def is_measure_unit(text: str) -> bool:
+    """Whether `text` is a unit of force or length (``"gf"``, ``"mm"``), as a force gauge
+    writes beside each value."""
+    return unit_fits(text, "force") or unit_fits(text, "length")
 
 
 def unit_misfits(text: str | None, role: str) -> bool:

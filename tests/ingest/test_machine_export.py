@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from pipeline.errors import ColumnError, LayoutError, ValueParseError
+from pipeline.errors import ColumnError, LayoutError, UnitError, ValueParseError
 from pipeline.ingest import open_log, read_table
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.sniff import OUT_OF_RANGE_HINT
@@ -730,3 +730,36 @@ def test_an_out_of_range_mark_is_refused_with_what_it_means(write, graphtec_expo
     assert (caught.value.row, caught.value.column) == (14, "CH1")
     assert caught.value.message == f"{mark!r} is not a number"
     assert caught.value.hint == OUT_OF_RANGE_HINT
+
+
+def imada_list(force_units: list[str]) -> str:
+    """An Imada Force Recorder list export: its statistics, then each value with its unit
+    beside it, a judgement, an unused position and a time of day before the date."""
+    head = ("Maximum,193.9,@,No.3,,,,,,\r\nMinimum,-0.5,@,No.1,,,,,,\r\nAverage,56.18,,,,,,,,\r\n"
+            "Data Quantity,6,,,,,,,,\r\nNumber of NG,0,,,,,,,,\r\n"
+            "No.,Force,Unit,Displacement,Unit,Judge,Position,Time,Date,\r\n")
+    return head + "".join(
+        f"{i + 1},{10.0 * i:.1f},{unit},{0.005 * i:.3f},mm,OK,--,10:30:5{i} AM,12/26/2024,\r\n"
+        for i, unit in enumerate(force_units))
+
+
+def test_a_force_gauges_unit_beside_each_value_is_the_columns_unit(write):
+    table, meta = read_table(write("imada.csv", imada_list(["gf"] * 6)))
+    assert list(table.columns) == ["time", "force", "gauge_1"]
+    np.testing.assert_allclose(table["force"], 10.0 * np.arange(6) * 9.80665e-3)  # gf in N
+    np.testing.assert_allclose(table["gauge_1"], 0.005e-3 * np.arange(6))
+    np.testing.assert_allclose(table["time"], np.arange(6.0))
+    assert {(c.name, c.unit) for c in meta.columns if c.role} == {
+        ("Force", "gf"), ("Displacement", "mm"), ("Time", "s")}
+    assert "unit of 'Force' (gf) from the column 'Unit' beside it" in meta.warnings
+    assert meta.preamble["Maximum"].startswith("193.9")
+
+
+def test_a_unit_column_of_two_units_gives_none(write):
+    """A column whose unit changes is not one column's unit: the run sheet must say."""
+    path = write("imada.csv", imada_list(["gf"] * 3 + ["N"] * 3))
+    with pytest.raises(UnitError, match="no unit for the force column"):
+        read_table(path)
+    said = read_table(path, strict=False)[1].warnings
+    assert "the column 'Unit' beside 'Force' holds several units (N, gf): none is taken as " \
+        "its unit" in said
