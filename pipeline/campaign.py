@@ -59,6 +59,7 @@ from pipeline.errors import ChainbenchError, FitError, OutputError
 from pipeline.fit.impact_model import ImpactModelFit, fit_impact_model
 from pipeline.fit.stiffness import SpecimenStiffness
 from pipeline.fit.wear import CONFIDENCE as WEAR_CONFIDENCE
+from pipeline.ingest.continuation import numbered_after
 from pipeline.plausibility import check_operating_points, check_specimens, excluded, flags_dataset
 from pipeline.report.build import build_report, remove_report
 from pipeline.results import (
@@ -146,7 +147,8 @@ class CampaignResult:
     reused: list[str] = field(default_factory=list)  #: runs whose stored result was current
     removed: list[str] = field(default_factory=list)  #: stale run files deleted
     warnings: dict[str, list[str]] = field(default_factory=dict)  #: per run
-    inputs: list[Path] = field(default_factory=list)  #: the files the outputs were made from
+    #: the files the outputs were made from (and those that must stay absent)
+    inputs: list[Path] = field(default_factory=list)
 
     @property
     def implausible(self) -> list[str]:
@@ -217,6 +219,8 @@ def _plan(sheet: RunSheet, run: RunDef, output: Path, hashes: HashCache, hash_no
            if run.sprocket else {}),
         "campaign": sheet.campaign.model_dump(mode="json", include=RUN_CAMPAIGN_FIELDS),
         "code": code_fingerprint(),
+        # the files the test may go on in (read when their time runs on from the raw file's)
+        "parts": {part.name: hashes.sha256(part) for part in numbered_after(raw)},
     }
     raw_sha256 = hashes.sha256(raw) if hash_now else hashes.cached(raw)
     return _Plan(run, raw, E0, inputs, raw.stat().st_size, raw_sha256)
@@ -806,11 +810,22 @@ def process_campaign(
 
 def _input_files(sheet: RunSheet, output: Path) -> list[Path]:
     """The files a campaign's outputs are computed from, besides its run sheet: the raw
-    files there are, and the summaries of the campaigns a stiffness is taken from."""
-    files = [sheet.run_file(run) for run in sheet.runs]
+    files there are, the parts a raw file's test may go on in (:func:`numbered_after`),
+    the name each one's next part would have (absent: a re-run is no longer one with
+    nothing changed once it appears), and the summaries of the campaigns a stiffness is
+    taken from."""
+    raws = [sheet.run_file(run) for run in sheet.runs]
+    files = [file for raw in raws for file in (raw, *numbered_after(raw))]
     files += [output.parent / run.stiffness_from.partition("/")[0] / layout.SUMMARY
               for run in sheet.runs if run.stiffness_from]
-    return sorted({path for path in files if path.is_file()})
+    existing = sorted({path for path in files if path.is_file()})
+    return existing + sorted({_next_part(raw) for raw in raws} - set(existing))
+
+
+def _next_part(raw: Path) -> Path:
+    """The name the next part of `raw`'s test would have (see :func:`numbered_after`)."""
+    count = sum(1 for _ in numbered_after(raw))
+    return raw.with_name(f"{raw.stem}{count + 1}{raw.suffix}")
 
 
 def check_campaign(path: str | Path, output: str | Path | None = None,

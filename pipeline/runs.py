@@ -131,6 +131,13 @@ def _attrs(sheet: RunSheet, run: RunDef, title: str, raw_sha256: str) -> dict[st
     return attrs
 
 
+def _read_attrs(metadata: TableMetadata) -> dict[str, str]:
+    """What the reader found that a result keeps: the layout, and the parts of a test
+    written in several files (``raw_parts``, their names after the raw file's)."""
+    parts = {"raw_parts": ", ".join(metadata.continued_in)} if metadata.continued_in else {}
+    return {"layout": metadata.layout, **parts}
+
+
 @dataclass(frozen=True)
 class TensileAnalysis:
     """Everything one tensile run gives, before it is stored."""
@@ -183,7 +190,7 @@ def process_tensile_run(
     analysis = analyse_tensile_run(sheet, run, progress)
     attrs = _attrs(sheet, run, f"Tensile test {run.id} of campaign {sheet.campaign.id}",
                    raw_sha256)
-    attrs.update(specimen=run.specimen or "", layout=analysis.metadata.layout,
+    attrs.update(specimen=run.specimen or "", **_read_attrs(analysis.metadata),
                  **analysis.settings)
     return TensileResult.of(analysis.conditioned, analysis.fits, analysis.specimen,
                             analysis.strength, attrs, analysis.metadata.warnings)
@@ -465,7 +472,7 @@ def process_wear_run(sheet: RunSheet, run: RunDef, raw_sha256: str,
     notes += _load_notes(run, table)
     attrs = _attrs(sheet, run, f"Wear test {run.id} of campaign {sheet.campaign.id}",
                    raw_sha256)
-    attrs.update(layout=metadata.layout, abscissa=log.abscissa, reference=log.reference,
+    attrs.update(**_read_attrs(metadata), abscissa=log.abscissa, reference=log.reference,
                  channel=channel or ("length" if "length" in table else "elongation"),
                  section_pitches=run.section_pitches, pitch=log.pitch,
                  sprocket_teeth=run.sprocket_teeth,
@@ -561,6 +568,6 @@ def process_segment_load_run(sheet: RunSheet, run: RunDef, raw_sha256: str,
                               eps_n=geometry["eps_n"])
     attrs = _attrs(sheet, run, f"Segment-load run {run.id} of campaign {sheet.campaign.id}",
                    raw_sha256)
-    attrs.update(drum=run.drum, fitted=sheet.drums[run.drum].fitted, layout=metadata.layout)
+    attrs.update(drum=run.drum, fitted=sheet.drums[run.drum].fitted, **_read_attrs(metadata))
     return SegmentLoadResult.of(events, declared, geometry, attrs, metadata.warnings,
                                 log_excerpt(table, events.events))

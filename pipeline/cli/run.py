@@ -204,7 +204,8 @@ def _chain_table(summary) -> Table:
             escape(str(chain)), str(int(row["n_specimens"])), _fmt(float(row["E0_exp"]), 1e3, 5),
             interval, _fmt(float(row["E0_theory"]), 1e3, 5),
             _fmt(100 * float(row["discrepancy"]), 1, 3),
-            {1: "yes", 0: "NO", -1: "-"}[int(row["in_band"])],
+            # -1 when computed, NaN (its fill value) when read back: not checked
+            {1.0: "yes", 0.0: "NO"}.get(float(row["in_band"]), "-"),
         )
     return table
 

@@ -147,12 +147,15 @@ def read_table(
         For an unknown `kind` or `format`.
     """
     check_options(kind, format)
-    with opened(Path(path)) as source:
-        table, metadata = _table(source, kind, columns, units, format, sheet, specimen, strict)
-    continuation.note_parts(Path(path), metadata, lambda: continuation.last_time_of(table),
-                            {"kind": kind, "columns": columns, "units": units, "format": format,
-                             "sheet": sheet, "specimen": specimen})
-    return table, metadata
+
+    def read(path: Path) -> tuple[pd.DataFrame, TableMetadata]:
+        with opened(path) as source:
+            return _table(source, kind, columns, units, format, sheet, specimen, strict)
+
+    table, metadata = read(Path(path))
+    reading = {"kind": kind, "columns": columns, "units": units, "format": format,
+               "sheet": sheet, "specimen": specimen}
+    return continuation.join_parts(Path(path), table, metadata, reading, read), metadata
 
 
 def parse_table(

@@ -3,8 +3,10 @@
 Some machines split a long test's export over several files: MTS TestSuite
 writes ``DAQ- Crosshead, … - (Timed).txt``, then ``… (Timed)1.txt``,
 ``… (Timed)2.txt``, each with the same header, the time running on from one
-file to the next. A run reads one file, so a reader that met only the first
-part would give, without a word, a test that stops where the file stops.
+file to the next. A reader that met only the first part would give, without a
+word, a test that stops where the file stops: :func:`join_parts` reads the
+parts after the file (``read_table``), :func:`note_unread_parts` names them
+with a warning where only the file is read (``open_log``, by row ranges).
 
 A file counts as going on in a sibling named as it is with a number after its
 stem (``1``, then ``2``...) when the sibling has the same columns and its time
@@ -15,6 +17,7 @@ their time again, and do not count.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable, Iterator, Mapping
 from pathlib import Path
@@ -26,7 +29,7 @@ from pipeline.errors import IngestError
 from pipeline.ingest import canonical
 from pipeline.ingest.formats import TEXT_LAYOUTS, read_raw, sniff
 from pipeline.ingest.source import BufferSource
-from pipeline.ingest.table import TableMetadata
+from pipeline.ingest.table import GAP_FACTOR, TableMetadata
 
 #: Bytes of a sibling read to find its columns and its first time (a header and some rows).
 HEAD_BYTES = 1 << 16
@@ -49,16 +52,16 @@ def head_of(path: Path) -> bytes:
     return head[:head.rfind(b"\n") + 1]
 
 
-def note_parts(path: Path, metadata: TableMetadata, last_time: Callable[[], float],
-               reading: Mapping) -> None:
-    """Name in `metadata` the files the test of `path` goes on in, with a warning.
+def find_parts(path: Path, metadata: TableMetadata, last_time: Callable[[], float],
+               reading: Mapping) -> list[tuple[Path, float]]:
+    """The files the test of `path` goes on in, in order, with their first times [s].
 
     Parameters
     ----------
     path : Path
         The file read.
     metadata : TableMetadata
-        Its metadata: ``continued_in`` and ``warnings`` are added to.
+        Its metadata.
     last_time : callable
         Its last time [s] (NaN: no time, and no part is looked for), asked only
         when a numbered sibling exists.
@@ -67,14 +70,70 @@ def note_parts(path: Path, metadata: TableMetadata, last_time: Callable[[], floa
         ``specimen``, as given to :func:`~pipeline.ingest.read_table`.
     """
     if metadata.layout not in TEXT_LAYOUTS or next(numbered_after(path), None) is None:
-        return
+        return []
     names = [column.name for column in metadata.columns]
-    last = last_time()
-    parts = parts_after(path, names, last, lambda sibling: first_of(sibling, reading))
+    return parts_after(path, names, last_time(), lambda sibling: first_of(sibling, reading))
+
+
+def note_unread_parts(path: Path, metadata: TableMetadata, last_time: Callable[[], float],
+                      reading: Mapping) -> None:
+    """Name in `metadata` the parts of the test of `path` (:func:`find_parts`), which are
+    not read, with a warning saying so."""
+    last_time = functools.cache(last_time)
+    parts = find_parts(path, metadata, last_time, reading)
     if parts:
         metadata.continued_in = [part.name for part, _ in parts]
-        metadata.warnings.append(parts_warning([part for part, _ in parts], last,
-                                               parts[0][1]))
+        listed = ", ".join(f"'{part.name}'" for part, _ in parts)
+        metadata.warnings.append(
+            f"the test goes on in {listed}: {_runs_on(last_time(), parts[0][1])}; only this "
+            "file is read, so the rest of the test is not in this run (join the parts in "
+            "order into one file, with one names row, and name that file in the run sheet)")
+
+
+def join_parts(path: Path, table: pd.DataFrame, metadata: TableMetadata, reading: Mapping,
+               read: Callable[[Path], tuple[pd.DataFrame, TableMetadata]]) -> pd.DataFrame:
+    """`table` with the tables of the parts the test of `path` goes on in, read by `read`.
+
+    A part is joined when it has the columns (names, roles, units) of `path`
+    and its time starts after the last time before it; the first that does
+    not ends the test, with a warning. `metadata` gets the parts joined
+    (``continued_in``), their rows, warnings (each naming its part), time
+    steps back and gaps (also a gap between two files), and a note.
+    """
+    parts = find_parts(path, metadata, lambda: last_time_of(table), reading)
+    tables, times = [table], _finite_times(table)
+    step = float(np.median(np.diff(times))) if times.size > 1 else math.nan
+    for part, _ in parts:
+        part_table, part_metadata = read(part)
+        first, last = _finite_times(part_table), last_time_of(tables[-1])
+        if part_metadata.columns != metadata.columns or not (first.size and first[0] > last):
+            metadata.warnings.append(
+                f"'{part.name}' is not read as a further part of the test: its columns or "
+                "its time do not run on from the file before")
+            break
+        if first[0] - last > GAP_FACTOR * step:
+            metadata.time_gaps += 1
+            metadata.warnings.append(f"time: a gap of {first[0] - last:g} s before the part "
+                                     f"'{part.name}'")
+        tables.append(part_table)
+        metadata.continued_in.append(part.name)
+        metadata.rows += part_metadata.rows
+        metadata.time_gaps += part_metadata.time_gaps
+        if part_metadata.time_monotonic is False:
+            metadata.time_monotonic = False
+        metadata.warnings += [f"in '{part.name}': {warning}"
+                              for warning in part_metadata.warnings]
+    if len(tables) == 1:
+        return table
+    listed = ", ".join(f"'{name}'" for name in metadata.continued_in)
+    metadata.warnings.insert(0, f"read with the parts the test goes on in, {listed}: "
+                                f"{_runs_on(last_time_of(table), parts[0][1])}")
+    return pd.concat(tables, ignore_index=True)
+
+
+def _runs_on(last: float, next_first: float) -> str:
+    return (f"the time runs on from this file's last ({last:g} s) to {next_first:g} s in the "
+            "next, as a machine writes a long test in parts")
 
 
 def first_of(path: Path, reading: Mapping) -> tuple[list[str], float] | None:
@@ -135,13 +194,3 @@ def parts_after(path: Path, names: list[str], last_time: float,
         parts.append((sibling, found[1]))
         last_time = found[1]
     return parts
-
-
-def parts_warning(parts: list[Path], last_time: float, next_time: float) -> str:
-    """The warning that the test goes on in `parts` and only the file read is read."""
-    listed = ", ".join(f"'{part.name}'" for part in parts)
-    return (f"the test goes on in {listed}: the time runs on from this file's last "
-            f"({last_time:g} s) to {next_time:g} s there, as a machine writes a long test in "
-            f"parts; only this file is read, so the rest of the test is not in this run "
-            f"(join the parts in order into one file, with one names row, and name that "
-            f"file in the run sheet)")

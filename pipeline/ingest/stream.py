@@ -341,9 +341,10 @@ def open_log(
     meta.rows = rows.rows
     meta.columns = list(conversion.infos)
     reader = LogReader(str(path), rows.rows, meta, conversion, rows, stamp)
-    continuation.note_parts(path, meta, reader.last_time,
-                            {"kind": kind, "columns": columns, "units": units,
-                             "format": format, "sheet": sheet, "specimen": specimen})
+    continuation.note_unread_parts(path, meta, reader.last_time,
+                                     {"kind": kind, "columns": columns, "units": units,
+                                      "format": format, "sheet": sheet,
+                                      "specimen": specimen})
     return reader
 
 

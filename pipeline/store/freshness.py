@@ -43,6 +43,14 @@ def identity(path: Path) -> list[int]:
     return [stat.st_size, stat.st_mtime_ns, stat.st_ino]
 
 
+def _identity_if_any(path: Path) -> list[int] | None:
+    """:func:`identity` of a file, None when there is none."""
+    try:
+        return identity(path)
+    except FileNotFoundError:
+        return None
+
+
 def sha256_file(path: Path) -> str:
     """SHA-256 hex digest of a file's bytes, read in blocks of 1 MiB."""
     digest = hashlib.sha256()
@@ -174,8 +182,8 @@ class Rerun:
     output: Path
 
 
-def _identities(paths: Iterable[Path]) -> dict[str, list[int]]:
-    return {str(Path(path).resolve()): identity(path) for path in paths}
+def _identities(paths: Iterable[Path]) -> dict[str, list[int] | None]:
+    return {str(Path(path).resolve()): _identity_if_any(path) for path in paths}
 
 
 def write_rerun(output: Path, sheet_file: Path, inputs: Iterable[Path], text: str,
@@ -190,7 +198,8 @@ def write_rerun(output: Path, sheet_file: Path, inputs: Iterable[Path], text: st
         The run sheet.
     inputs : iterable of Path
         Every file the outputs were computed from besides the run sheet (raw
-        files, summaries of other campaigns).
+        files, summaries of other campaigns), and those that must stay absent
+        (recorded as such).
     text : str
         The console output of a run that found nothing to do.
     document : dict
@@ -217,9 +226,10 @@ def forget_rerun(output: Path) -> None:
 
 
 def _unchanged(recorded: dict) -> bool:
-    """Whether every file of `recorded` (path -> identity) still has that identity."""
+    """Whether every file of `recorded` (path -> identity, None: absent) still has that
+    identity."""
     try:
-        return all(identity(Path(path)) == value for path, value in recorded.items())
+        return all(_identity_if_any(Path(path)) == value for path, value in recorded.items())
     except OSError:
         return False
 

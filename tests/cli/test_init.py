@@ -434,7 +434,7 @@ def test_a_length_column_repeating_the_crosshead_is_drafted_as_the_crosshead(tmp
 
 def test_the_parts_a_test_goes_on_in_are_skipped_as_such(tmp_path):
     # MTS TestSuite writes a long test in parts, the time running on: one run, for the
-    # first part, which warns that the test goes on; the other parts are no runs
+    # first part, which reads the others; they are no runs of their own
     header = "Crosshead \tLoad \tTime \nmm\tN\tsec\n"
     for number, start in (("", 0), ("1", 60), ("2", 120)):
         (tmp_path / f"DAQ - (Timed){number}.txt").write_text(header + "".join(
@@ -449,4 +449,7 @@ def test_the_parts_a_test_goes_on_in_are_skipped_as_such(tmp_path):
     assert all(item["reason"].startswith("the rest of the test of DAQ - (Timed).txt")
                for item in document["skipped"])
     text = (tmp_path / "campaign.toml").read_text(encoding="utf-8")
-    assert "# reader: the test goes on in 'DAQ - (Timed)1.txt', 'DAQ - (Timed)2.txt'" in text
+    assert ("# reader: read with the parts the test goes on in, 'DAQ - (Timed)1.txt', "
+            "'DAQ - (Timed)2.txt'") in text
+    assert "# detected: layout machine_export, encoding utf-8, delimiter tab, decimal " \
+        '".", 180 rows' in text

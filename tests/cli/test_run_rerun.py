@@ -114,3 +114,41 @@ def test_the_console_script_runs_every_command(project):
     done = subprocess.run([*CHAINBENCH, "run", "--help"], capture_output=True, text=True,
                           cwd=project)
     assert done.returncode == 0 and "--rehash" in done.stdout
+
+
+def test_a_part_the_test_goes_on_in_appearing_is_computed_not_served(project):
+    """A file named as a raw file with a number after its stem, whose time runs on from
+    the raw file's (a test written in parts), is read with it: its appearing is a change."""
+    raw = project / "raw" / "t5" / "T18-1.csv"
+    header, *rows = raw.read_text(encoding="utf-8").splitlines()
+    last = float(rows[-1].split(",")[0])
+    later = [f"{last + 0.1 * (i + 1):.1f},{row.split(',', 1)[1]}" for i, row in
+             enumerate(rows[-20:])]
+    (raw.parent / "T18-11.csv").write_text("\n".join([header, *later]) + "\n",
+                                           encoding="utf-8")
+    again = run()
+    assert again.exit_code == 0, again.output
+    assert UNCHANGED not in again.output
+    assert "1 run(s) processed, 2 unchanged, 0 failed" in again.output
+    assert "T18-1: read with the parts the test goes on in, 'T18-11.csv'" in again.output
+
+
+def test_a_chain_without_specimens_prints_when_its_outputs_are_read_back(simulated,
+                                                                         tmp_path,
+                                                                         monkeypatch):
+    """Its 'in band' is stored as the fill value: read back, it is shown as not checked."""
+    source = simulated("tensile", "--specimens", "1", "--seed", "5", "--campaign", "t1")
+    campaign = shutil.copytree(source, tmp_path / "raw" / "t1")
+    raw = campaign / "T18-1.csv"
+    header, rest = raw.read_text(encoding="utf-8").split("\n", 1)
+    # gauges in mm headed m: E0 a thousandth of the theory, the specimen left out
+    raw.write_text(header.replace("[mm]", "[m]") + "\n" + rest, encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    first = run()
+    assert "implausible T18-1" in first.output
+    os.utime(raw)  # touched: the full path, whose runs and outputs are current
+    again = run()
+    assert again.exception is None or isinstance(again.exception, SystemExit), again.output
+    assert again.exit_code == first.exit_code
+    chain_row = next(line for line in again.output.splitlines() if "│ c18x64 " in line)
+    assert chain_row.split("│")[1:-1][-1].strip() == "-"

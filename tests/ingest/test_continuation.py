@@ -1,7 +1,6 @@
 """A test written in parts: the files a test goes on in are named, with a warning."""
 
 import numpy as np
-import pytest
 
 from pipeline.ingest import open_log, read_table
 from pipeline.ingest.continuation import HEAD_BYTES
@@ -26,17 +25,54 @@ def write_parts(write, starts: list[float], rows: int = 40, step: float = 0.1) -
                                      strict=True)]
 
 
-@pytest.mark.parametrize("reader", [read_table, open_log])
-def test_the_parts_a_test_goes_on_in_are_named_with_a_warning(write, reader):
+def test_a_test_written_in_parts_is_read_whole(write):
     first, *rest = write_parts(write, [0.1, 4.2, 8.3])
-    metadata = (open_log(first, kind="tensile").metadata if reader is open_log
-                else read_table(first)[1])
+    table, metadata = read_table(first)
+    times = np.concatenate([start + 0.1 * np.arange(40) for start in (0.1, 4.2, 8.3)])
+    np.testing.assert_allclose(table["time"], times)
+    np.testing.assert_allclose(table["force"], 0.01 * times)  # each part's own rows, in N
+    assert metadata.rows == 120 and metadata.time_monotonic and metadata.time_gaps == 0
     assert metadata.continued_in == [path.name for path in rest]
-    said = [w for w in metadata.warnings if w.startswith("the test goes on in")]
-    assert len(said) == 1
     # the first file's last time (0.1 + 39 x 0.1 s) and the next part's first
-    assert "this file's last (4 s) to 4.2 s there" in said[0]
-    assert f"'{rest[0].name}', '{rest[1].name}'" in said[0]
+    assert metadata.warnings[0] == (
+        f"read with the parts the test goes on in, '{rest[0].name}', '{rest[1].name}': the "
+        "time runs on from this file's last (4 s) to 4.2 s in the next, as a machine writes "
+        "a long test in parts")
+
+
+def test_a_long_log_opened_by_row_ranges_says_its_parts_are_not_read(write):
+    first, *rest = write_parts(write, [0.1, 4.2, 8.3])
+    reader = open_log(first, kind="tensile")
+    assert reader.n_rows == 40
+    assert reader.metadata.continued_in == [path.name for path in rest]
+    said = [w for w in reader.metadata.warnings if w.startswith("the test goes on in")]
+    assert len(said) == 1 and "only this file is read" in said[0]
+
+
+def test_a_pause_between_two_parts_is_a_time_gap(write):
+    first, second = write_parts(write, [0.1, 60.0])
+    table, metadata = read_table(first)
+    assert len(table) == 80 and metadata.time_gaps == 1
+    assert f"time: a gap of 56 s before the part '{second.name}'" in metadata.warnings
+
+
+def test_the_warnings_of_a_part_name_it(write):
+    first, second = write_parts(write, [0.1, 4.2])
+    rows = second.read_text(encoding="utf-8").splitlines(keepends=True)
+    rows[10] = rows[10].replace(rows[10].split("\t")[1], "-1000000")  # a sentinel
+    second.write_text("".join(rows), encoding="utf-8", newline="")
+    metadata = read_table(first)[1]
+    assert any(warning.startswith(f"in '{second.name}': ") and "sentinel" in warning
+               for warning in metadata.warnings)
+
+
+def test_a_part_in_other_units_ends_the_test_with_a_warning(write):
+    first, second, third = write_parts(write, [0.1, 4.2, 8.3])
+    third.write_bytes(third.read_bytes().replace(b"mm\tN\tsec", b"mm\tkN\tsec"))
+    table, metadata = read_table(first)
+    assert len(table) == 80 and metadata.continued_in == [second.name]
+    assert (f"'{third.name}' is not read as a further part of the test: its columns or its "
+            "time do not run on from the file before") in metadata.warnings
 
 
 def test_the_last_part_goes_on_in_none(write):
@@ -59,7 +95,8 @@ def test_specimens_one_to_a_file_are_no_parts(write):
 def test_a_file_of_other_columns_is_no_part(write):
     first, _ = write_parts(write, [0.1, 4.2])
     write(f"{BASE}1.txt", part("1", 4.2 + 0.1 * np.arange(40), "Crosshead \tLoad \tTime 2"))
-    assert read_table(first)[1].continued_in == []
+    table, metadata = read_table(first)
+    assert metadata.continued_in == [] and len(table) == 40
 
 
 def test_the_parts_stop_at_the_first_missing_number(write):
