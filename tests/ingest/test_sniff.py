@@ -11,6 +11,7 @@ from pipeline.ingest.sniff import (
     find_table,
     is_number,
     read_head,
+    row_kind,
 )
 from pipeline.ingest.source import BufferSource
 
@@ -155,3 +156,15 @@ def test_a_table_below_a_preamble_of_any_length_is_found(tmp_path, preamble):
     assert (spec.header_index, spec.units_index, spec.data_index) == (
         preamble, preamble + 1, preamble + 2)
     assert len(spec.preamble) == preamble
+
+
+@pytest.mark.parametrize(("line", "kind"), [
+    ("1,0.0,gf,0.000,mm,OK,--,10:30:52 AM", "numeric"),  # a unit after each value
+    ("1,0.0,0.000,OK,--,10:30:52 AM", "numeric"),
+    ("1,0.0,xx,0.000,yy,OK,--,10:30:52 AM", "partial"),  # words, not units
+    (",Sec,mm,N,,-0.081,-5.86", "partial"),  # a units row with numbers typed beside it
+    ("Points,51,mm", "partial"),  # a setting: its unit does not make it data
+    ("gf,0.0,mm,0.000,OK", "partial"),  # a unit before the first value is text
+])
+def test_a_unit_right_after_a_number_counts_for_neither(line, kind):
+    assert row_kind(line.split(","), line, ".") == kind
