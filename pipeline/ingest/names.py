@@ -99,10 +99,19 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "length": ("lunghezza",),
         "speed": ("velocità",),
     },
+    "nl": {
+        "time": ("tijd", "testtijd"),
+        "force": ("kracht", "belasting"),
+        "gauge": ("verplaatsing", "rek", "verlenging", "extensometer", "traverse",
+                  "traversepositie", "zuiger"),
+        "cycle_count": ("cyclus", "cycli", "aantal cycli"),
+        "length": ("lengte",),
+        "speed": ("snelheid",),
+    },
     "tr": {
         "time": ("zaman", "süre"),
         "force": ("kuvvet", "yük"),
-        "gauge": ("uzama", "deplasman", "ekstansometre"),
+        "gauge": ("uzama", "deplasman", "ekstansometre", "gerinim"),
         "cycle_count": ("çevrim", "çevrim sayısı"),
     },
     "ru": {
@@ -114,8 +123,8 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "length": ("длина",),
         "speed": ("скорость",),
     },
-    # Chinese and Japanese names are whole words: "压缩应力" (compressive stress) is not
-    # "力" (force)
+    # Chinese, Japanese and Korean names are whole words: "压缩应力" (compressive stress)
+    # is not "力" (force)
     "zh": {
         "time": ("时间", "试验时间"),
         "force": ("载荷", "负荷", "力", "试验力"),
@@ -125,8 +134,14 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
     "ja": {
         "time": ("時間", "経過時間", "試験時間", "時刻", "日時", "測定日時"),
         "force": ("試験力", "荷重"),
-        "gauge": ("変位", "伸び", "ストローク", "伸び計", "クロスヘッド変位"),
+        "gauge": ("変位", "伸び", "ストローク", "伸び計", "クロスヘッド変位", "ひずみ", "歪み"),
         "cycle_count": ("サイクル数", "繰返し数"),
+    },
+    "ko": {
+        "time": ("시간", "시험 시간"),
+        "force": ("하중", "시험력"),
+        "gauge": ("변위", "변형률", "신율", "신장계", "크로스헤드", "스트로크"),
+        "cycle_count": ("사이클", "사이클 수"),
     },
 }
 
@@ -144,13 +159,14 @@ GAUGE_KINDS: dict[str, tuple[str, ...]] = {
         "actuador", "pistón", "carrera", "course", "vérin", "travessa", "atuador", "pistão",
         "traversa", "corsa", "attuatore", "pistone", "траверса", "перемещение траверсы",
         "ход поршня", "横梁位移", "横梁", "行程", "ストローク", "クロスヘッド変位",
+        "traversepositie", "zuiger", "크로스헤드", "스트로크",
     ),
     "extensometer": (
         "extensometer", "ext", "clip gauge", "strain", "ave", "dehnung", "feindehnung",
         "ansetzdehnungsaufnehmer", "maytec", "ekstensometr", "odkształcenie", "extensómetro",
         "deformación", "dial", "czujnik", "extensomètre", "déformation", "déform",
         "extensômetro", "estensometro", "deformazione", "ekstansometre", "экстензометр",
-        "引伸计", "应变", "伸び計",
+        "引伸计", "应变", "伸び計", "rek", "gerinim", "ひずみ", "歪み", "변형률", "신장계",
     ),
 }
 

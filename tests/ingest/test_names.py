@@ -58,6 +58,9 @@ from pipeline.ingest.names import (
         ("Нагрузка", "force"), ("Деформация", "gauge"),
         # an Arduino load-cell logger, Campbell Scientific's TOA5
         ("Timestamp", "time"), ("TIMESTAMP", "time"), ("Time stamp", "time"),
+        # Dutch and Korean
+        ("Tijd", "time"), ("Belasting", "force"), ("Kracht", "force"), ("Rek", "gauge"),
+        ("시간", "time"), ("하중", "force"), ("변위", "gauge"), ("변형률", "gauge"),
     ],
 )
 def test_match_role(name, role):
@@ -170,6 +173,11 @@ def test_what_a_french_displacement_channel_measures(name, kind):
     ("Standard extensometer", "extensometer"),
     # a Polish Zwick testXpert header: the standard travel; an Italian strain
     ("Droga standardowa", "crosshead"), ("Deformazione", "extensometer"),
+    # a strain, as Bluehill's "Strain 1", in Dutch, Turkish, Japanese and Korean (the
+    # Portuguese and Russian words name a displacement too)
+    ("Rek 1", "extensometer"), ("Gerinim 1", "extensometer"), ("ひずみ 1", "extensometer"),
+    ("변형률 1", "extensometer"), ("Deformação 1", "gauge"), ("Деформация 1", "gauge"),
+    ("Verplaatsing", "gauge"), ("변위", "gauge"), ("크로스헤드", "crosshead"),
 ])
 def test_what_a_displacement_channel_measures_in_more_languages(name, kind):
     assert gauge_kind(name) == kind
