@@ -238,16 +238,16 @@ def test_a_strain_without_unit_is_refused_with_a_hint_that_works(write):
 
 
 def test_a_strain_column_of_an_unknown_name_is_warned_of_not_passed_over_silently(write):
-    # a Bluehill export in Dutch: 'Rek 1' is the extensometer's strain; unread, the run
-    # takes its stiffness from the crosshead's 'Verlenging' without a word
-    text = "Tijd [s],Verlenging [mm],Belasting [kN],Rek 1 [%],RH [%]\n" + "".join(
+    # a Dutch export whose extensometer's strain is named by its channel, 'Kanaal 3';
+    # unread, the run takes its stiffness from the crosshead's 'Verlenging' without a word
+    text = "Tijd [s],Verlenging [mm],Belasting [kN],Kanaal 3 [%],RH [%]\n" + "".join(
         f"{i / 10},{i / 100},{i / 2},{i / 50},45\n" for i in range(20))
     table, meta = read_table(write("nl.csv", text))
     assert list(table.columns) == ["time", "force", "gauge_1"]
     assert meta.warnings == [
-        "column 'Rek 1' reads in '%', a strain's unit, but its name is not one the readers "
+        "column 'Kanaal 3' reads in '%', a strain's unit, but its name is not one the readers "
         "know: not used (if it is an extensometer's strain, name it in the run sheet, "
-        'columns = {gauges = ["Rek 1"]})']
+        'columns = {gauges = ["Kanaal 3"]})']
     table, meta = read_table(write("nl.csv", text),
-                             columns={"gauges": ["Verlenging", "Rek 1"]})
+                             columns={"gauges": ["Verlenging", "Kanaal 3"]})
     assert "strain_1" in table and meta.warnings == []
