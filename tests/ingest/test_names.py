@@ -61,6 +61,7 @@ from pipeline.ingest.names import (
         # Dutch and Korean
         ("Tijd", "time"), ("Belasting", "force"), ("Kracht", "force"), ("Rek", "gauge"),
         ("시간", "time"), ("하중", "force"), ("변위", "gauge"), ("변형률", "gauge"),
+        ("Положение", "gauge"), ("Вращение", "angle"), ("Крутящий момент", None),
     ],
 )
 def test_match_role(name, role):
@@ -178,6 +179,8 @@ def test_what_a_french_displacement_channel_measures(name, kind):
     ("Rek 1", "extensometer"), ("Gerinim 1", "extensometer"), ("ひずみ 1", "extensometer"),
     ("변형률 1", "extensometer"), ("Deformação 1", "gauge"), ("Деформация 1", "gauge"),
     ("Verplaatsing", "gauge"), ("변위", "gauge"), ("크로스헤드", "crosshead"),
+    # an Instron 8800's actuator in a Russian WaveMatrix export
+    ("Положение(8800 (0,1):Положение)", "crosshead"),
 ])
 def test_what_a_displacement_channel_measures_in_more_languages(name, kind):
     assert gauge_kind(name) == kind
