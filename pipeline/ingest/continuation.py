@@ -101,6 +101,8 @@ def join_parts(path: Path, table: pd.DataFrame, metadata: TableMetadata, reading
     steps back and gaps (also a gap between two files), and a note.
     """
     parts = find_parts(path, metadata, lambda: last_time_of(table), reading)
+    if not parts:
+        return table
     tables, times = [table], _finite_times(table)
     step = float(np.median(np.diff(times))) if times.size > 1 else math.nan
     for part, _ in parts:
