@@ -814,18 +814,15 @@ def _input_files(sheet: RunSheet, output: Path) -> list[Path]:
     the name each one's next part would have (absent: a re-run is no longer one with
     nothing changed once it appears), and the summaries of the campaigns a stiffness is
     taken from."""
-    raws = [sheet.run_file(run) for run in sheet.runs]
-    files = [file for raw in raws for file in (raw, *numbered_after(raw))]
+    files, absent = [], set()
+    for raw in (sheet.run_file(run) for run in sheet.runs):
+        parts = list(numbered_after(raw))
+        files += [raw, *parts]
+        absent.add(raw.with_name(f"{raw.stem}{len(parts) + 1}{raw.suffix}"))
     files += [output.parent / run.stiffness_from.partition("/")[0] / layout.SUMMARY
               for run in sheet.runs if run.stiffness_from]
     existing = sorted({path for path in files if path.is_file()})
-    return existing + sorted({_next_part(raw) for raw in raws} - set(existing))
-
-
-def _next_part(raw: Path) -> Path:
-    """The name the next part of `raw`'s test would have (see :func:`numbered_after`)."""
-    count = sum(1 for _ in numbered_after(raw))
-    return raw.with_name(f"{raw.stem}{count + 1}{raw.suffix}")
+    return existing + sorted(absent - set(existing))
 
 
 def check_campaign(path: str | Path, output: str | Path | None = None,

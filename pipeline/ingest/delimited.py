@@ -244,13 +244,15 @@ def _units_of_unit_columns(head: Head, spec: TableSpec, names: list[str],
     Only a column of text holding one unit in every row of the file's head, beside a
     column that has no unit of its own.
     """
+    unit_columns = [index for index in range(1, len(names))
+                    if fold(names[index]) in UNITS_ROW_KEYS and index in spec.texts
+                    and units[index - 1] is None]
+    if not unit_columns:  # the head's rows are split only for a file that has such columns
+        return units
     rows = [split_fields(line, spec.delimiter) for line in head.lines[spec.data_index:]
             if line.strip()]
     filled = list(units)
-    for index in range(1, len(names)):
-        if (fold(names[index]) not in UNITS_ROW_KEYS or index not in spec.texts
-                or filled[index - 1] is not None):
-            continue
+    for index in unit_columns:
         found = sorted({row[index].strip() for row in rows if len(row) > index})
         column, beside = display_name(names, index - 1), display_name(names, index)
         if len(found) == 1 and spellings(found[0]):
