@@ -220,5 +220,5 @@ def _table(
     strict: bool,
 ) -> tuple[pd.DataFrame, TableMetadata]:
     """The parse path of :func:`read_table` and :func:`parse_table`."""
-    raw = read_raw(source, sniff(source, format), columns, sheet)
+    raw = read_raw(source, sniff(source, format), columns, sheet, specimen)
     return canonical.build(raw, kind=kind, units=units, strict=strict, specimen=specimen)

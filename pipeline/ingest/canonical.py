@@ -31,7 +31,6 @@ row-range reader of :mod:`pipeline.ingest.stream`): the same values either way.
 
 from __future__ import annotations
 
-import json
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -43,7 +42,6 @@ from pipeline.errors import (
     ChainbenchError,
     ColumnError,
     LayoutError,
-    SpecimensError,
     UnitError,
 )
 from pipeline.ingest.decimalshift import decimal_shifts, step_blocks
@@ -57,6 +55,7 @@ from pipeline.ingest.names import (
 )
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import SHEET_KEY, display_name, role_of_key
+from pipeline.ingest.specimens import choose
 from pipeline.ingest.table import GAP_FACTOR, ROLES, ColumnInfo, TableMetadata
 from pipeline.ingest.unitparse import (
     FORCE_ROLES,
@@ -289,23 +288,13 @@ def _other_specimens(raw: RawColumns, specimen: str | int | None) -> set[int]:
     """The columns of the specimens other than `specimen` where the columns repeat one
     group of names side by side (:func:`~pipeline.ingest.names.repeats`); `specimen` is a
     label of :attr:`TableMetadata.specimens` or a place from 1. Records the one read in
-    the metadata."""
+    the metadata. A reader that chose the specimen itself (of specimens one below the
+    other) has recorded it already."""
     meta = raw.metadata
     count = repeats(raw.names)
-    labels = meta.specimens if len(meta.specimens) == count else []
-    if count == 1:
-        if specimen is not None:
-            raise LayoutError(
-                f"specimen_in_file = {json.dumps(specimen)}, but the file holds one specimen",
-                file=meta.file, row=meta.header_line,
-                hint="specimen_in_file is for a file whose columns repeat for several "
-                     "specimens side by side: leave it out")
+    if count == 1 and meta.specimen is not None:
         return set()
-    places = [str(place) for place in range(1, count + 1)]
-    shown = [*labels[:3], "...", labels[-1]] if len(labels) > 4 else labels
-    choices = (f"specimen_in_file = {json.dumps(labels[0] if labels else 1)}: "
-               + (f"the file's labels {', '.join(shown)}, or " if labels else "")
-               + f"the places 1 to {count} from the left")
+    labels = meta.specimens if len(meta.specimens) == count else []
     named = len(raw.names)
     while named and not raw.names[named - 1].strip():  # trailing unnamed columns: no group's
         named -= 1
@@ -313,18 +302,11 @@ def _other_specimens(raw: RawColumns, specimen: str | int | None) -> set[int]:
     group = raw.names[:size]
     said = (f"the columns {', '.join(name for name in group if name)} repeat {count} times "
             f"side by side: the file holds {count} specimens or tests")
-    if specimen is None:
-        raise SpecimensError(
-            said, specimens=labels or places, file=meta.file, row=meta.header_line,
-            hint=f"say which one a run reads in the run sheet ({choices}; one run per "
-                 "specimen may name the same file), or export each specimen to a file of "
-                 "its own")
-    chosen = labels.index(specimen) if specimen in labels else (
-        places.index(str(specimen)) if str(specimen) in places else None)
-    if chosen is None:
-        raise LayoutError(f"{said}, none of them {json.dumps(specimen)}",
-                          file=meta.file, row=meta.header_line, hint=f"name one: {choices}")
-    meta.specimen = labels[chosen] if labels else places[chosen]
+    chosen = choose(labels, count, specimen, said, "from the left", file=meta.file,
+                    row=meta.header_line)
+    if count == 1:
+        return set()
+    meta.specimen = labels[chosen] if labels else str(chosen + 1)
     return set(range(len(raw.names))) - set(range(chosen * size, (chosen + 1) * size))
 
 

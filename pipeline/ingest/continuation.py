@@ -144,7 +144,7 @@ def first_of(path: Path, reading: Mapping) -> tuple[list[str], float] | None:
     source = BufferSource(head_of(path), str(path))
     try:
         raw = read_raw(source, sniff(source, reading["format"]), reading["columns"],
-                       reading["sheet"])
+                       reading["sheet"], reading["specimen"])
         table, metadata = canonical.build(raw, kind=reading["kind"], units=reading["units"],
                                           strict=False, specimen=reading["specimen"])
     except IngestError:

@@ -23,6 +23,7 @@ from pipeline.ingest import (
     delimited,
     gwinstek,
     lvm,
+    merlin,
     mts,
     rigol,
     tdms,
@@ -33,12 +34,12 @@ from pipeline.ingest.raw import RawTable
 from pipeline.ingest.sniff import Head, TableSpec, detect_dialect, find_table, read_head
 from pipeline.ingest.source import Source
 
-#: Text layouts, in the order they are tried on a file (a LabVIEW measurement file, an HBM
-#: catman export and a Rigol, Tektronix or GW Instek oscilloscope's export are known by
-#: their first lines, before a table is looked for).
+#: Text layouts, in the order they are tried on a file (an Instron Merlin export, a LabVIEW
+#: measurement file, an HBM catman export and a Rigol, Tektronix or GW Instek oscilloscope's
+#: export are known by their first lines, before a table is looked for).
 TEXT_LAYOUTS = {lvm.LAYOUT: lvm, catman.LAYOUT: catman.TEXT, rigol.LAYOUT: rigol,
                 tektronix.LAYOUT: tektronix.TEXT, gwinstek.LAYOUT: gwinstek.TEXT,
-                mts.LAYOUT: mts,
+                merlin.LAYOUT: merlin, mts.LAYOUT: mts,
                 **{layout.name: layout for layout in delimited.LAYOUTS}}
 
 #: Values of ``format``: auto-detection, a file format, or one text layout.
@@ -100,6 +101,8 @@ def sniff(source: Source, format: str = "auto") -> Sniffed:
     if layout in (*xlsx.LAYOUTS, "tdms"):
         return Sniffed(layout)
     head = read_head(source)
+    if layout == merlin.LAYOUT or (layout == "csv" and merlin.matches(head)):
+        return Sniffed(merlin.LAYOUT, head)  # its table is found per specimen when read
     for known in (lvm, catman, rigol, tektronix, gwinstek):  # known by their first lines
         if layout == known.LAYOUT or (layout == "csv" and known.matches(head)):
             return Sniffed(known.LAYOUT, head, known.table_spec(head))
@@ -112,7 +115,8 @@ def sniff(source: Source, format: str = "auto") -> Sniffed:
 
 
 def read_raw(
-    source: Source, sniffed: Sniffed, columns: Mapping | None, sheet: str | int | None
+    source: Source, sniffed: Sniffed, columns: Mapping | None, sheet: str | int | None,
+    specimen: str | int | None = None,
 ) -> RawTable:
     """Read the whole of `source` with the reader `sniffed` chose.
 
@@ -126,9 +130,15 @@ def read_raw(
         Run-sheet ``columns``.
     sheet : str or int, optional
         Sheet of a workbook.
+    specimen : str or int, optional
+        Of the specimens one below the other in an Instron Merlin export, the one read
+        (its name or place from 1); the other layouts leave the choice of a specimen
+        to :func:`~pipeline.ingest.canonical.build`.
     """
     if sniffed.layout in xlsx.LAYOUTS:
         return xlsx.parse(source, sheet, columns, layout=sniffed.layout)
     if sniffed.layout == "tdms":
         return tdms.parse(source, columns)
+    if sniffed.layout == merlin.LAYOUT:
+        return merlin.read(sniffed.head, columns, specimen)
     return TEXT_LAYOUTS[sniffed.layout].read(sniffed.head, sniffed.spec, columns)

@@ -403,8 +403,9 @@ def _check_decodes(
         ) from error
 
 
-def read_head(source: Source) -> Head:
-    """Read and decode the head of a text file or buffer.
+def read_head(source: Source, size: int = HEAD_BYTES) -> Head:
+    """Read and decode the head of a text file or buffer: its first `size` bytes [bytes]
+    (the whole file when it is no longer).
 
     Raises
     ------
@@ -413,7 +414,7 @@ def read_head(source: Source) -> Head:
     EncodingError
         See :func:`detect_encoding`.
     """
-    raw = source.read(0, HEAD_BYTES)
+    raw = source.read(0, size)
     complete = len(raw) == source.size
     if not raw.strip():
         raise EmptyFileError(

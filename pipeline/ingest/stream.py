@@ -22,7 +22,7 @@ How each layout reads rows ``[start, stop)``:
 * a LabVIEW ``.lvm`` file with its X column and no row comment
   (:func:`~pipeline.ingest.lvm.by_rows`): as delimited text; any other is read
   whole per call and sliced;
-* MTS, workbooks and a Rigol oscilloscope's export (its time built from the
+* MTS, Instron Merlin, workbooks and a Rigol oscilloscope's export (its time built from the
   sample number): the whole file is read per call and sliced (those layouts
   hold small logs).
 
@@ -176,25 +176,29 @@ class _WholeRows:
     layout: str
     columns: Mapping | None
     sheet: str | int | None
+    specimen: str | int | None
 
     def read(self, source: Source, start: int, stop: int) -> tuple[RawTable, list[str]]:
-        raw = read_raw(source, sniff(source, self.layout), self.columns, self.sheet)
+        raw = read_raw(source, sniff(source, self.layout), self.columns, self.sheet,
+                       self.specimen)
         arrays = {index: array[start:stop] for index, array in raw.arrays.items()}
         return replace(raw, arrays=arrays, rows=stop - start, first_row=start,
                        line_of=lambda row: raw.line_of(start + row)), []
 
 
 def _whole_rows(
-    source: Source, sniffed: Sniffed, columns: Mapping | None, sheet: str | int | None
+    source: Source, sniffed: Sniffed, columns: Mapping | None, sheet: str | int | None,
+    specimen: str | int | None,
 ) -> _WholeRows:
     """Read a small log once, for its header, rows and empty columns."""
-    raw = read_raw(source, sniffed, columns, sheet)
+    raw = read_raw(source, sniffed, columns, sheet, specimen)
     return _WholeRows(raw.header(), raw.rows, raw.empty, sniffed.layout,
-                      None if columns is None else dict(columns), sheet)
+                      None if columns is None else dict(columns), sheet, specimen)
 
 
 def _rows_reader(
-    source: Source, sniffed: Sniffed, columns: Mapping | None, sheet: str | int | None
+    source: Source, sniffed: Sniffed, columns: Mapping | None, sheet: str | int | None,
+    specimen: str | int | None,
 ) -> _Rows:
     """The row reader of the layout `sniffed` chose."""
     if sniffed.layout == "tdms":
@@ -204,7 +208,7 @@ def _rows_reader(
         layout = lvm.TEXT
     if isinstance(layout, delimited.TextLayout):
         return _text_rows(source, layout, sniffed, columns)
-    return _whole_rows(source, sniffed, columns, sheet)
+    return _whole_rows(source, sniffed, columns, sheet, specimen)
 
 
 @dataclass(eq=False)
@@ -331,7 +335,7 @@ def open_log(
     check_options(kind, format)
     path = Path(path)
     with opened(path) as source:
-        rows = _rows_reader(source, sniff(source, format), columns, sheet)
+        rows = _rows_reader(source, sniff(source, format), columns, sheet, specimen)
         empty = rows.empty | _empty_candidates(source, rows)
         stamp = _stamp(source)
     meta = rows.header.metadata

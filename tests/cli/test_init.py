@@ -349,14 +349,28 @@ BATCH = ('"CuivreC1",,,"AcierC70",,\n"Temps","Force","Stroke","Temps","Force","S
                    f'"{0.1 * i:.1f}","{4.8 * i:.1f}","{0.01 * i:.2f}"\n' for i in range(30)))
 
 
-def test_specimens_side_by_side_are_drafted_one_run_each_that_validates(tmp_path):
-    (tmp_path / "batch.csv").write_text(BATCH)
+# an Instron Merlin sample: two specimens one below the other (about 18x64's E0 over 50 mm)
+MERLIN = ("BeginSample\n\tTestSpeed, 12.50,  \"mm/min\"\n" + "".join(
+    f'\tBeginSpecimen\n\t\tSpecimanName, "{name}",  ""\n\t\tBeginData\n'
+    '\t\t\t_Load, _Time, SlackExt\n\t\t\t"N", "s", "mm"\n'
+    + "".join(f"\t\t\t{slope * i:.1f}, {0.1 * i:.1f}, {0.01 * i:.2f}\n" for i in range(30))
+    + "\t\tEndData\n\tEndSpecimen\n" for name, slope in (("311-6", 4000.0), ("311-9", 4800.0)))
+    + "EndSample\n")
+
+
+@pytest.mark.parametrize(("name", "content", "drafted"), [
+    ("batch.csv", BATCH, [("batch-CuivreC1", "CuivreC1"), ("batch-AcierC70", "AcierC70")]),
+    ("sample.txt", MERLIN, [("sample-311-6", "311-6"), ("sample-311-9", "311-9")]),
+], ids=["side by side", "one below the other"])
+def test_specimens_of_one_file_are_drafted_one_run_each_that_validates(tmp_path, name,
+                                                                       content, drafted):
+    (tmp_path / name).write_text(content)
     result = init(str(tmp_path))
     assert result.exit_code == 0, result.output
     text = (tmp_path / "campaign.toml").read_text(encoding="utf-8")
     draft = tomllib.loads(text)
     assert [(run["id"], run["specimen_in_file"], run["specimen"]) for run in draft["runs"]] == [
-        ("batch-CuivreC1", "CuivreC1", "CuivreC1"), ("batch-AcierC70", "AcierC70", "AcierC70")]
+        (run, specimen, specimen) for run, specimen in drafted]
     text = text.replace("# gauge_length_mm = ...  # TODO: the length the gauges measure over",
                         "gauge_length_mm = 50")
     text = text.replace('# catalog = "..."', 'catalog = "18x64"')
