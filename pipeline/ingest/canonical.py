@@ -47,6 +47,7 @@ from pipeline.errors import (
 from pipeline.ingest.decimalshift import decimal_shifts, step_blocks
 from pipeline.ingest.names import (
     gauge_kind,
+    is_auxiliary,
     is_humidity,
     is_unmeasured,
     peak_partner,
@@ -445,7 +446,8 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
     without, :data:`_DISPENSABLE`, a warning, and no column takes it). Of several
     candidates matched by name, those whose unit in the file is not one of the role (a
     stress in MPa named after its load channel) are left out, with a warning, when some
-    others fit."""
+    others fit; so are those a second instrument recorded beside the machine's own
+    (:func:`_the_machines_own`)."""
     file = raw.metadata.file
     assigned: dict[str, list[int]] = {}
     for role, indexes in raw.candidates.roles.items():
@@ -457,6 +459,8 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
                 for index in misfits:
                     _warn_misfit(raw, index, role)
                 live = [index for index in live if index not in misfits]
+        if role in _SINGLE and len(live) > 1 and role not in raw.candidates.explicit:
+            live = _the_machines_own(raw, live, role)
         if role in raw.candidates.explicit and len(live) < len(indexes):
             dead = next(index for index in indexes if index in empty)
             problems.report(ColumnError(
@@ -484,6 +488,21 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
         if live:
             assigned[role] = live
     return assigned
+
+
+def _the_machines_own(raw: RawColumns, live: list[int], role: str) -> list[int]:
+    """Of the columns `live` that could take a `role` one column takes, those the testing
+    machine recorded, when a second instrument recorded the others
+    (:func:`~pipeline.ingest.names.is_auxiliary`); each column passed over is warned of."""
+    own = [index for index in live if not is_auxiliary(raw.names[index])]
+    if not own or len(own) == len(live):
+        return live
+    shown = ", ".join(repr(display_name(raw.names, index)) for index in own)
+    raw.metadata.warnings += [
+        f"column {display_name(raw.names, index)!r} is a second instrument's {role} beside the "
+        f"machine's ({shown}): not used (say otherwise in the run sheet, columns = "
+        f"{{{SHEET_KEY[role]} = \"...\"}})" for index in live if index not in own]
+    return own
 
 
 def _says_strain(name: str) -> bool:

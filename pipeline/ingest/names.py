@@ -215,6 +215,13 @@ QUALIFIER_WORDS = frozenset({"uncorrected", "corrected", "filtered", "unfiltered
                              "relative", "absolute", "smoothed", "averaged", "calculated",
                              "computed", "measured", "nominal", "gefiltert", "ungefiltert",
                              "korrigiert", "unkorrigiert", "roh"})
+#: First words of the name of a channel a second instrument recorded beside the testing
+#: machine's own: a video extensometer's or camera's clock (MTS TestSuite's ``Video
+#: Time`` beside the controller's ``Time``).
+AUXILIARY_WORDS = frozenset({"video", "camera", "dic"})
+#: The CCFatigue layout's columns of a "measuring device" (a camera, a logger) at its
+#: points: ``MD_Load--1``, ``MD_N_cycles--#`` beside ``Machine_Load``, ``Machine_N_cycles``.
+_MEASURING_DEVICE = re.compile(r"md_.*--", re.IGNORECASE)
 #: The label of :data:`TRANSVERSE_NAMES` among the role keywords: it wins as a role would.
 _TRANSVERSE = "transverse"
 
@@ -425,6 +432,18 @@ def is_unmeasured(name: str) -> bool:
     [True, True, True, False]
     """
     return is_transverse(name) or is_command(name) or is_derived(name) or is_clock_part(name)
+
+
+def is_auxiliary(name: str) -> bool:
+    """Whether a column name says a second instrument recorded it beside the testing
+    machine (:data:`AUXILIARY_WORDS` first, or the CCFatigue layout's ``MD_...--#``): of
+    several columns that could take one role, such a one gives way to the machine's.
+
+    >>> [is_auxiliary(name) for name in ("Video Time", "MD_Load--1", "Time", "Load MD")]
+    [True, True, False, False]
+    """
+    return (tokens(name)[:1] in {(word,) for word in AUXILIARY_WORDS}
+            or _MEASURING_DEVICE.match(name.strip()) is not None)
 
 
 def is_humidity(name: str) -> bool:

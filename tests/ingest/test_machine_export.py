@@ -294,6 +294,41 @@ def test_wavematrix_total_and_elapsed_counts_are_a_choice_in_either_language(wri
     np.testing.assert_array_equal(table["cycle_count"], 992 + np.arange(9) // 3)
 
 
+# a real MTS TestSuite export with a video extensometer: the camera's clock runs 8 s behind
+# the controller's and repeats itself where a frame is late
+VIDEO = ("Test Run: S_1\r\n\r\nCrosshead \tLoad \tTime \tStrain 1 \tVideo Time \r\n"
+         "mm\tN\tsec\tmm/mm\tsec\r\n"
+         + "".join(f"{0.083 * row:.4f}\t{5.0 * row:.3f}\t{0.1 * row:.3f}\t{1e-4 * row:.5f}\t"
+                   f"{8.1 + 0.1 * min(row, 4):.3f}\r\n" for row in range(1, 9)))
+# the CCFatigue layout with a camera ("measuring device") logged beside the machine
+CCFATIGUE = ("Machine_N_cycles,Machine_Displacement,Machine_Load,MD_index--#,exx--#,"
+             "MD_N_cycles--#,MD_Load--#\n"
+             + "".join(f"{1 + row // 3},{0.38 + 0.001 * row:.3f},{0.98 + 0.01 * row:.2f},{row},"
+                       f"{1e-5 * row:.5f},{200 * (row // 3)},{0.003 * (row % 2):.3f}\n"
+                       for row in range(9)))
+
+
+@pytest.mark.parametrize("kind", ["tensile", "engagement"])
+def test_a_second_instruments_clock_gives_way_to_the_machines(write, kind):
+    table, meta = read_table(write("DAQ- Time (Timed).txt", VIDEO), kind=kind)
+    np.testing.assert_allclose(table["time"], 0.1 * np.arange(1, 9))
+    assert ("column 'Video Time' is a second instrument's time beside the machine's "
+            "('Time'): not used") in meta.warnings[0]
+    table, _ = read_table(write("DAQ- Time (Timed).txt", VIDEO), kind=kind,
+                          columns={"time": "Video Time"})
+    assert table["time"].iloc[-1] == pytest.approx(8.5)
+
+
+def test_a_measuring_devices_load_and_count_give_way_to_the_machines(write):
+    table, meta = read_table(write("TST_2021-10_FA_002.csv", CCFATIGUE), kind="wear",
+                             units={"force": "kN", "gauges": "mm"})
+    np.testing.assert_allclose(table["force"], 1e3 * (0.98 + 0.01 * np.arange(9)))
+    np.testing.assert_array_equal(table["cycle_count"], 1 + np.arange(9) // 3)
+    assert [warning.split(" is ")[0] for warning in meta.warnings
+            if "second instrument" in warning] == ["column 'MD_N_cycles--#'",
+                                                  "column 'MD_Load--#'"]
+
+
 # the names of a real Instron WaveMatrix tracking export: derived channels are named
 # after the channel they come from ("Stress(...:Load)") or a count ("Cycle Energy")
 TRACKING = ('"Total Time (s)","Total Cycles","Load(8801:Load) (kN)","Stress(8801:Load) (MPa)",'
