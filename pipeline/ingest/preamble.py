@@ -20,6 +20,8 @@ _KEY_COLON = re.compile(r"(?<!\d):|(?<=\d):(?!\d)")
 _DRIVE = re.compile(r"[A-Za-z]:[\\/]")
 #: Comment marks some loggers set before each settings line (Scopy: ``;Device,M2K``).
 _COMMENT_MARKS = ";#"
+#: A unit in brackets, as a units row writes it (``(mm)``, ``[N]``, ``(%)``).
+_BRACKETED_UNIT = re.compile(r"[(\[][^()\[\]]{1,12}[)\]]")
 
 
 def parse_preamble(lines: list[str], delimiter: str) -> dict[str, str]:
@@ -35,10 +37,10 @@ def parse_preamble(lines: list[str], delimiter: str) -> dict[str, str]:
     pairs: list[tuple[str, str]] = []
     index = 0
     while index < len(lines):
-        paired = _names_over_values(lines[index: index + 2], delimiter)
+        paired, used = _names_over_values(lines[index: index + 3], delimiter)
         if paired:
             pairs += paired
-            index += 2
+            index += used
             continue
         pairs.append(_key_and_value(lines[index], delimiter))
         index += 1
@@ -97,28 +99,46 @@ def _without_comment_mark(key: str) -> str:
     return key
 
 
-def _names_over_values(lines: list[str], delimiter: str) -> list[tuple[str, str]]:
-    """Each name of `lines`' first row with the value under it in the second, or [] unless
-    the two rows are names over values.
+def _names_over_values(lines: list[str], delimiter: str) -> tuple[list[tuple[str, str]], int]:
+    """Each name of `lines`' first row with the value under it, and the rows read (2, or 3
+    with a units row between, whose units join the values); ([], 0) unless the rows are
+    names over values.
 
     The names are distinct texts, three at least or each with its unit (``Value
-    (V)``); the values as many fields, more of them numbers than texts. So
-    ``Operator,John`` over ``Speed,10``, ``Length,26.0,mm`` over ``Width,4.1,mm``
-    and LabVIEW's ``X_Dimension,Time,Time`` over ``X0,0,0`` stay ``key,value`` lines.
+    (V)``, or a units row); a column without a name (a results table's specimen
+    number) is passed over. The values are as many fields, more of them numbers than
+    texts. So ``Operator,John`` over ``Speed,10``, ``Length,26.0,mm`` over
+    ``Width,4.1,mm`` and LabVIEW's ``X_Dimension,Time,Time`` over ``X0,0,0`` stay
+    ``key,value`` lines; a Bluehill results table, ``;Width;Thickness`` over
+    ``;(mm);(mm)`` over ``2;9,910;4,04``, gives ``Width -> 9,910 mm``.
     """
     if len(lines) < 2:
-        return []
-    names, values = (_fields(line, delimiter) for line in lines)
-    if (not names or len(names) != len(values) or len(set(names)) < len(names)
-            or any(not name or ":" in name or _is_number(name.replace(",", "").replace(".", ""))
-                   for name in names)):  # a number, grouped or not, names nothing
-        return []
+        return [], 0
+    rows = [_fields(line, delimiter) for line in lines]
+    names = rows[0]
+    units = rows[1] if len(rows) == 3 and _is_units_row(rows[1], len(names)) else None
+    values = rows[2] if units else rows[1]
+    named = [name for name in names if name]
+    if (not named or len(names) != len(values) or len(set(named)) < len(named)
+            or any(":" in name or _is_number(name.replace(",", "").replace(".", ""))
+                   for name in named)):  # a number, grouped or not, names nothing
+        return [], 0
     numbers = sum(map(_is_number, values))
     texts = sum(bool(value) and not _is_number(value) for value in values)
-    if numbers <= texts or len(names) < 3 and not all(split_name_unit(name)[1]
-                                                      for name in names):
-        return []
-    return list(zip(names, values, strict=True))
+    if numbers <= texts or (len(named) < 3 and units is None
+                            and not all(split_name_unit(name)[1] for name in named)):
+        return [], 0
+    units = units or [""] * len(names)
+    return ([(name, f"{value} {unit.strip('()[]')}".strip())
+             for name, unit, value in zip(names, units, values, strict=True) if name],
+            3 if any(units) else 2)
+
+
+def _is_units_row(fields: list[str], width: int) -> bool:
+    """Whether `fields` are a units row under `width` names: as many, each a unit in
+    brackets (``(mm)``, ``[N]``) or empty, one at least."""
+    return (len(fields) == width and any(fields)
+            and all(not field or _BRACKETED_UNIT.fullmatch(field) for field in fields))
 
 
 def _is_number(text: str) -> bool:

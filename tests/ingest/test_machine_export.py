@@ -220,6 +220,10 @@ def test_run_sheet_columns_pick_among_candidates(write):
           "Rotary_3N_Rx,,,100,1000,Rotary,1,"],
          {"Recipe": "Rotary_3N_Rx", "UpperSample": "", "LowerSample": "", "Averaging": "100",
           "LogFrequency": "1000", "Type": "Rotary", "Radius": "1"}),
+        # a real Bluehill Universal results table: names over units over values, the
+        # specimen's number unnamed
+        (["Results Table 1", ";Width;Thickness", ";(mm);(mm)", "2;9,910;4,04", "Raw Data"],
+         {"Results Table 1": "", "Width": "9,910 mm", "Thickness": "4,04 mm", "Raw Data": ""}),
         # key,value lines stay so, whatever their values
         (["Operator,John", "Speed,10", "Material,Steel"],
          {"Operator": "John", "Speed": "10", "Material": "Steel"}),
@@ -236,7 +240,8 @@ def test_run_sheet_columns_pick_among_candidates(write):
     ],
 )
 def test_parse_preamble(lines, expected):
-    delimiter = "\t" if "\t" in lines[0] else ","
+    # a tab, or a semicolon between fields (not Scopy's comment mark before its lines)
+    delimiter = next((mark for mark in "\t;" if any(mark in line[1:] for line in lines)), ",")
     assert parse_preamble(lines, delimiter) == expected
 
 
