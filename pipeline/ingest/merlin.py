@@ -196,7 +196,7 @@ def read(head: Head, columns: Mapping | None = None,
 
 def _table_spec(whole: Head, delimiter: str, chosen: _Specimen) -> tuple[TableSpec, Head]:
     """The table of specimen `chosen`, and the file's lines with the block's indent taken
-    off the table's rows (the spec's indexes point into them)."""
+    off the table's rows (the TableSpec's indexes point into them)."""
     names_index, end = chosen.names_index, chosen.end_index
     if names_index is None or end is None or end - names_index < 3:
         raise LayoutError(
