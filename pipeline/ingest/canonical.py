@@ -52,6 +52,7 @@ from pipeline.ingest.names import (
     is_unmeasured,
     peak_partner,
     repeats,
+    says_total,
     tokens,
 )
 from pipeline.ingest.raw import RawColumns, RawTable
@@ -91,7 +92,7 @@ _SINGLE = ("time", "force", "angle", "cycle_count", "length", "speed", "segment_
            "segment_force_2", "side_force")
 #: Roles a kind of run does without (a tensile run's stiffness needs force and gauges
 #: only): when several columns could take one, none does, with a warning, rather than the
-#: run being refused (WaveMatrix logs a total and a step's time and cycle count).
+#: run being refused (two times or counts, neither a second instrument's nor the whole test's).
 _DISPENSABLE = {"tensile": frozenset({"time", "angle", "cycle_count", "length", "speed"})}
 
 
@@ -446,8 +447,7 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
     without, :data:`_DISPENSABLE`, a warning, and no column takes it). Of several
     candidates matched by name, those whose unit in the file is not one of the role (a
     stress in MPa named after its load channel) are left out, with a warning, when some
-    others fit; so are those a second instrument recorded beside the machine's own
-    (:func:`_the_machines_own`)."""
+    others fit; so are those :data:`_PREFERRED` passes over (:func:`_preferred`)."""
     file = raw.metadata.file
     assigned: dict[str, list[int]] = {}
     for role, indexes in raw.candidates.roles.items():
@@ -460,7 +460,7 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
                     _warn_misfit(raw, index, role)
                 live = [index for index in live if index not in misfits]
         if role in _SINGLE and len(live) > 1 and role not in raw.candidates.explicit:
-            live = _the_machines_own(raw, live, role)
+            live = _preferred(raw, live, role)
         if role in raw.candidates.explicit and len(live) < len(indexes):
             dead = next(index for index in indexes if index in empty)
             problems.report(ColumnError(
@@ -490,19 +490,34 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
     return assigned
 
 
-def _the_machines_own(raw: RawColumns, live: list[int], role: str) -> list[int]:
-    """Of the columns `live` that could take a `role` one column takes, those the testing
-    machine recorded, when a second instrument recorded the others
-    (:func:`~pipeline.ingest.names.is_auxiliary`); each column passed over is warned of."""
-    own = [index for index in live if not is_auxiliary(raw.names[index])]
-    if not own or len(own) == len(live):
-        return live
-    shown = ", ".join(repr(display_name(raw.names, index)) for index in own)
-    raw.metadata.warnings += [
-        f"column {display_name(raw.names, index)!r} is a second instrument's {role} beside the "
-        f"machine's ({shown}): not used (say otherwise in the run sheet, columns = "
-        f"{{{SHEET_KEY[role]} = \"...\"}})" for index in live if index not in own]
-    return own
+#: Of several candidates for a role, the columns preferred, with why the others are not
+#: used: the testing machine's over a second instrument's; for a time or a count, the whole
+#: test's over one that starts again (a step's, a cycle's, one since a counter's reset).
+_PREFERRED = (
+    (None, lambda name: not is_auxiliary(name),
+     "is a second instrument's {role} beside the machine's"),
+    (frozenset({"time", "cycle_count"}), says_total,
+     "starts again (a step's, a cycle's or since a reset) beside the whole test's"),
+)
+
+
+def _preferred(raw: RawColumns, live: list[int], role: str) -> list[int]:
+    """Of the columns `live` that could take a `role` one column takes, those of
+    :data:`_PREFERRED` when some are and some are not; each column passed over is warned
+    of."""
+    for roles, keeps, why in _PREFERRED:
+        if roles is not None and role not in roles:
+            continue
+        kept = [index for index in live if keeps(raw.names[index])]
+        if not kept or len(kept) == len(live):
+            continue
+        shown = ", ".join(repr(display_name(raw.names, index)) for index in kept)
+        raw.metadata.warnings += [
+            f"column {display_name(raw.names, index)!r} {why.format(role=role)} ({shown}): "
+            f"not used (say otherwise in the run sheet, columns = "
+            f"{{{SHEET_KEY[role]} = \"...\"}})" for index in live if index not in kept]
+        live = kept
+    return live
 
 
 def _says_strain(name: str) -> bool:

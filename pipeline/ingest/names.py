@@ -222,6 +222,9 @@ AUXILIARY_WORDS = frozenset({"video", "camera", "dic"})
 #: The CCFatigue layout's columns of a "measuring device" (a camera, a logger) at its
 #: points: ``MD_Load--1``, ``MD_N_cycles--#`` beside ``Machine_Load``, ``Machine_N_cycles``.
 _MEASURING_DEVICE = re.compile(r"md_.*--", re.IGNORECASE)
+#: Words of a time or a counter that runs over the whole test (WaveMatrix's ``Total Cycles``
+#: beside the step's ``Elapsed Cycles``; a rig's ``CYCLES TOTAL`` beside ``CYCLES RESET``).
+TOTAL_WORDS = frozenset({"total", "totale", "totales", "gesamt"})
 #: The label of :data:`TRANSVERSE_NAMES` among the role keywords: it wins as a role would.
 _TRANSVERSE = "transverse"
 
@@ -444,6 +447,19 @@ def is_auxiliary(name: str) -> bool:
     """
     return (tokens(name)[:1] in {(word,) for word in AUXILIARY_WORDS}
             or _MEASURING_DEVICE.match(name.strip()) is not None)
+
+
+def says_total(name: str) -> bool:
+    """Whether a time's or a counter's name says it runs over the whole test
+    (:data:`TOTAL_WORDS`, or a German compound of ``Gesamt``), not from a step's or a
+    cycle's start or a counter's reset.
+
+    >>> [says_total(name) for name in ("Total Time", "Gesamtzyklen", "CYCLES TOTAL",
+    ...                                "Elapsed Cycles", "Cycle Elapsed Time")]
+    [True, True, True, False, False]
+    """
+    words = tokens(name)
+    return not TOTAL_WORDS.isdisjoint(words) or any(word.startswith("gesamt") for word in words)
 
 
 def is_humidity(name: str) -> bool:

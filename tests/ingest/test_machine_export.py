@@ -278,60 +278,41 @@ WAVEMATRIX_HEADERS = {
 }
 
 
-@pytest.mark.parametrize("language", ["de", "en"])
-def test_wavematrix_total_and_elapsed_counts_are_a_choice_in_either_language(write, language):
-    # the total cycles and the cycles of the current step are both counters: taking the
-    # step's without a word would restart the cycle numbers at every step
-    rows = "".join(f"{500 + row / 1000:.3f};{row / 1000:.3f};{992 + row // 3};{row // 3};2;"
+def wavematrix_rows() -> str:
+    """Nine rows of the WaveMatrix header's columns: the total time and cycles run on, the
+    step's start from 0, the force is -1 - row/10 N."""
+    return "".join(f"{500 + row / 1000:.3f};{row / 1000:.3f};{992 + row // 3};{row // 3};2;"
                    f"{17 + row / 100:.4f};{-1 - row / 10:.3f}\r\n".replace(".", ",")
                    for row in range(9))
-    path = write("stop.csv", WAVEMATRIX_HEADERS[language] + "\r\n" + rows)
+
+
+@pytest.mark.parametrize("kind", ["wear", "tensile"])
+@pytest.mark.parametrize("language", ["de", "en"])
+def test_wavematrix_total_time_and_cycles_are_taken_over_the_steps(write, language, kind):
+    # the step's time and cycles start again at every step: the whole test's are used, and
+    # the step's are named in a warning
+    path = write("stop.csv", WAVEMATRIX_HEADERS[language] + "\r\n" + wavematrix_rows())
     names = [cell.strip('"').rsplit(" (", 1)[0]
              for cell in WAVEMATRIX_HEADERS[language].split(";")]
-    with pytest.raises(ColumnError, match=f"2 columns could be the time: {names[0]!r}, "
-                                          f"{names[1]!r}"):
-        read_table(path, kind="wear")
-    with pytest.raises(ColumnError, match=f"2 columns could be the cycle_count: "
-                                          f"{names[2]!r}, {names[3]!r}"):
-        read_table(path, kind="wear", columns={"time": names[0]})
-    table, _ = read_table(path, kind="wear",
-                          columns={"time": names[0], "cycle_count": names[2]})
+    table, meta = read_table(path, kind=kind)
+    np.testing.assert_allclose(table["time"], 500 + np.arange(9) / 1000)
     np.testing.assert_array_equal(table["cycle_count"], 992 + np.arange(9) // 3)
+    np.testing.assert_allclose(table["force"], -1 - np.arange(9) / 10)
+    assert [warning.split(" starts again")[0] for warning in meta.warnings
+            if "beside the whole test's" in warning] == [f"column {names[1]!r}",
+                                                         f"column {names[3]!r}"]
+    table, _ = read_table(path, kind=kind, columns={"time": names[1], "cycle_count": names[3]})
+    np.testing.assert_array_equal(table["cycle_count"], np.arange(9) // 3)
 
 
-# a real MTS TestSuite export with a video extensometer: the camera's clock runs 8 s behind
-# the controller's and repeats itself where a frame is late
-VIDEO = ("Test Run: S_1\r\n\r\nCrosshead \tLoad \tTime \tStrain 1 \tVideo Time \r\n"
-         "mm\tN\tsec\tmm/mm\tsec\r\n"
-         + "".join(f"{0.083 * row:.4f}\t{5.0 * row:.3f}\t{0.1 * row:.3f}\t{1e-4 * row:.5f}\t"
-                   f"{8.1 + 0.1 * min(row, 4):.3f}\r\n" for row in range(1, 9)))
-# the CCFatigue layout with a camera ("measuring device") logged beside the machine
-CCFATIGUE = ("Machine_N_cycles,Machine_Displacement,Machine_Load,MD_index--#,exx--#,"
-             "MD_N_cycles--#,MD_Load--#\n"
-             + "".join(f"{1 + row // 3},{0.38 + 0.001 * row:.3f},{0.98 + 0.01 * row:.2f},{row},"
-                       f"{1e-5 * row:.5f},{200 * (row // 3)},{0.003 * (row % 2):.3f}\n"
-                       for row in range(9)))
-
-
-@pytest.mark.parametrize("kind", ["tensile", "engagement"])
-def test_a_second_instruments_clock_gives_way_to_the_machines(write, kind):
-    table, meta = read_table(write("DAQ- Time (Timed).txt", VIDEO), kind=kind)
-    np.testing.assert_allclose(table["time"], 0.1 * np.arange(1, 9))
-    assert ("column 'Video Time' is a second instrument's time beside the machine's "
-            "('Time'): not used") in meta.warnings[0]
-    table, _ = read_table(write("DAQ- Time (Timed).txt", VIDEO), kind=kind,
-                          columns={"time": "Video Time"})
-    assert table["time"].iloc[-1] == pytest.approx(8.5)
-
-
-def test_a_measuring_devices_load_and_count_give_way_to_the_machines(write):
-    table, meta = read_table(write("TST_2021-10_FA_002.csv", CCFATIGUE), kind="wear",
-                             units={"force": "kN", "gauges": "mm"})
-    np.testing.assert_allclose(table["force"], 1e3 * (0.98 + 0.01 * np.arange(9)))
-    np.testing.assert_array_equal(table["cycle_count"], 1 + np.arange(9) // 3)
-    assert [warning.split(" is ")[0] for warning in meta.warnings
-            if "second instrument" in warning] == ["column 'MD_N_cycles--#'",
-                                                  "column 'MD_Load--#'"]
+def test_two_times_neither_preferred_are_left_out_of_a_tensile_run_with_a_warning(write):
+    # a tensile run needs no time: the ambiguity is no reason to refuse its force and gauge
+    text = "Time (s),Testzeit (s),Load (N),Extension (mm)\n0,0,1,0.1\n1,1,2,0.2\n2,2,3,0.3\n"
+    table, meta = read_table(write("log.csv", text), kind="tensile")
+    assert list(table.columns) == ["force", "gauge_1"]
+    assert sum("which tensile runs do without" in warning for warning in meta.warnings) == 1
+    with pytest.raises(ColumnError, match="2 columns could be the time"):
+        read_table(write("log.csv", text), kind="engagement")
 
 
 # the names of a real Instron WaveMatrix tracking export: derived channels are named
@@ -372,25 +353,6 @@ def test_a_units_row_ending_with_the_delimiter_is_still_the_units_row(write):
     np.testing.assert_allclose(table["time"], [2.2413e-3, 2.2414e-3])
     assert [(column.name, column.unit) for column in meta.columns] == [
         ("Zeit", "s"), ("Signal", "V"), ("Signal", "V")]
-
-
-@pytest.mark.parametrize("language", ["de", "en"])
-def test_wavematrix_times_and_counts_are_left_out_of_a_tensile_run_with_a_warning(write,
-                                                                                    language):
-    # a tensile run needs neither: the ambiguity is no reason to refuse its force and gauge
-    rows = "".join(f"{500 + row / 1000:.3f};{row / 1000:.3f};{992 + row // 3};{row // 3};2;"
-                   f"{17 + row / 100:.4f};{-1 - row / 10:.3f}\r\n".replace(".", ",")
-                   for row in range(9))
-    table, meta = read_table(write("stop.csv", WAVEMATRIX_HEADERS[language] + "\r\n" + rows),
-                             kind="tensile")
-    assert list(table.columns) == ["force", "gauge_1"]
-    np.testing.assert_allclose(table["force"], -1 - np.arange(9) / 10)
-    assert sum("which tensile runs do without" in warning for warning in meta.warnings) == 2
-    time_names = [cell.strip('"').rsplit(" (", 1)[0]
-                  for cell in WAVEMATRIX_HEADERS[language].split(";")][:2]
-    table, _ = read_table(write("stop.csv", WAVEMATRIX_HEADERS[language] + "\r\n" + rows),
-                          kind="tensile", columns={"time": time_names[0]})
-    np.testing.assert_allclose(table["time"], 500 + np.arange(9) / 1000)
 
 
 # a real Siglent SDS1204X-E export: 'Value' over each channel in the units row
