@@ -87,8 +87,10 @@ class TensileRun:
         (the file's name), ``kind`` (extensometer, gauge, crosshead), ``slope``
         [N] (its stiffness on the first loading, see
         :mod:`pipeline.condition.channels`), ``used`` (bool), ``removed_at``
-        (position of the first unusable sample, -1 when usable throughout) and
-        ``removal`` (why: ``"runs backwards"``, ``"jumps"``, ``"freezes"`` or "").
+        (position of the first unusable sample, -1 when usable throughout),
+        ``removal`` (why: ``"runs backwards"``, ``"jumps"``, ``"freezes"`` or "") and
+        ``zeroed`` (bool: the lab zeroed it during the record, so its readings count from
+        that zero, :func:`~pipeline.condition.tares.join_tares`).
     channel_strains : pandas.DataFrame
         Strain [1] of each channel that can give one (index as ``samples``): a
         strain as read, an elongation over the gauge length; NaN from where the
@@ -191,7 +193,7 @@ def _check_clipping(force: np.ndarray, gauge: np.ndarray, name: str, rows: pd.In
 def _joined(channel: pd.Series, force: np.ndarray, column: str, warnings: list[str]
             ) -> pd.Series:
     """`channel` read from its last zero throughout (:func:`join_tares`), each zeroing
-    told in `warnings`."""
+    told in `warnings`; the same Series when the record holds none."""
     joined, tares = join_tares(channel.to_numpy(), force)
     for tare in tares:
         step = (f"{tare.step * 1e3:.4g} mm" if str(channel.name).startswith("gauge_")
@@ -404,8 +406,13 @@ def condition_tensile(
     kept = (["time"] if "time" in table.columns else []) + ["force", *channels]
     samples = _drop_missing(table[kept].astype(float), ["force", *channels], warnings)
     force = samples["force"].to_numpy()
+    zeroed = set()
     for name in channels:
-        samples[name] = _joined(samples[name], force, columns[name], warnings)
+        channel = samples[name]
+        joined = _joined(channel, force, columns[name], warnings)
+        if joined is not channel:
+            zeroed.add(name)
+        samples[name] = joined
     sign = load_sign(force)
     fracture = find_fracture(sign * force)
     end = force.size if fracture is None else fracture + 1
@@ -495,6 +502,7 @@ def condition_tensile(
             "removed_at": [removals[name].position if name in removals else -1
                            for name in channels],
             "removal": [removals[name].reason if name in removals else "" for name in channels],
+            "zeroed": [name in zeroed for name in channels],
         },
         index=pd.Index(channels, name="channel"),
     )

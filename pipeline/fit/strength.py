@@ -13,10 +13,14 @@ fit of its first loading (:func:`~pipeline.fit.stiffness.fit_stiffness`):
 * for a proof-load test, the elongation at the proof force on the first
   loading, and the permanent set after the cycle that reached it.
 
-Elongations are measured on the channels that gave E0. Where those stop
-before the point (an extensometer taken off before fracture), the next usable
-channel in the order of :data:`~pipeline.condition.channels.PREFERENCE` is
-read instead, and the figure says which.
+Elongations are measured on the channels that gave E0, from the zero the lab
+set during the test (a gauge zeroed at the preload), else from their reading
+where the first loading starts, as an extensometer zeroed there reads them: a
+crosshead position or a gauge that did not start at zero counts no length the
+specimen did not gain. Where those channels stop before the point (an extensometer taken off
+before fracture), the next usable channel in the order of
+:data:`~pipeline.condition.channels.PREFERENCE` is read instead, and the
+figure says which.
 """
 
 from __future__ import annotations
@@ -58,28 +62,44 @@ class Strength:
         return asdict(self)
 
 
-def _fallback_strains(run: TensileRun) -> list[tuple[str, np.ndarray]]:
-    """(column, strain [1]) of the usable channels not used for E0, preferred first."""
+def _fallback_strains(run: TensileRun) -> list[tuple[str, str]]:
+    """(channel, column) of the usable channels not used for E0, preferred first."""
     found = []
     for kind in PREFERENCE:
         for name, channel in run.channels.iterrows():
             if channel["used"] or channel["kind"] != kind or name not in run.channel_strains:
                 continue
-            found.append((str(channel["column"]), run.channel_strains[name].to_numpy()))
+            found.append((str(name), str(channel["column"])))
     return found
 
 
 def _strain_at(run: TensileRun, position: int, figure: str,
                sources: dict[str, str]) -> float:
-    """Strain at a sample, from the E0 channels or the next usable one."""
-    value = float(run.samples["strain"].iloc[position])
+    """Strain at a sample from the start of the test (:func:`_start`), on the E0 channels
+    or the next usable one."""
+    used = run.channels.index[run.channels["used"]]
+    value = float(run.samples["strain"].iloc[position]) - float(
+        np.mean([_start(run, name) for name in used]))
     if np.isfinite(value):
         return value
-    for column, strain in _fallback_strains(run):
-        if np.isfinite(strain[position]):
+    for name, column in _fallback_strains(run):
+        value = float(run.channel_strains[name].iloc[position]) - _start(run, name)
+        if np.isfinite(value):
             sources[figure] = column
-            return float(strain[position])
+            return value
     return np.nan
+
+
+def _start(run: TensileRun, channel: str) -> float:
+    """Where a channel's strain counts from [1]: its zero when the lab zeroed it during the
+    record (at a preload, say), else its first reading from where the first loading
+    starts (a position read from the machine's own zero, a gauge not zeroed)."""
+    if run.channels.loc[channel, "zeroed"]:
+        return 0.0
+    strain = run.channel_strains[channel].to_numpy()
+    first = int(run.segmentation.turns[0][0]) if run.segmentation.n_cycles else 0
+    finite = np.flatnonzero(np.isfinite(strain[first:]))
+    return float(strain[first + finite[0]]) if finite.size else np.nan
 
 
 def _crossing(force: np.ndarray, level: float) -> int | None:
