@@ -101,28 +101,6 @@ def test_proof_load_test_gives_the_elongation_at_proof_and_the_set():
     assert strength.permanent_set_after_proof == pytest.approx(truth.permanent_set, rel=0.05)
 
 
-def test_elongations_count_from_the_start_of_the_test_not_from_the_gauges_zero():
-    # a crosshead position read from the machine's own zero (45 mm when the test starts):
-    # the specimen gains no 45 mm, and its E0 does not change
-    truth = PullTruth.for_chain("18x64")
-    log = simulate_pull(truth, seed=4)[["time", "force", "extensometer"]].rename(
-        columns={"extensometer": "gauge_1"})
-    figures = []
-    for offset in (0.0, 0.045):
-        run = condition_tensile(log.assign(gauge_1=log["gauge_1"] + offset),
-                                truth.gauge_length, n_cycles=1,
-                                kinds={"gauge_1": "crosshead"}, columns={"gauge_1": "Position"})
-        fits = fit_stiffness(run)
-        figures.append((specimen_stiffness(fits, single_pull=True).E0,
-                        specimen_strength(run, fits)))
-    (E0, zeroed), (E0_offset, offset) = figures
-    assert E0_offset == pytest.approx(E0, rel=1e-9)
-    assert offset.elongation_at_max_force == pytest.approx(zeroed.elongation_at_max_force,
-                                                           abs=1e-9)
-    assert offset.elongation_at_fracture == pytest.approx(truth.strain_at_fracture
-                                                          * truth.gauge_length, rel=0.01)
-
-
 @pytest.mark.parametrize("channel", ["crosshead", "extensometer"])
 def test_a_crosshead_alone_gives_its_own_E0_and_says_so(channel):
     truth = PullTruth.for_chain("18x64")

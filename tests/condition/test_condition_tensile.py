@@ -209,6 +209,7 @@ def test_gauges_zeroed_at_the_preload_read_as_if_zeroed_from_the_start(sign):
         n_cycles=3)
     np.testing.assert_allclose(run.samples["strain"], expected.samples["strain"], atol=1e-15)
     np.testing.assert_allclose(run.cycles["permanent_set"], SET, rtol=1e-9)
+    assert run.channels["zeroed"].all() and not expected.channels["zeroed"].any()
     assert run.warnings == [
         f"'Weg' is zeroed at sample 10 (1 kN, the force holding): its readings before are "
         f"moved by the {sign * 0.8:.4g} mm it dropped, to join those after",
