@@ -255,8 +255,8 @@ def run_kind(table: pd.DataFrame, metadata: TableMetadata) -> tuple[str, str]:
 
 def column_map(metadata: TableMetadata, kind: str = "tensile") -> dict:
     """The run sheet's ``columns`` of a run of `kind`: each role found -> the file's column
-    name."""
-    found = {role: next((c.name for c in metadata.columns if c.role == role), None)
+    name (but a column the kind does without that has no unit: the run goes on without it)."""
+    found = {role: next((c.name for c in _drafted(metadata, kind) if c.role == role), None)
              for role in SINGLE_ROLES[kind]}
     mapping: dict = {role: name for role, name in found.items() if name is not None}
     gauges = [column.name for column in metadata.columns if _is_gauge(column)]
@@ -273,13 +273,22 @@ def unit_map(metadata: TableMetadata, kind: str = "tensile") -> dict:
     for role in SINGLE_ROLES[kind]:
         if role == "cycle_count":  # kept as counted
             continue
-        column = next((c for c in metadata.columns if c.role == role), None)
+        column = next((c for c in _drafted(metadata, kind) if c.role == role), None)
         if column is not None:
             units[role] = column.unit or UNIT_PLACEHOLDER
     found = {column.unit for column in metadata.columns if _is_gauge(column)}
     if len(found) == 1:
         units["gauges"] = found.pop() or UNIT_PLACEHOLDER
     return units
+
+
+def _drafted(metadata: TableMetadata, kind: str) -> list[ColumnInfo]:
+    """The columns a run of `kind` is drafted with: all but those of a role it does without
+    that have no unit (the reader leaves them out of such a run, with a warning)."""
+    from pipeline.ingest.canonical import DISPENSABLE
+
+    return [column for column in metadata.columns
+            if column.unit or column.role not in DISPENSABLE.get(kind, ())]
 
 
 def unit_notes(run: DraftRun) -> list[str]:

@@ -93,7 +93,7 @@ _SINGLE = ("time", "force", "angle", "cycle_count", "length", "speed", "segment_
 #: Roles a kind of run does without (a tensile run's stiffness needs force and gauges
 #: only): when several columns could take one, none does, with a warning, rather than the
 #: run being refused (two times or counts, neither a second instrument's nor the whole test's).
-_DISPENSABLE = {"tensile": frozenset({"time", "angle", "cycle_count", "length", "speed"})}
+DISPENSABLE = {"tensile": frozenset({"time", "angle", "cycle_count", "length", "speed"})}
 
 
 #: Words that make a gauge column a strain by its name (English, German).
@@ -218,7 +218,7 @@ def settle(
     sheet_units = _run_sheet_units(units, meta.file)
     assigned = _settle_roles(raw, empty, set(sheet_units), problems, kind)
     rejected: dict[str, UnitError] = {}
-    factors, found_units, strains = _settle_units(raw, assigned, sheet_units, problems,
+    factors, found_units, strains = _settle_units(raw, assigned, sheet_units, problems, kind,
                                                   rejected)
     needs = " and ".join(" or ".join(group) for group in REQUIRED[kind])
     for group in REQUIRED[kind]:
@@ -444,7 +444,7 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
                   kind: str) -> dict[str, list[int]]:
     """The columns of each role: the candidates with values, and of a role that takes one
     column, the only one (else an ambiguity is reported; for a role the `kind` of run does
-    without, :data:`_DISPENSABLE`, a warning, and no column takes it). Of several
+    without, :data:`DISPENSABLE`, a warning, and no column takes it). Of several
     candidates matched by name, those whose unit in the file is not one of the role (a
     stress in MPa named after its load channel) are left out, with a warning, when some
     others fit; so are those :data:`_PREFERRED` passes over (:func:`_preferred`)."""
@@ -478,7 +478,7 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
                 hint=f"say which in the run sheet, columns = {{{SHEET_KEY[role]} = \"...\"}}"
                 + (", after renaming the duplicates in the export" if same else ""),
             )
-            if role in _DISPENSABLE.get(kind, ()) and role not in raw.candidates.explicit:
+            if role in DISPENSABLE.get(kind, ()) and role not in raw.candidates.explicit:
                 raw.metadata.warnings.append(
                     f"{ambiguity.message}: none is used as the {role}, which {kind} runs do "
                     f"without ({ambiguity.hint})")
@@ -535,6 +535,7 @@ def _settle_units(
     assigned: dict[str, list[int]],
     sheet_units: dict[str, list[str]],
     problems: _Problems,
+    kind: str,
     rejected: dict[str, UnitError],
 ) -> tuple[dict[int, float], dict[int, str | None], set[int]]:
     """SI factors of the columns that can be converted, each column's unit text, and the
@@ -570,13 +571,19 @@ def _settle_units(
                 factors[index] = 1.0
                 continue
             if text is None:
-                problems.report(UnitError(
+                missing = UnitError(
                     f"no unit for the {role} column",
                     file=file, row=raw.units_line, column=name,
                     hint=STRAIN_WITHOUT_UNIT_HINT if role == "gauge" and _says_strain(name)
                     else f'the file gives none: set it in the run sheet, units = '
                          f'{{{SHEET_KEY[role]} = "..."}}',
-                ))
+                )
+                if role in DISPENSABLE.get(kind, ()) and role not in raw.candidates.explicit:
+                    raw.metadata.warnings.append(
+                        f"column {name!r}: {missing.message}, which {kind} runs do without: "
+                        f"not used ({missing.hint})")
+                else:
+                    problems.report(missing)
                 continue
             if (role == "gauge" and text.strip().strip("()[]").strip() == DIMENSIONLESS
                     and _says_strain(name)):  # "strain [-]": a ratio, written dimensionless

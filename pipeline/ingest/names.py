@@ -225,6 +225,10 @@ _MEASURING_DEVICE = re.compile(r"md_.*--", re.IGNORECASE)
 #: Words of a time or a counter that runs over the whole test (WaveMatrix's ``Total Cycles``
 #: beside the step's ``Elapsed Cycles``; a rig's ``CYCLES TOTAL`` beside ``CYCLES RESET``).
 TOTAL_WORDS = frozenset({"total", "totale", "totales", "gesamt"})
+#: Words of a fracture test's crack record: its length, its opening, and the machine's
+#: readings copied where it was measured (the CCFatigue layout's ``Crack_length``,
+#: ``Crack_Displacement``, ``Crack_Load``): no chain's length, no gauge along the specimen.
+CRACK_WORDS = frozenset({"crack", "cracks"})
 #: The label of :data:`TRANSVERSE_NAMES` among the role keywords: it wins as a role would.
 _TRANSVERSE = "transverse"
 
@@ -397,7 +401,8 @@ def match_role(name: str) -> str | None:
     if tokens(name)[-1:] == ("id",):
         return None
     role = _best_match(name, _KEYWORDS)
-    return None if role == _TRANSVERSE or is_command(name) or is_derived(name) else role
+    return (None if role == _TRANSVERSE or is_command(name) or is_derived(name)
+            or is_crack(name) else role)
 
 
 _COMMAND_KEYWORDS = tuple((tokens(word), "command") for word in COMMAND_NAMES)
@@ -428,13 +433,26 @@ def is_derived(name: str) -> bool:
 
 def is_unmeasured(name: str) -> bool:
     """Whether a column name says it holds no measurement along the specimen: a transverse
-    channel, a setpoint or command, a value worked out from others, or one part of a clock
-    reading. Such a column takes no role, not even from its unit.
+    channel, a setpoint or command, a value worked out from others, one part of a clock
+    reading, or a crack's record (:data:`CRACK_WORDS`). Such a column takes no role, not
+    even from its unit.
 
-    >>> [is_unmeasured(name) for name in ("Querdehnung", "Load Command", "Minute", "Load")]
-    [True, True, True, False]
+    >>> [is_unmeasured(name) for name in ("Querdehnung", "Load Command", "Minute",
+    ...                                   "Crack_length", "Load")]
+    [True, True, True, True, False]
     """
-    return is_transverse(name) or is_command(name) or is_derived(name) or is_clock_part(name)
+    return (is_transverse(name) or is_command(name) or is_derived(name)
+            or is_clock_part(name) or is_crack(name))
+
+
+def is_crack(name: str) -> bool:
+    """Whether a column name is of a crack's record (:data:`CRACK_WORDS`): such a column
+    takes no role, not even from its unit.
+
+    >>> [is_crack(name) for name in ("Crack_length", "Crack_Load  ", "Load")]
+    [True, True, False]
+    """
+    return not CRACK_WORDS.isdisjoint(tokens(name))
 
 
 def is_auxiliary(name: str) -> bool:

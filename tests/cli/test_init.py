@@ -140,6 +140,18 @@ def test_print_writes_nothing_and_is_allowed_over_a_sheet(tmp_path):
     assert sorted(path.name for path in tmp_path.iterdir()) == ["campaign.toml", "t.csv"]
 
 
+def test_a_tensile_draft_leaves_out_a_time_without_unit_the_run_does_without(tmp_path):
+    # a microtester's export names its columns but gives no unit: a tensile run needs the
+    # force's and the gauge's, and goes on without the time's
+    (tmp_path / "data_1.csv").write_text("Elongation,Force,Time\n" + "".join(
+        f"{0.01 * i:.2f},{load},{0.00055 * i:.5f}\n" for i, load in enumerate(LOAD)))
+    result = init("--print", str(tmp_path))
+    assert result.exit_code == 0, result.output
+    run = tomllib.loads(result.stdout)["runs"][0]
+    assert (run["columns"], run["units"]) == (
+        {"force": "Force", "gauges": ["Elongation"]}, {"force": "TODO", "gauges": "TODO"})
+
+
 def test_the_gauge_lengths_the_header_states_are_shown_not_filled_in(tmp_path):
     # a Bluehill export in Polish states the extensometer's gauge length and the one its
     # strain from the crosshead travel was computed over: which one the run's gauges

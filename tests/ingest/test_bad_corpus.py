@@ -29,7 +29,7 @@ ERRORS = {
     "header_only_machine_export.csv": (EmptyFileError, 6, None, "no data rows"),
     "non_numeric_cell.csv": (ValueParseError, 4, "force", "'abc' is not a number"),
     "unknown_unit.csv": (UnitError, 1, "force", "unknown unit 'Pfund'"),
-    "missing_unit.csv": (UnitError, 1, "time", "no unit"),
+    "missing_unit.csv": (UnitError, 1, "force", "no unit"),  # a tensile run needs no time
     "wrong_dimension_unit.csv": (UnitError, 1, "force", "not a unit of force"),
     "missing_force_column.csv": (ColumnError, 1, None, "no force column"),
     "duplicated_column.csv": (ColumnError, 1, "Load", "duplicated"),

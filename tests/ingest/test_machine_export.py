@@ -305,6 +305,35 @@ def test_wavematrix_total_time_and_cycles_are_taken_over_the_steps(write, langua
     np.testing.assert_array_equal(table["cycle_count"], np.arange(9) // 3)
 
 
+# the CCFatigue layout of a quasi-static test with its crack record: the crack's length,
+# and the machine's readings copied where it was measured, on the first rows only
+CRACKS = ("Machine_Time,Machine_Displacement,Machine_Load,Crack_length,Crack_Displacement,"
+          "Crack_Load\n"
+          + "".join(f"18:10:{row // 2:02d},{0.2 * row:.1f},{0.05 * row:.2f},"
+                    + (f"{30 + row},{0.2 * row:.1f},{0.05 * row:.2f}" if row < 3 else ",,")
+                    + "\n" for row in range(8)))
+
+
+def test_a_cracks_record_takes_no_role(write):
+    table, meta = read_table(write("TST_2020-12_QS_001.csv", CRACKS), kind="tensile",
+                             units={"force": "kN", "gauges": "mm"})
+    assert list(table.columns) == ["time", "force", "gauge_1"]
+    np.testing.assert_allclose(table["gauge_1"], 0.2e-3 * np.arange(8))
+    assert {column.name: column.role for column in meta.columns}["Crack_length"] is None
+
+
+def test_a_time_without_unit_is_left_out_of_a_tensile_run_not_of_an_engagement_run(write):
+    text = "Time,Load (N),Extension (mm)\n0,1,0.1\n1,2,0.2\n2,3,0.3\n"
+    table, meta = read_table(write("log.csv", text), kind="tensile")
+    assert list(table.columns) == ["force", "gauge_1"]
+    assert ("column 'Time': no unit for the time column, which tensile runs do without: not "
+            "used") in meta.warnings[0]
+    with pytest.raises(UnitError, match="no unit for the time column"):
+        read_table(write("log.csv", text), kind="engagement")
+    table, _ = read_table(write("log.csv", text), kind="tensile", units={"time": "s"})
+    np.testing.assert_allclose(table["time"], [0.0, 1.0, 2.0])
+
+
 def test_two_times_neither_preferred_are_left_out_of_a_tensile_run_with_a_warning(write):
     # a tensile run needs no time: the ambiguity is no reason to refuse its force and gauge
     text = "Time (s),Testzeit (s),Load (N),Extension (mm)\n0,0,1,0.1\n1,1,2,0.2\n2,2,3,0.3\n"
