@@ -81,6 +81,11 @@ FREEZE_RISE = 0.05
 #: stands at least this fraction of the maximum force above its level there.
 BACKWARDS_RISE = 0.01
 
+#: ... for this many samples in a row at least (or to the end of the record): a noisy
+#: channel falls below its running maximum, itself a peak of the noise, by five times its
+#: noise for a sample now and then (a machine's displacement read to 0.03 mm).
+BACKWARDS_SAMPLES = 3
+
 #: A channel that stands still for this fraction of the record while another channel
 #: moves by :data:`OTHERS_MOVE` of its range has frozen.
 STILL_WINDOW = 0.05
@@ -214,11 +219,14 @@ def _backwards(force: np.ndarray, channel: np.ndarray, tolerance: float, rise: f
     """First sample of a fall of the channel from its running maximum by more than
     `tolerance` that lasts until the force has risen by `rise` above its level when that
     maximum was reached (a knife edge settling by a few steps while the force stands is
-    no fall)."""
+    no fall), and for :data:`BACKWARDS_SAMPLES` samples (one sample of noise is none)."""
     running = np.maximum.accumulate(channel)
     at = np.maximum.accumulate(np.where(channel >= running, np.arange(channel.size), 0))
     below = channel < running - tolerance
-    hits = np.flatnonzero(below & (force >= force[at] + rise))
+    lasting = below.copy()  # and the next BACKWARDS_SAMPLES - 1 the record holds
+    for ahead in range(1, BACKWARDS_SAMPLES):
+        lasting[:-ahead] &= below[ahead:]
+    hits = np.flatnonzero(lasting & (force >= force[at] + rise))
     if not hits.size:
         return None
     hit = int(hits[0])

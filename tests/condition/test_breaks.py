@@ -41,6 +41,21 @@ def test_a_quantised_gauge_that_falls_back_is_taken_off():
     assert removal.position == 4000
 
 
+def test_a_noisy_channel_dipping_for_a_sample_is_not_taken_off():
+    # a machine's displacement read to about 0.03 mm (a real CCFatigue quasi-static log):
+    # one reading falls six times its noise below the running maximum, the next is back
+    rng = np.random.default_rng(1)
+    force = np.linspace(10e3, 530e3, 200)
+    channel = 0.4e-3 + force / 1e10 + rng.normal(0.0, 0.007e-3, 200)  # [m]
+    assert int(np.argmax(channel[:150])) < 140  # the running maximum: an earlier noise peak
+    channel[150] = channel[:150].max() - 6 * 0.007e-3
+    assert find_removal(force, channel) is None
+    channel[150:153] = channel[:150].max() - 6 * 0.007e-3  # three in a row: it fell back
+    removal = find_removal(force, channel)
+    assert removal is not None and removal.reason == "runs backwards"
+    assert removal.position == 150
+
+
 def test_a_jump_by_ten_is_named_as_a_lost_decimal_mark():
     # a real Bluehill export re-saved by a spreadsheet: 0.9966 mm, then 10.114 for 1.0114
     force, channel = _loading(3)
