@@ -52,6 +52,7 @@ from pipeline.ingest.names import (
     is_unmeasured,
     peak_partner,
     repeats,
+    says_sign_convention,
     says_total,
     tokens,
 )
@@ -492,12 +493,15 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
 
 #: Of several candidates for a role, the columns preferred, with why the others are not
 #: used: the testing machine's over a second instrument's; for a time or a count, the whole
-#: test's over one that starts again (a step's, a cycle's, one since a counter's reset).
+#: test's over one that starts again (a step's, a cycle's, one since a counter's reset);
+#: for a force, the measured load over one turned to a kind of test's sign.
 _PREFERRED = (
     (None, lambda name: not is_auxiliary(name),
      "is a second instrument's {role} beside the machine's"),
     (frozenset({"time", "cycle_count"}), says_total,
      "starts again (a step's, a cycle's or since a reset) beside the whole test's"),
+    (frozenset({"force"}), lambda name: not says_sign_convention(name),
+     "is the load in one kind of test's sign, worked out from the measured one"),
 )
 
 

@@ -229,6 +229,10 @@ TOTAL_WORDS = frozenset({"total", "totale", "totales", "gesamt"})
 #: readings copied where it was measured (the CCFatigue layout's ``Crack_length``,
 #: ``Crack_Displacement``, ``Crack_Load``): no chain's length, no gauge along the specimen.
 CRACK_WORDS = frozenset({"crack", "cracks"})
+#: First words of a load a machine's software works out in the sign of one kind of test
+#: beside the load it measured (Bluehill's ``Compressive load``: ``Load`` with its sign
+#: turned, for a compression test's plots).
+SIGN_CONVENTION_WORDS = frozenset({"compressive", "tensile"})
 #: The label of :data:`TRANSVERSE_NAMES` among the role keywords: it wins as a role would.
 _TRANSVERSE = "transverse"
 
@@ -478,6 +482,16 @@ def says_total(name: str) -> bool:
     """
     words = tokens(name)
     return not TOTAL_WORDS.isdisjoint(words) or any(word.startswith("gesamt") for word in words)
+
+
+def says_sign_convention(name: str) -> bool:
+    """Whether a column name opens with :data:`SIGN_CONVENTION_WORDS`: a load worked out in
+    one kind of test's sign, beside the measured one.
+
+    >>> [says_sign_convention(name) for name in ("Compressive load", "Load", "Tensile load")]
+    [True, False, True]
+    """
+    return tokens(name)[:1] in {(word,) for word in SIGN_CONVENTION_WORDS}
 
 
 def is_humidity(name: str) -> bool:

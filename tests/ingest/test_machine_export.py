@@ -314,6 +314,19 @@ CRACKS = ("Machine_Time,Machine_Displacement,Machine_Load,Crack_length,Crack_Dis
                     + "\n" for row in range(8)))
 
 
+def test_a_load_turned_to_compressions_sign_gives_way_to_the_measured_load(write):
+    # a real Bluehill cyclic compression export writes its load twice, the second turned
+    # to the compression's sign for its plots: the measured one is used
+    text = ("Time,Extension,Load,Compressive extension,Compressive load,Total Cycle Count\n"
+            "(sec),(mm),(N),(mm),(N),\n"
+            + "".join(f"{0.1 * row:.1f},{-0.025 - 0.01 * row:.3f},{-2.0 * row:.1f},"
+                      f"{0.01 * row:.3f},{2.0 * row:.1f},0\n" for row in range(6)))
+    table, meta = read_table(write("Specimen_RawData_3.csv", text), kind="tensile")
+    np.testing.assert_allclose(table["force"], -2.0 * np.arange(6))
+    assert ("column 'Compressive load' is the load in one kind of test's sign, worked out "
+            "from the measured one ('Load'): not used") in meta.warnings[0]
+
+
 def test_a_cracks_record_takes_no_role(write):
     table, meta = read_table(write("TST_2020-12_QS_001.csv", CRACKS), kind="tensile",
                              units={"force": "kN", "gauges": "mm"})
