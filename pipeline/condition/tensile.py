@@ -414,6 +414,10 @@ def condition_tensile(
             zeroed.add(name)
         samples[name] = joined
     sign = load_sign(force)
+    if sign < 0:
+        warnings.append("the force is negative as it loads (a compression test, or a "
+                        "machine that logs tension negative): forces, elongations and E0 are "
+                        "read in the direction of the load, as magnitudes")
     fracture = find_fracture(sign * force)
     end = force.size if fracture is None else fracture + 1
     if fracture is not None:

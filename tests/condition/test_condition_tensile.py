@@ -210,11 +210,14 @@ def test_gauges_zeroed_at_the_preload_read_as_if_zeroed_from_the_start(sign):
     np.testing.assert_allclose(run.samples["strain"], expected.samples["strain"], atol=1e-15)
     np.testing.assert_allclose(run.cycles["permanent_set"], SET, rtol=1e-9)
     assert run.channels["zeroed"].all() and not expected.channels["zeroed"].any()
+    compression = ["the force is negative as it loads (a compression test, or a machine that "
+                   "logs tension negative): forces, elongations and E0 are read in the "
+                   "direction of the load, as magnitudes"] if sign < 0 else []
     assert run.warnings == [
         f"'Weg' is zeroed at sample 10 (1 kN, the force holding): its readings before are "
         f"moved by the {sign * 0.8:.4g} mm it dropped, to join those after",
         f"'1470533' is zeroed at sample 10 (1 kN, the force holding): its readings before "
-        f"are moved by the {-sign * 41:.4g} mm it dropped, to join those after"]
+        f"are moved by the {-sign * 41:.4g} mm it dropped, to join those after", *compression]
 
 
 def test_a_gauge_unplugged_to_zero_in_a_loading_is_cut_where_it_dropped():
