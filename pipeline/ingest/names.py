@@ -224,7 +224,7 @@ AUXILIARY_WORDS = frozenset({"video", "camera", "dic"})
 _MEASURING_DEVICE = re.compile(r"md_.*--", re.IGNORECASE)
 #: Words of a time or a counter that runs over the whole test (WaveMatrix's ``Total Cycles``
 #: beside the step's ``Elapsed Cycles``; a rig's ``CYCLES TOTAL`` beside ``CYCLES RESET``).
-TOTAL_WORDS = frozenset({"total", "totale", "totales", "gesamt"})
+TOTAL_WORDS = frozenset({"total", "totale", "totales"})
 #: Words of a fracture test's crack record: its length, its opening, and the machine's
 #: readings copied where it was measured (the CCFatigue layout's ``Crack_length``,
 #: ``Crack_Displacement``, ``Crack_Load``): no chain's length, no gauge along the specimen.
@@ -467,7 +467,7 @@ def is_auxiliary(name: str) -> bool:
     >>> [is_auxiliary(name) for name in ("Video Time", "MD_Load--1", "Time", "Load MD")]
     [True, True, False, False]
     """
-    return (tokens(name)[:1] in {(word,) for word in AUXILIARY_WORDS}
+    return (_opens_with(name, AUXILIARY_WORDS)
             or _MEASURING_DEVICE.match(name.strip()) is not None)
 
 
@@ -491,7 +491,13 @@ def says_sign_convention(name: str) -> bool:
     >>> [says_sign_convention(name) for name in ("Compressive load", "Load", "Tensile load")]
     [True, False, True]
     """
-    return tokens(name)[:1] in {(word,) for word in SIGN_CONVENTION_WORDS}
+    return _opens_with(name, SIGN_CONVENTION_WORDS)
+
+
+def _opens_with(name: str, words: frozenset[str]) -> bool:
+    """Whether the first word of a column name is one of `words`."""
+    first = tokens(name)[:1]
+    return bool(first) and first[0] in words
 
 
 def is_humidity(name: str) -> bool:
