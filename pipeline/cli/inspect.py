@@ -146,8 +146,9 @@ def _show(report: dict) -> None:
                       f"{length * 1e3:.4g} mm to the last digit: a strain worked out from it, "
                       "counted as its kind", highlight=False)
     for name, source in report["duplicates"].items():
-        console.print(f"note: {escape(repr(name))} repeats {escape(repr(source))} to the last "
-                      "digit: one transducer written twice, counted as its kind",
+        console.print(f"note: {escape(repr(name))} moves with {escape(repr(source))} to the "
+                      "last digit, its zero and sign aside: one transducer written twice, "
+                      "counted as its kind",
                       highlight=False)
     for warning in report["warnings"]:
         console.print(f"[yellow]warning:[/yellow] {escape(warning)}", highlight=False)

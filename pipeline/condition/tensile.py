@@ -250,9 +250,9 @@ def _settle_duplicates(duplicates: Mapping[str, str], strains: dict[str, np.ndar
     for name, source in duplicates.items():
         kinds[name] = kinds[source]
         if strains.pop(name, None) is not None:
-            warnings.append(f"channel {columns[name]!r} repeats {columns[source]!r} "
-                            f"({kinds[source]}) to the last digit: one transducer written "
-                            "twice; not used")
+            warnings.append(f"channel {columns[name]!r} moves with {columns[source]!r} "
+                            f"({kinds[source]}) to the last digit, its zero and sign aside: "
+                            "one transducer written twice; not used")
 
 
 def _settle_copies(copies: Mapping[str, tuple[str, float]], strains: dict[str, np.ndarray],

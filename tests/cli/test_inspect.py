@@ -162,5 +162,5 @@ def test_a_length_column_repeating_the_crosshead_shows_as_the_crosshead(tmp_path
         None, None, "crosshead", "crosshead"]
     assert report["duplicates"] == {"Extension": "Crosshead"}
     shown = runner.invoke(app, ["inspect", str(path)], env={"COLUMNS": "200"})
-    assert ("note: 'Extension' repeats 'Crosshead' to the last digit: one transducer written "
-            "twice, counted as its kind") in shown.stdout
+    assert ("note: 'Extension' moves with 'Crosshead' to the last digit, its zero and sign "
+            "aside: one transducer written twice, counted as its kind") in shown.stdout

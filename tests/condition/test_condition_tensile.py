@@ -278,8 +278,8 @@ def test_a_length_column_repeating_the_crosshead_is_left_out_and_e0_is_the_cross
     run = condition_tensile(table, 0.05, n_cycles=1, **TESTSUITE)
     assert run.channels["used"].to_dict() == {"gauge_1": True, "gauge_2": False}
     assert run.channels.loc["gauge_2", "kind"] == "crosshead"
-    assert ("channel 'Extension' repeats 'Crosshead' (crosshead) to the last digit: one "
-            "transducer written twice; not used") in run.warnings
+    assert ("channel 'Extension' moves with 'Crosshead' (crosshead) to the last digit, its "
+            "zero and sign aside: one transducer written twice; not used") in run.warnings
     assert any(warning.startswith("E0 from the crosshead travel 'Crosshead'")
                for warning in run.warnings)
 
