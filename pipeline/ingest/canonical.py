@@ -48,6 +48,7 @@ from pipeline.ingest.decimalshift import decimal_shifts, step_blocks
 from pipeline.ingest.names import (
     gauge_kind,
     is_auxiliary,
+    is_held_peak,
     is_humidity,
     is_unmeasured,
     peak_partner,
@@ -494,14 +495,18 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
 #: Of several candidates for a role, the columns preferred, with why the others are not
 #: used: the testing machine's over a second instrument's; for a time or a count, the whole
 #: test's over one that starts again (a step's, a cycle's, one since a counter's reset);
-#: for a force, the measured load over one turned to a kind of test's sign.
+#: for a force, the measured load over one turned to a kind of test's sign, and the reading
+#: over a peak held.
 _PREFERRED = (
-    (None, lambda name: not is_auxiliary(name),
+    (None, lambda names, at: not is_auxiliary(names[at]),
      "is a second instrument's {role} beside the machine's"),
-    (frozenset({"time", "cycle_count"}), says_total,
-     "starts again (a step's, a cycle's or since a reset) beside the whole test's"),
-    (frozenset({"force"}), lambda name: not says_sign_convention(name),
+    (frozenset({"time", "cycle_count"}), lambda names, at: says_total(names[at]),
+     "is named as one that starts again (a step's, a cycle's, since a reset) beside the "
+     "whole test's"),
+    (frozenset({"force"}), lambda names, at: not says_sign_convention(names[at]),
      "is the load in one kind of test's sign, worked out from the measured one"),
+    (frozenset({"force"}), lambda names, at: not is_held_peak(names, at),
+     "is a peak held beside the reading itself"),
 )
 
 
@@ -512,7 +517,7 @@ def _preferred(raw: RawColumns, live: list[int], role: str) -> list[int]:
     for roles, keeps, why in _PREFERRED:
         if roles is not None and role not in roles:
             continue
-        kept = [index for index in live if keeps(raw.names[index])]
+        kept = [index for index in live if keeps(raw.names, index)]
         if not kept or len(kept) == len(live):
             continue
         shown = ", ".join(repr(display_name(raw.names, index)) for index in kept)

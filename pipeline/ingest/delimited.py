@@ -15,7 +15,7 @@ the file and whether its preamble is kept. :data:`LAYOUTS` are tried in order.
     0.00000,-2.04726,-4.31900,22476,0
 
 ``european_csv``: ``;`` or tab delimiter and a decimal comma, as Polish and
-German lab PCs write (often cp1250)::
+German lab PCs write (often cp1250), or ``;`` and a decimal point::
 
     czas [s];siła [kN];wydłużenie [mm]
     0,00;0,012;0,000
@@ -148,9 +148,9 @@ def _trailing_unit_words(cells: list[str]) -> list[tuple[str, str | None]] | Non
     if len(named) >= 2 and all(
             name and not unit.isdigit() and spellings(unit) for name, unit in named):
         return [(_without_in(name), unit or None) for name, _, unit in split]
-    fitting = [(name.strip(), unit) if _unit_of_its_name(name.strip(), unit)
+    fitting = [(name.strip(), unit) if _unit_of_its_name(name.strip(), unit, blank)
                else (cell.strip(), None)
-               for cell, (name, _, unit) in zip(cells, map(_last_word, cells), strict=True)]
+               for cell, (name, blank, unit) in zip(cells, map(_last_word, cells), strict=True)]
     return fitting if any(unit for _, unit in fitting) else None
 
 
@@ -271,10 +271,17 @@ def _without_in(name: str) -> str:
     return " ".join(words[:-1] if words[-1:] == ["in"] else words)
 
 
-def _unit_of_its_name(name: str, unit: str) -> bool:
-    """Whether `unit` is a unit of the role `name` gives (``荷重`` and ``kN``: force)."""
-    role = match_role(name) if name and unit else None
-    return role is not None and unit_fits(unit, role)
+def _unit_of_its_name(name: str, unit: str, separator: str) -> bool:
+    """Whether `unit`, after `name` and `separator`, is a unit of the role `name` gives
+    (``荷重`` and ``kN``: force); or, after an underscore and a name that gives no role,
+    a unit of force of two letters or more (a load logger's ``current_kN``,
+    ``peak_kN``): ``N`` alone may be a number's mark (``Sample_N``)."""
+    if not (name and unit):
+        return False
+    role = match_role(name)
+    if role is not None:
+        return unit_fits(unit, role)
+    return separator == "_" and len(unit) > 1 and unit_fits(unit, "force")
 
 
 def metadata(head: Head, spec: TableSpec, layout: str, preamble: dict[str, str]) -> TableMetadata:

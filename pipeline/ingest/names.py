@@ -620,6 +620,20 @@ _PEAK_WORDS = {"maximum": "max", "max": "max", "peak": "max", "höchstwert": "ma
 _PEAK_TOKENS = {tokens(word)[0]: side for word, side in _PEAK_WORDS.items()}
 
 
+def is_held_peak(names: list[str], index: int) -> bool:
+    """Whether column `index` is a peak held beside the reading: its name holds a word of a
+    maximum (``peak``, ``max``...) and no column is the same channel's minimum (as a
+    cycle's extremes are, :func:`peak_partner`).
+
+    >>> names = ["timestamp", "current", "peak", "Load max", "Load min"]
+    >>> [is_held_peak(names, index) for index in range(5)]
+    [False, False, True, False, False]
+    """
+    words = tokens(names[index])
+    return ("max" in {_PEAK_TOKENS.get(word) for word in words}
+            and peak_partner(names, index) is None)
+
+
 def peak_partner(names: list[str], index: int) -> str | None:
     """The column that is the other extreme of column `index`'s channel, or None.
 

@@ -35,6 +35,7 @@ def parse_preamble(lines: list[str], delimiter: str) -> dict[str, str]:
     """
     preamble: dict[str, str] = {}
     pairs: list[tuple[str, str]] = []
+    lines = _without_common_mark(lines)
     index = 0
     while index < len(lines):
         paired, used = _names_over_values(lines[index: index + 3], delimiter)
@@ -53,6 +54,17 @@ def parse_preamble(lines: list[str], delimiter: str) -> dict[str, str]:
             unique = f"{key} ({number})"
         preamble[unique] = value
     return preamble
+
+
+def _without_common_mark(lines: list[str]) -> list[str]:
+    """`lines` without the comment mark that opens every one of them, two at least (a
+    logger's ``# Test Name: Test 1``, ``# Peak Force: 3.379 kN``, ``#``): a mark
+    opening one line only may be part of its key (``# of cycles``)."""
+    filled = [line.lstrip() for line in lines if line.strip()]
+    marks = {line[0] for line in filled}
+    if len(filled) < 2 or len(marks) != 1 or not marks <= set(_COMMENT_MARKS):
+        return lines
+    return [line.lstrip()[1:] for line in lines]
 
 
 def _key_and_value(line: str, delimiter: str) -> tuple[str | None, str]:

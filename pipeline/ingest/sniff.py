@@ -24,6 +24,7 @@ from collections import Counter
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from itertools import islice
+from pathlib import PureWindowsPath
 
 import pyarrow.csv as pacsv
 
@@ -78,10 +79,11 @@ PROCESSING_WORDS = frozenset({"smp", "avg", "max", "min", "tot", "std", "med", "
 #: Data rows of the head looked at to tell a column of text labels (a step's name, a
 #: status) from a column of numbers with a bad cell.
 TEXT_ROWS = 32
-#: Cell texts read as missing values: pyarrow's defaults, and "none" (a data logger's empty
-#: channel; Python's None written as text); each also after the blank of a ", " delimiter
+#: Cell texts read as missing values: pyarrow's defaults, "none" (a data logger's empty
+#: channel; Python's None written as text) and a lone "." (SAS's missing number, as in a
+#: fatigue table's first half cycle); each also after the blank of a ", " delimiter
 #: (``0.50, , 0.113``).
-_NULL_TEXTS = frozenset(pacsv.ConvertOptions().null_values) | {"None", "none"}
+_NULL_TEXTS = frozenset(pacsv.ConvertOptions().null_values) | {"None", "none", "."}
 NULL_VALUES = _NULL_TEXTS | {" " + text for text in _NULL_TEXTS}
 #: Single-byte encodings tried when a file is not UTF-8, in order of preference on a tie.
 SINGLE_BYTE_ENCODINGS = ("latin-1", "cp1250")
@@ -441,8 +443,12 @@ def detect_dialect(
 ) -> tuple[str, str, int]:
     """Find the delimiter and decimal mark that make the most rows numeric.
 
-    The dialect with the most numeric rows of one width wins, then the one
-    reading more cells as numbers than as text, then the first in `delimiters`.
+    The dialect with the most numeric rows of one width wins, then the one that
+    splits the line above its first numeric row (the names row) as wide, then the
+    one reading more cells as numbers than as text, then the first in `delimiters`:
+    a comma-separated log whose last column holds a raw frame with semicolons
+    (``...,No Error,DTA;1;182;233;0;!``) has as many rows of numbers split at
+    the semicolons, but its names row is split at the commas only.
 
     Parameters
     ----------
@@ -468,7 +474,7 @@ def detect_dialect(
         If no dialect gives numeric rows.
     """
     sample = [line for line in lines if line.strip()][-DIALECT_LINES:]
-    best: tuple[tuple[int, int], str, str, int] = ((0, 0), ",", ".", 0)
+    best: tuple[tuple[int, bool, int], str, str, int] = ((0, False, 0), ",", ".", 0)
     for delimiter in delimiters:
         if delimiter == BLANKS and best[0][0]:
             break  # blanks only when no delimiter gives a table: they drop empty cells
@@ -479,11 +485,12 @@ def detect_dialect(
                 continue
             width = Counter(len(row) for row in numeric).most_common(1)[0][0]
             fitting = [row for row in numeric if len(row) == width]
-            score = (len(fitting), sum(_balance(row, decimal) for row in fitting))
+            score = (len(fitting), _names_as_wide(lines, delimiter, decimal, width),
+                     sum(_balance(row, decimal) for row in fitting))
             if score > best[0]:
                 best = (score, delimiter, decimal, width)
     if best[0][0] == 0:
-        if sum(is_number(line.strip(" \t;,"), ".") for line in sample) > len(sample) / 2:
+        if _one_column_of_numbers(sample):
             raise LayoutError(
                 "the file holds one column of numbers: a run needs its channels side by "
                 "side (time and force, or force and gauge)",
@@ -491,10 +498,13 @@ def detect_dialect(
                 hint="export the test with its time (or its displacement) beside the force",
             )
         if not any(_has_two_numbers(line) for line in sample):
+            named = _data_file_named(lines, name)
             raise EmptyFileError(
                 "no data rows: the file holds only text lines",
                 file=name, row=len(lines) + 1,
-                hint="the machine wrote no measurements: export the test again",
+                hint=f"the file names {named!r}: the measurements may be there; give that "
+                     "file in the run sheet" if named else
+                     "the machine wrote no measurements: export the test again",
             )
         texts = _text_in_every_row(sample, tuple(d for d in delimiters if d != BLANKS))
         if texts:
@@ -512,6 +522,41 @@ def detect_dialect(
             'give the format in the run sheet (format = "xlsx" or "tdms") if it is not text',
         )
     return best[1], best[2], best[3]
+
+
+def _names_as_wide(lines: list[str], delimiter: str, decimal: str, width: int) -> bool:
+    """Whether the last non-blank line above the first numeric row of `lines` splits
+    into `width` fields (a names row over the table)."""
+    above = None
+    for line in lines:
+        if _numeric_row(split_fields(line, delimiter), decimal, delimiter == BLANKS):
+            break
+        if line.strip():
+            above = line
+    return above is not None and len(split_fields(above, delimiter)) == width
+
+
+def _one_column_of_numbers(sample: list[str]) -> bool:
+    """Whether `sample`'s lines are mostly single numbers, or end in three or more (a
+    meter's log of readings under its settings)."""
+    single = [is_number(line.strip(" \t;,"), ".") for line in sample]
+    trailing = len(single) - next((at + 1 for at in range(len(single) - 1, -1, -1)
+                                   if not single[at]), 0)
+    return sum(single) > len(sample) / 2 or trailing >= 3
+
+
+#: A file name with the extension of a data file, as a header file names its data file
+#: (an HBM catman ``.TSX``'s ``DATAFILE=C:\...\DD11_7_3.ASC``).
+_DATA_FILE = re.compile(r"[^\\/:=\s\"',;]+\.(?:asc|csv|txt|dat|tdms|lvm|xlsx?|bin)\b",
+                        re.IGNORECASE)
+
+
+def _data_file_named(lines: list[str], name: str) -> str | None:
+    """The last data file `lines` name other than the file `name` itself, or None."""
+    own = PureWindowsPath(str(name)).name.casefold()  # either separator
+    found = [match for line in lines for match in _DATA_FILE.findall(line)
+             if match.casefold() != own]
+    return found[-1] if found else None
 
 
 def _text_in_every_row(sample: list[str], delimiters: tuple[str, ...]) -> list[str]:

@@ -298,7 +298,7 @@ def test_wavematrix_total_time_and_cycles_are_taken_over_the_steps(write, langua
     np.testing.assert_allclose(table["time"], 500 + np.arange(9) / 1000)
     np.testing.assert_array_equal(table["cycle_count"], 992 + np.arange(9) // 3)
     np.testing.assert_allclose(table["force"], -1 - np.arange(9) / 10)
-    assert [warning.split(" starts again")[0] for warning in meta.warnings
+    assert [warning.split(" is named as")[0] for warning in meta.warnings
             if "beside the whole test's" in warning] == [f"column {names[1]!r}",
                                                          f"column {names[3]!r}"]
     table, _ = read_table(path, kind=kind, columns={"time": names[1], "cycle_count": names[3]})

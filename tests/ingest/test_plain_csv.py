@@ -248,6 +248,43 @@ def test_one_column_of_numbers_is_refused_as_such(write):
     with pytest.raises(LayoutError, match="one column of numbers") as caught:
         read_table(write("logfile_long1.csv", text))
     assert "beside the force" in caught.value.hint
+    # the same meter's short log: more settings lines than readings, the readings last
+    short = ("6B:6C:05\n15.05.22\n16:14:25\nLogNo=002\nUnit=kN\nMode=REL\nRelZero=0.02\n"
+             "Speed=40\nTrig=0.70\nStop=0.00\nPre=3\nCatch=15\n0.12\n0.35\n0.61\n0.40\n0.08\n")
+    with pytest.raises(LayoutError, match="one column of numbers"):
+        read_table(write("logfile0.csv", short))
+
+
+def test_a_lone_point_is_a_missing_value(write):
+    # a real low-cycle fatigue table (SAS export): "." where a half cycle has no value
+    text = ('"Cycle","Data State","Max Stress Mpa","Min Stress Mpa","Time Max Stress Sec"\n'
+            '1,"CapPass",".",-265.69,"."\n2,"CapPass",283.85,-312.00,70.74\n'
+            '3,"CapPass",294.43,-315.45,128.53\n')
+    table, meta = read_table(write("HTM_A19_PeakStress.csv", text), kind="engagement",
+                             columns={"force": "Max Stress Mpa"}, units={"force": "N"})
+    np.testing.assert_allclose(table["force"], [np.nan, 283.85, 294.43])
+    np.testing.assert_allclose(table["time"], [np.nan, 70.74, 128.53])
+    assert meta.rows == 3
+
+
+def test_a_load_loggers_units_after_underscores_and_its_held_peak(write):
+    # a real load-cell logger (HX711): '#' before every settings line, the units after an
+    # underscore, and the peak held so far beside the reading
+    text = ("# Test Name: Test 1\n# Peak Force: 3.379 kN\n# Notes: \n#\n"
+            "timestamp_s,current_kN,peak_kN\n0.294,0.068,0.068\n0.830,0.412,0.412\n"
+            "1.278,0.250,0.412\n")
+    table, meta = read_table(write("Test_1_210645.csv", text), kind="engagement")
+    assert [(column.name, column.role, column.unit) for column in meta.columns] == [
+        ("timestamp", "time", "s"), ("current", "force", "kN"), ("peak", None, "kN")]
+    np.testing.assert_allclose(table["force"], [68.0, 412.0, 250.0])
+    assert meta.preamble == {"Test Name": "Test 1", "Peak Force": "3.379 kN", "Notes": ""}
+    assert ("column 'peak' is a peak held beside the reading itself ('current'): not used "
+            '(say otherwise in the run sheet, columns = {force = "..."})') in meta.warnings
+    # a name that gives no role keeps a one-letter last word: N may number the samples
+    table, meta = read_table(write("n.csv", "time_s,Sample_N,load_kN\n0,1,2\n1,2,3\n"),
+                             kind="engagement")
+    assert [(column.name, column.role, column.unit) for column in meta.columns] == [
+        ("time", "time", "s"), ("Sample_N", None, None), ("load", "force", "kN")]
 
 
 def test_a_results_table_with_its_statistics_is_refused_as_such(write):

@@ -94,6 +94,10 @@ def test_empty(write, content, message):
         (["t|f|g", "1|2|3"], ("|", ".", 3)),
         (["date,f,g", "2021-01-01,1.5,2.5", "2021-01-02,1.5,2.5"], (",", ".", 3)),
         (["t,f", "0,5,1,5", "1,5,2,5"], (",", ".", 4)),
+        # a fatigue rig's log ending in its raw serial frame: split at the semicolons, the
+        # rows hold more numbers, but the names row is split at the commas only
+        (["t,f1,f2,state,frame", "0.5,1.5,2.5,OK,DTA;1;15;25;4;5;!",
+          "1.5,1.6,2.6,OK,DTA;2;16;26;4;5;!"], (",", ".", 5)),
     ],
 )
 def test_dialect(lines, dialect, tmp_path):
@@ -105,6 +109,19 @@ def test_header_only_is_empty(tmp_path):
         detect_dialect(["Machine : Amsler", "", "time [s],force [kN]"], tmp_path)
     with pytest.raises(EmptyFileError, match="no data rows"):
         detect_dialect(["Points: 51", "Cycles: 3 5", "end"], tmp_path)
+
+
+def test_a_header_file_naming_its_data_file_points_to_it(tmp_path):
+    # a real HBM catman .TSX: the test's settings, and the file its measurements went to
+    lines = ["CATMAN TEST FILE", "Messwertdatei=DD11_7_3.ASC", "Standardmessrate=50 Hz",
+             r"DATAFILE=C:\Users\Ch\Desktop\2007_HTT\DD11_7_3.ASC"]
+    with pytest.raises(EmptyFileError, match="no data rows") as caught:
+        detect_dialect(lines, tmp_path / "DD11_7_3.TSX")
+    assert caught.value.hint.startswith("the file names 'DD11_7_3.ASC': the measurements")
+    assert caught.value.row == 5  # where the data would have begun
+    with pytest.raises(EmptyFileError) as own:  # a file naming itself names no other
+        detect_dialect(lines[:3], tmp_path / "dd11_7_3.asc")
+    assert own.value.hint == "the machine wrote no measurements: export the test again"
 
 
 def test_no_numbers_is_layout_error(tmp_path):
