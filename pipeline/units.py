@@ -20,6 +20,9 @@ ureg.define("@alias turn = rev")
 # "Ns" (an impact rig's impulse): a newton second, as written; pint alone reads it only in
 # lower case, as nanoseconds, which would make an impulse a time.
 ureg.define("newton_second = newton * second = Ns")
+# Microstrain, as strain-gauge amplifiers and Japanese loggers write it (µε, με with the
+# micro sign or the Greek mu; Kyowa's µST): a ratio of 1e-6.
+ureg.define("microstrain = 1e-6 = µε = με = µST = μST")
 # Russian (Cyrillic) unit symbols, as Russian testing-machine software writes them.
 for _definition in ("с = second", "мс = millisecond", "мин = minute", "ч = hour",
                     "Н = newton", "кН = kilonewton", "кгс = kilogram_force",

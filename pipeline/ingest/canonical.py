@@ -48,6 +48,7 @@ from pipeline.ingest.decimalshift import decimal_shifts, step_blocks
 from pipeline.ingest.names import (
     gauge_kind,
     is_auxiliary,
+    is_cycle_statistic,
     is_held_peak,
     is_humidity,
     is_unmeasured,
@@ -63,10 +64,13 @@ from pipeline.ingest.specimens import choose
 from pipeline.ingest.table import GAP_FACTOR, ROLES, ColumnInfo, TableMetadata
 from pipeline.ingest.unitparse import (
     FORCE_ROLES,
+    MICRO_ALONE,
     ROLE_SI_UNIT,
     is_mass_unit,
+    is_micro_alone,
     is_strain_unit,
     si_factor,
+    unit_fits,
     unit_misfits,
 )
 
@@ -259,33 +263,46 @@ def settle(
 
 
 def _warn_unnamed_strains(raw: RawColumns, empty: set[int]) -> None:
-    """Warn of each column in a strain unit whose name gives it no role: an extensometer
-    named in a language the readers do not know (``Rek 1``, ``Töjning 1``) would be passed
-    over for the crosshead without a word."""
+    """Warn of each column in a strain unit (or a micro sign alone, which may be one) whose
+    name gives it no role: an extensometer named in a language the readers do not know
+    (``Rek 1``, ``Töjning 1``, a Japanese logger's ``表-縦 μ``) would be passed over for the
+    crosshead without a word."""
     candidates = raw.candidates.indexes()
     for index, name in enumerate(raw.names):
-        if (index not in candidates and index not in empty and is_strain_unit(raw.units[index])
+        unit = raw.units[index]
+        micro = is_micro_alone(unit)
+        if (index not in candidates and index not in empty
+                and (micro or is_strain_unit(unit))
                 and not (is_unmeasured(name) or is_humidity(name))):
             shown = display_name(raw.names, index)
+            said = f"{MICRO_ALONE}" if micro else "a strain's unit"
+            given = ', units = {gauges = ["µε"]}' if micro else ""
             raw.metadata.warnings.append(
-                f"column {shown!r} reads in {raw.units[index]!r}, a strain's unit, but its name "
-                "is not one the readers know: not used (if it is an extensometer's strain, "
-                f"name it in the run sheet, columns = {{gauges = [\"{shown}\"]}})")
+                f"column {shown!r} reads in {unit!r}, {said}, but its name is not one the "
+                "readers know: not used (if it is an extensometer's strain, name it in the "
+                f"run sheet, columns = {{gauges = [\"{shown}\"]}}{given})")
 
 
 def _refuse_a_table_of_peaks(raw: RawColumns) -> None:
-    """Refuse a table of one row per cycle, whose force columns are its peaks and valleys."""
-    forces = raw.candidates.roles.get("force", [])
-    partners = [peak_partner(raw.names, index) for index in forces]
-    if forces and all(partners) and "force" not in raw.candidates.explicit:
-        raise LayoutError(
-            f"the force columns {raw.names[forces[0]]!r} and {partners[0]!r} are a cycle's "
-            "extremes: the file is a table of one row per cycle, not the samples of a log",
-            file=raw.metadata.file, row=raw.metadata.header_line,
-            hint="export the test's raw data (every sample) rather than its trends or "
-                 "peaks table, or name the force column in the run sheet, "
-                 "columns = {force = \"...\"}",
-        )
+    """Refuse a table of one row per cycle: its force columns, or without one its gauge
+    columns, are each cycle's peaks and valleys (and amplitudes)."""
+    roles = raw.candidates.roles
+    role = "force" if roles.get("force") else "gauge"
+    measured = roles.get(role, [])
+    if (not measured or role in raw.candidates.explicit
+            or not all(is_cycle_statistic(raw.names, index) for index in measured)):
+        return
+    first = next(index for index in measured if peak_partner(raw.names, index) is not None)
+    key = SHEET_KEY[role]
+    raise LayoutError(
+        f"the {role} columns {raw.names[first]!r} and {peak_partner(raw.names, first)!r} are "
+        "a cycle's extremes: the file is a table of one row per cycle, not the samples of a "
+        "log",
+        file=raw.metadata.file, row=raw.metadata.header_line,
+        hint="export the test's raw data (every sample) rather than its trends or "
+             f"peaks table, or name the {role} column in the run sheet, "
+             f"columns = {{{key} = \"...\"}}",
+    )
 
 
 def _other_specimens(raw: RawColumns, specimen: str | int | None) -> set[int]:
@@ -495,18 +512,20 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
 #: Of several candidates for a role, the columns preferred, with why the others are not
 #: used: the testing machine's over a second instrument's; for a time or a count, the whole
 #: test's over one that starts again (a step's, a cycle's, one since a counter's reset);
-#: for a force, the measured load over one turned to a kind of test's sign, and the reading
-#: over a peak held.
+#: for a force, the measured load over one turned to a kind of test's sign, the reading
+#: over a peak held, and one in a unit of force over one without.
 _PREFERRED = (
-    (None, lambda names, at: not is_auxiliary(names[at]),
+    (None, lambda raw, at: not is_auxiliary(raw.names[at]),
      "is a second instrument's {role} beside the machine's"),
-    (frozenset({"time", "cycle_count"}), lambda names, at: says_total(names[at]),
+    (frozenset({"time", "cycle_count"}), lambda raw, at: says_total(raw.names[at]),
      "is named as one that starts again (a step's, a cycle's, since a reset) beside the "
      "whole test's"),
-    (frozenset({"force"}), lambda names, at: not says_sign_convention(names[at]),
+    (frozenset({"force"}), lambda raw, at: not says_sign_convention(raw.names[at]),
      "is the load in one kind of test's sign, worked out from the measured one"),
-    (frozenset({"force"}), lambda names, at: not is_held_peak(names, at),
+    (frozenset({"force"}), lambda raw, at: not is_held_peak(raw.names, at),
      "is a peak held beside the reading itself"),
+    (frozenset({"force"}), lambda raw, at: unit_fits(raw.units[at], "force"),
+     "has no unit of force beside one that has"),
 )
 
 
@@ -517,7 +536,7 @@ def _preferred(raw: RawColumns, live: list[int], role: str) -> list[int]:
     for roles, keeps, why in _PREFERRED:
         if roles is not None and role not in roles:
             continue
-        kept = [index for index in live if keeps(raw.names, index)]
+        kept = [index for index in live if keeps(raw, index)]
         if not kept or len(kept) == len(live):
             continue
         shown = ", ".join(repr(display_name(raw.names, index)) for index in kept)

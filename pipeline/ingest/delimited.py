@@ -89,7 +89,7 @@ from pipeline.ingest.textbody import (
     trim_truncated_tail,
     truncated_warning,
 )
-from pipeline.ingest.unitparse import spellings, unit_fits
+from pipeline.ingest.unitparse import is_micro_alone, is_strain_unit, spellings, unit_fits
 
 #: The preamble settings an oscilloscope gives its time axis's unit under (Tektronix; Rohde
 #: & Schwarz's RTH writes the singular).
@@ -103,6 +103,9 @@ UNITS_ROW_KEYS = frozenset({"engineering unit", "engineering units", "unit", "un
 #: (not ``s``, which a German export gives a displacement, nor ``min``, a minimum, nor
 #: ``ms``, which a KEYENCE logger gives the milliseconds of its date-time column).
 TIME_UNIT_NAMES = frozenset({"sec", "secs", "seconds", "minutes", "mins", "hours", "hrs"})
+#: Column names that are a unit of force, folded: the column holds the force in that unit (a
+#: pull tester's ``Distance, Newtons``). Not ``N`` alone, which may number the samples.
+FORCE_UNIT_NAMES = frozenset({"newton", "newtons", "kilonewton", "kilonewtons", "lbf", "kgf"})
 #: Units of time a name gives beside ``elapsed`` only (``elapsed_ms``, ``s_elapsed``).
 ELAPSED_UNITS = frozenset({"ms", "s", "min", "h"})
 #: The warning of a file whose decimal comma is also its delimiter.
@@ -148,7 +151,7 @@ def _trailing_unit_words(cells: list[str]) -> list[tuple[str, str | None]] | Non
     if len(named) >= 2 and all(
             name and not unit.isdigit() and spellings(unit) for name, unit in named):
         return [(_without_in(name), unit or None) for name, _, unit in split]
-    fitting = [(name.strip(), unit) if _unit_of_its_name(name.strip(), unit, blank)
+    fitting = [(name.strip(), unit) if _unit_after_its_name(name.strip(), unit, blank)
                else (cell.strip(), None)
                for cell, (name, blank, unit) in zip(cells, map(_last_word, cells), strict=True)]
     return fitting if any(unit for _, unit in fitting) else None
@@ -176,12 +179,15 @@ def _time_unit_of_the_scope(names: list[str], units: list[str | None],
     return given
 
 
-def _time_unit_of_its_name(names: list[str], units: list[str | None],
-                           warnings: list[str]) -> list[str | None]:
+def _unit_of_its_name(names: list[str], units: list[str | None],
+                      warnings: list[str]) -> list[str | None]:
     """`units`, a column without one whose name is a unit of time (:data:`TIME_UNIT_NAMES`: a
     logger's ``seconds``, an oscilloscope's ``sec`` beside ``Volt1``), alone or with
-    ``elapsed`` (a phone logger's ``seconds_elapsed``), given that unit, with a note."""
-    given = [time_unit_named(name) if unit is None else unit
+    ``elapsed`` (a phone logger's ``seconds_elapsed``), or a unit of force
+    (:data:`FORCE_UNIT_NAMES`: ``Newtons``), given that unit, with a note."""
+    given = [(time_unit_named(name)
+              or (name.strip() if fold(name.strip()) in FORCE_UNIT_NAMES else None))
+             if unit is None else unit
              for name, unit in zip(names, units, strict=True)]
     warnings += [f"column {name!r}: unit {new!r} from its name"
                  for name, unit, new in zip(names, units, given, strict=True) if unit != new]
@@ -271,17 +277,20 @@ def _without_in(name: str) -> str:
     return " ".join(words[:-1] if words[-1:] == ["in"] else words)
 
 
-def _unit_of_its_name(name: str, unit: str, separator: str) -> bool:
+def _unit_after_its_name(name: str, unit: str, separator: str) -> bool:
     """Whether `unit`, after `name` and `separator`, is a unit of the role `name` gives
-    (``荷重`` and ``kN``: force); or, after an underscore and a name that gives no role,
-    a unit of force of two letters or more (a load logger's ``current_kN``,
-    ``peak_kN``): ``N`` alone may be a number's mark (``Sample_N``)."""
-    if not (name and unit):
+    (``荷重`` and ``kN``: force; a strain's ratio for a gauge); or, after a name that gives
+    no role, a strain's ratio or a micro sign alone after a blank (a Japanese logger's
+    ``表-縦 με``, ``表-横 μ``: such a column is warned of), or a unit of force of two
+    letters or more after an underscore (a load logger's ``current_kN``, ``peak_kN``):
+    ``N`` alone may be a number's mark (``Sample_N``)."""
+    if not (name and unit) or unit.isdigit():  # a number ends a name (Weg 1, gauge_1)
         return False
     role = match_role(name)
     if role is not None:
-        return unit_fits(unit, role)
-    return separator == "_" and len(unit) > 1 and unit_fits(unit, "force")
+        return unit_fits(unit, role) or (role == "gauge" and is_strain_unit(unit))
+    return ((separator == "_" and len(unit) > 1 and unit_fits(unit, "force"))
+            or (separator == " " and (is_strain_unit(unit) or is_micro_alone(unit))))
 
 
 def metadata(head: Head, spec: TableSpec, layout: str, preamble: dict[str, str]) -> TableMetadata:
@@ -330,7 +339,7 @@ def text_header(
     names, units = header_columns(spec)
     meta = metadata(head, spec, layout, preamble)
     units = _time_unit_of_the_scope(names, units, preamble, meta.warnings)
-    units = _time_unit_of_its_name(names, units, meta.warnings)
+    units = _unit_of_its_name(names, units, meta.warnings)
     if spec.units_index is None:
         units = _units_of_a_preamble_row(spec, names, units, meta.warnings)
     units = _units_of_unit_columns(head, spec, names, units, meta.warnings)

@@ -177,7 +177,7 @@ TRANSVERSE_NAMES = (
     "width", "width change", "transverse", "transverse strain", "lateral", "lateral strain",
     "thickness", "thickness change", "breite", "breitenänderung", "breitenaenderung",
     "dicke", "dickenänderung", "dickenaenderung", "querdehnung", "szerokość", "grubość",
-    "anchura", "espesor",
+    "anchura", "espesor", "横", "横 ひずみ", "横ひずみ", "横歪み",
 )
 #: Words of a channel that holds what the controller asked for (a setpoint, a command),
 #: not what a sensor measured: ``"Ch 1 Kraft Sollwert"``, ``"Load Command"``,
@@ -233,8 +233,16 @@ CRACK_WORDS = frozenset({"crack", "cracks"})
 #: beside the load it measured (Bluehill's ``Compressive load``: ``Load`` with its sign
 #: turned, for a compression test's plots).
 SIGN_CONVENTION_WORDS = frozenset({"compressive", "tensile"})
-#: The label of :data:`TRANSVERSE_NAMES` among the role keywords: it wins as a role would.
+#: Names of other quantities than a test's: a count that is no cycle count (a load-cell
+#: rig's ``sample_count``, the readings it averaged) and a temperature (``Temp(°)``, whose
+#: degrees are no angle). Such a column takes no role, not even from its unit.
+OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points count",
+                        "reading count", "readings count", "scan count", "temp",
+                        "temperature", "temperatur", "température", "temperatura", "温度")
+#: The labels of :data:`TRANSVERSE_NAMES` and :data:`OTHER_QUANTITY_NAMES` among the role
+#: keywords: each wins as a role would.
 _TRANSVERSE = "transverse"
+_OTHER_QUANTITY = "other quantity"
 
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^()]*)\)"
                         r"|<(?P<ang>[^<>]*)>|【(?P<jis>[^【】]*)】|（(?P<wide>[^（）]*)）)\s*$")
@@ -267,7 +275,8 @@ _KEYWORDS: tuple[tuple[tuple[str, ...], str], ...] = tuple(
     for language in COLUMN_NAMES.values()
     for role, words in language.items()
     for word in words
-) + tuple((tokens(word), _TRANSVERSE) for word in TRANSVERSE_NAMES)
+) + tuple((tokens(word), _TRANSVERSE) for word in TRANSVERSE_NAMES
+          ) + tuple((tokens(word), _OTHER_QUANTITY) for word in OTHER_QUANTITY_NAMES)
 
 
 def header_text(header: str) -> str:
@@ -405,7 +414,7 @@ def match_role(name: str) -> str | None:
     if tokens(name)[-1:] == ("id",):
         return None
     role = _best_match(name, _KEYWORDS)
-    return (None if role == _TRANSVERSE or is_command(name) or is_derived(name)
+    return (None if role in (_TRANSVERSE, _OTHER_QUANTITY) or is_command(name) or is_derived(name)
             or is_crack(name) else role)
 
 
@@ -437,15 +446,17 @@ def is_derived(name: str) -> bool:
 
 def is_unmeasured(name: str) -> bool:
     """Whether a column name says it holds no measurement along the specimen: a transverse
-    channel, a setpoint or command, a value worked out from others, one part of a clock
-    reading, or a crack's record (:data:`CRACK_WORDS`). Such a column takes no role, not
-    even from its unit.
+    channel (:data:`TRANSVERSE_NAMES`), another quantity (:data:`OTHER_QUANTITY_NAMES`), a
+    setpoint or command, a value worked out from others, one part of a clock reading, or a
+    crack's record (:data:`CRACK_WORDS`). Such a column takes no role, not even from its
+    unit.
 
     >>> [is_unmeasured(name) for name in ("Querdehnung", "Load Command", "Minute",
-    ...                                   "Crack_length", "Load")]
-    [True, True, True, True, False]
+    ...                                   "Crack_length", "sample_count", "Temp", "Load")]
+    [True, True, True, True, True, True, False]
     """
-    return (is_transverse(name) or is_command(name) or is_derived(name)
+    return (_best_match(name, _KEYWORDS) in (_TRANSVERSE, _OTHER_QUANTITY)
+            or is_command(name) or is_derived(name)
             or is_clock_part(name) or is_crack(name))
 
 
@@ -634,6 +645,18 @@ def is_held_peak(names: list[str], index: int) -> bool:
             and peak_partner(names, index) is None)
 
 
+def _extreme(name: str) -> tuple[tuple[str, ...], str] | None:
+    """The words of `name` but its one extreme word (:data:`_PEAK_WORDS`), and the side of
+    that word (``"max"`` or ``"min"``); None without one such word."""
+    words = tokens(name)
+    found = [(position, _PEAK_TOKENS[word]) for position, word in enumerate(words)
+             if word in _PEAK_TOKENS]
+    if len(found) != 1:
+        return None
+    position, side = found[0]
+    return words[:position] + words[position + 1:], side
+
+
 def peak_partner(names: list[str], index: int) -> str | None:
     """The column that is the other extreme of column `index`'s channel, or None.
 
@@ -646,20 +669,30 @@ def peak_partner(names: list[str], index: int) -> str | None:
     >>> peak_partner(names, 1), peak_partner(names, 3)
     ('Kraft:Minimum (N)', None)
     """
-    def extreme(name: str) -> tuple[tuple[str, ...], str] | None:
-        words = tokens(name)
-        found = [(position, _PEAK_TOKENS[word]) for position, word in enumerate(words)
-                 if word in _PEAK_TOKENS]
-        if len(found) != 1:
-            return None
-        position, side = found[0]
-        return words[:position] + words[position + 1:], side
-
-    mine = extreme(names[index])
+    mine = _extreme(names[index])
     if mine is None:
         return None
     for other in names:
-        theirs = extreme(other)
+        theirs = _extreme(other)
         if theirs is not None and theirs[0] == mine[0] and theirs[1] != mine[1]:
             return other
     return None
+
+
+def is_cycle_statistic(names: list[str], index: int) -> bool:
+    """Whether column `index` is one statistic of each cycle: one of a cycle's extremes
+    (:func:`peak_partner`), or the amplitude of a channel whose extremes are there
+    (WaveMatrix's ``Strain:Amplitude`` beside ``Strain:Maximum``, ``Strain:Minimum``).
+
+    >>> names = ["Cycles", "Strain:Maximum", "Strain:Minimum", "Strain:Amplitude", "Load"]
+    >>> [is_cycle_statistic(names, index) for index in range(5)]
+    [False, True, True, True, False]
+    """
+    if peak_partner(names, index) is not None:
+        return True
+    words = tokens(names[index])
+    if "amplitude" not in words:
+        return False
+    channel = tuple(word for word in words if word != "amplitude")
+    return any((found := _extreme(other)) is not None and found[0] == channel
+               for other in names)

@@ -18,6 +18,10 @@ from pipeline.ingest.sniff import is_number, split_fields
 #: ``14:43:46``) nor a drive letter's (``C:\``).
 _KEY_COLON = re.compile(r"(?<!\d):|(?<=\d):(?!\d)")
 _DRIVE = re.compile(r"[A-Za-z]:[\\/]")
+#: A file's signature of fields between bars, as MTS 793 opens its exports with
+#: (``MTS793|MPT|ESR|1|2|.|/|:|51|1|1|A``: its decimal, date and time signs among them):
+#: kept whole as a key.
+_SIGNATURE = re.compile(r"[^|\s]+(?:\|[^|\s]*){3,}")
 #: Comment marks some loggers set before each settings line (Scopy: ``;Device,M2K``).
 _COMMENT_MARKS = ";#"
 #: A unit in brackets, as a units row writes it (``(mm)``, ``[N]``, ``(%)``).
@@ -84,7 +88,9 @@ def _key_and_value(line: str, delimiter: str) -> tuple[str | None, str]:
             return None, ""
         first = fields[0]
         separators = [at for at in (_key_colon(first), first.find(" =")) if at >= 0]
-        if separators:
+        if _SIGNATURE.fullmatch(first):  # its ':' is one of the signs it lists
+            key, values = first, fields[1:]
+        elif separators:
             at = min(separators)
             key, tail = first[:at], first[at:].lstrip(" ")[1:]
             values = [tail, *fields[1:]]

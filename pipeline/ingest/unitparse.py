@@ -73,9 +73,23 @@ def is_sample_interval(text: str) -> bool:
     return found is not None and unit_role(found["unit"]) == "time"
 
 
+#: A micro sign alone: pint's micrometre (micron), but a Japanese logger's microstrain
+#: (``表-縦 μ`` beside ``変位 mm``). No unit is read from it, rather than a strain of 1e-6
+#: taken for a micrometre.
+AMBIGUOUS_MICRO = frozenset({"µ", "μ"})
+
+#: What is said of a micro sign alone.
+MICRO_ALONE = "a micro sign alone, micrometres (µm) or microstrain (µε)"
+
+
+def is_micro_alone(text: str | None) -> bool:
+    """Whether `text` is a micro sign alone (:data:`AMBIGUOUS_MICRO`), bracketed or not."""
+    return (text or "").strip().strip("()[]{}").strip() in AMBIGUOUS_MICRO
+
+
 #: What to tell a user whose unit is not understood.
 ACCEPTED_UNITS = ("N, kN, daN, kgf (kG), tf, lbf, g (in a force column); mm, µm (um), m, in; "
-                  "s, ms, min, h; deg, rad; m/s")
+                  "%, mm/mm, µε (microstrain) for a strain; s, ms, min, h; deg, rad; m/s")
 
 
 def spellings(text: str) -> list[str]:
@@ -94,6 +108,8 @@ def spellings(text: str) -> list[str]:
     >>> spellings("KN"), spellings("Pa")
     (['kn', 'kN'], ['Pa'])
     """
+    if is_micro_alone(text):
+        return []
     text = text.strip().strip("()[]{}").strip()
     candidates = [text]
     if not _parses(text) or _case_says_nothing(text):
@@ -267,7 +283,8 @@ def si_factor(
     found = spellings(text)
     if not found:
         raise UnitError(
-            f"unknown unit {text!r} in {source}",
+            f"unknown unit {text!r} in {source}"
+            + (f": {MICRO_ALONE}" if is_micro_alone(text) else ""),
             file=file, row=row, column=column,
             hint=f"write a unit pint understands ({ACCEPTED_UNITS})",
         )

@@ -184,7 +184,7 @@ def test_key_equals_value_preamble_units_in_angle_brackets_and_a_width_change(wr
 
 
 def test_run_sheet_columns_pick_among_candidates(write):
-    text = BLUEHILL.replace("Segment ID", "Load 2")
+    text = BLUEHILL.replace("Segment ID", "Load 2").replace("(N),,", "(N),(N),")
     with pytest.raises(ColumnError, match="could be the force"):
         read_table(write("b.csv", text))
     table, meta = read_table(write("b.csv", text), columns={"force": "load"})
@@ -233,6 +233,13 @@ def test_run_sheet_columns_pick_among_candidates(write):
         # a real LabVIEW header: one key per line, over as many channels
         (["X_Dimension\tTime\tTime\tTime", "X0\t0.0E+0\t0.0E+0\t0.0E+0"],
          {"X_Dimension": "Time Time Time", "X0": "0.0E+0 0.0E+0 0.0E+0"}),
+        # a real MTS 793 export's first line: its signature, ':' among its signs
+        (["MTS793|MPT|ESR|1|2|.|/|:|51|1|1|A\t\t", "Fecha:       01-09-2025"],
+         {"MTS793|MPT|ESR|1|2|.|/|:|51|1|1|A": "", "Fecha": "01-09-2025"}),
+        # a real load-cell logger's: a comment mark before every line, a lone one between
+        (["# Test Name: Test 1", "# Peak Force: 3.379 kN", "#"],
+         {"Test Name": "Test 1", "Peak Force": "3.379 kN"}),
+        (["# of cycles: 5"], {"# of cycles": "5"}),  # alone, the mark may be the key's
         # a real force-sensor logger's: a blank row padded with delimiters is no key
         (["Data Collection Duration (s):,1,,,,,,", "Force Sensor Sample rate (Hz):,1000,,,,,,",
           ",,,,,,,"],
@@ -259,6 +266,18 @@ def test_a_table_of_each_cycles_peaks_is_not_read_as_a_log(write):
                                           "extremes") as caught:
         read_table(write("trends.csv", TRENDS))
     assert "raw data" in caught.value.hint
+
+
+def test_a_table_of_each_cycles_gauge_extremes_is_not_read_as_a_log(write):
+    # a real Instron 8800 low-cycle fatigue table without its load channel: the position's
+    # and the strain's extremes, and the strain's amplitude, one row per cycle
+    text = ('Total Cycles,"Position:Maximum (mm)","Position:Minimum (mm)",'
+            '"Strain:Maximum (%)","Strain:Minimum (%)","Strain:Amplitude (%)"\n'
+            "1,37.938,35.867,0.522,-1.196,0.859\n2,38.797,35.877,1.219,-1.196,1.207\n")
+    with pytest.raises(LayoutError, match="the gauge columns 'Position:Maximum' and "
+                                          "'Position:Minimum' are a cycle's extremes") as caught:
+        read_table(write("10-13.csv", text), kind="wear")
+    assert 'columns = {gauges = "..."}' in caught.value.hint
 
 
 def test_a_named_force_is_read_and_a_raw_force_beside_its_extremes_is_a_choice(write):

@@ -10,6 +10,7 @@ from pipeline.ingest.names import (
     is_command,
     is_derived,
     is_transverse,
+    is_unmeasured,
     match_role,
     repeats,
     split_name_unit,
@@ -118,9 +119,18 @@ def test_fold_drops_case_and_diacritics():
 
 
 @pytest.mark.parametrize("name", ["Breitenänderung", "BREITENAENDERUNG", "Width change",
-                                  "Transverse strain", "Transverse", "Querdehnung"])
+                                  "Transverse strain", "Transverse", "Querdehnung",
+                                  "表-横 ひずみ", "横-平均"])  # a Japanese logger's
 def test_a_channel_across_the_specimen_takes_no_role(name):
     assert match_role(name) is None and is_transverse(name)
+
+
+@pytest.mark.parametrize("name", ["sample_count", "Sample count", "Temp", "Temperature",
+                                  "Temperatur Probe"])
+def test_a_count_of_samples_or_a_temperature_takes_no_role(name):
+    # a load-cell rig's calibration table counts the readings it averaged in sample_count;
+    # an accelerometer logs its temperature in degrees, no angle
+    assert match_role(name) is None and is_unmeasured(name)
 
 
 @pytest.mark.parametrize("name", ["Ch 1 Kraft Sollwert", "Sollwert Kraft", "Load Command",

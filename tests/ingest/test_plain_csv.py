@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from pipeline.errors import ColumnError, LayoutError, ValueParseError
+from pipeline.errors import ColumnError, LayoutError, UnitError, ValueParseError
 from pipeline.ingest import open_log, read_table
 from pipeline.ingest.delimited import time_unit_named
 from pipeline.ingest.sniff import detect_dialect
@@ -378,3 +378,54 @@ def test_settings_as_key_equals_value_above_the_data_are_no_names_row(write):
     np.testing.assert_allclose(table["force"], 9.80665e-3 * np.array([0.0, 12.5, 25.1, 37.4]))
     np.testing.assert_allclose(table["gauge_1"], [0.0, 1.25e-4, 2.5e-4, 3.75e-4])
     assert meta.header_line is None and meta.preamble["UNIT"] == "gf mm"
+
+
+def test_a_raw_reading_without_a_unit_gives_way_to_the_force_in_newtons(write):
+    # a real DIY tensile tester (HX711): the load cell's counts before the force in N
+    text = ("time_s;steps;displacement_mm;force_raw;force_N\n390.355;1;0.0050;1524;0.338\n"
+            "390.455;1;0.0050;1491;0.331\n390.555;2;0.0100;2513;0.557\n")
+    table, meta = read_table(write("PETG_522_001.CSV", text), kind="tensile")
+    np.testing.assert_allclose(table["force"], [0.338, 0.331, 0.557])
+    assert ("column 'force_raw' has no unit of force beside one that has ('force'): not used "
+            '(say otherwise in the run sheet, columns = {force = "..."})') in meta.warnings
+
+
+def test_a_column_named_by_a_unit_of_force_holds_the_force(write):
+    # a real pull tester's log: its readings in newtons under "Newtons"
+    table, meta = read_table(write("15022019-112813.csv",
+                                   "Distance, Newtons\n0.00, 0.00\n0.10, 1.52\n"),
+                             kind="engagement", columns={"time": "Distance"},
+                             units={"time": "s"})
+    np.testing.assert_allclose(table["force"], [0.0, 1.52])
+    assert "column 'Newtons': unit 'Newtons' from its name" in meta.warnings
+
+
+# a real Japanese logger's header (Tokyo Sokki): strain gauges in "μ", microstrain there
+JAPANESE_STRAIN = ("名前,測定日時 ,荷重 kN,変位 mm,表-縦 {unit},表-横 {unit}\n"
+                   "1,2019/11/01 17:06:57,0.064,-0.004,-0.947867,0.947418\n"
+                   "2,2019/11/01 17:06:59,0.104,0,0.947867,0.947418\n")
+
+
+def test_a_micro_sign_alone_is_no_unit_and_its_column_is_warned_of(write):
+    path = write("H300CP_No1.csv", JAPANESE_STRAIN.format(unit="μ"), "cp932")
+    _, meta = read_table(path, kind="tensile")
+    assert [(column.name, column.role, column.unit) for column in meta.columns][2:] == [
+        ("荷重", "force", "kN"), ("変位", "gauge_1", "mm"), ("表-縦", None, "μ"),
+        ("表-横", None, "μ")]
+    assert ("column '表-縦' reads in 'μ', a micro sign alone, micrometres (µm) or "
+            "microstrain (µε), but its name is not one the readers know: not used (if it is "
+            'an extensometer\'s strain, name it in the run sheet, columns = {gauges = '
+            '["表-縦"]}, units = {gauges = ["µε"]})') in meta.warnings
+    assert not any("表-横" in warning for warning in meta.warnings)  # transverse
+    table, _ = read_table(path, kind="tensile", columns={"gauges": ["表-縦"]},
+                          units={"gauges": "µε"})
+    np.testing.assert_allclose(table["strain_1"], [-0.947867e-6, 0.947867e-6])
+    with pytest.raises(UnitError, match="unknown unit 'μ' in the file: a micro sign alone"):
+        read_table(path, kind="tensile", columns={"gauges": ["表-縦"]})
+
+
+def test_microstrain_is_a_strain(write):
+    text = JAPANESE_STRAIN.format(unit="με").replace("表-縦 με", "表-縦 ひずみ με")
+    table, meta = read_table(write("H300CP_No1.csv", text, "cp932"), kind="tensile")
+    np.testing.assert_allclose(table["strain_1"], [-0.947867e-6, 0.947867e-6])
+    assert meta.columns[4].unit == "με"
