@@ -159,9 +159,18 @@ def _trailing_unit_words(cells: list[str]) -> list[tuple[str, str | None]] | Non
 
 def _last_word(cell: str) -> tuple[str, str, str]:
     """`cell` split before its last word: after its last blank, or in a name without one,
-    after its last underscore (a script's ``time_s``, ``force_kN``)."""
+    after its last underscore (a script's ``time_s``, ``force_kN``), a prefix written out
+    before it joined to it (``load_micro_N``: ``load`` in µN, never in N)."""
     text = cell.strip()
-    return text.rpartition(" " if " " in text else "_")
+    name, separator, unit = text.rpartition(" " if " " in text else "_")
+    stem, _, prefix = name.rpartition("_")
+    if separator == "_" and stem and prefix.casefold() in _PREFIXES:
+        return stem, separator, _PREFIXES[prefix.casefold()] + unit
+    return name, separator, unit
+
+
+#: SI prefixes a script writes out before a unit's symbol (``load_micro_N``).
+_PREFIXES = {"nano": "n", "micro": "µ", "milli": "m", "kilo": "k", "mega": "M"}
 
 
 def _time_unit_of_the_scope(names: list[str], units: list[str | None],
@@ -282,14 +291,16 @@ def _unit_after_its_name(name: str, unit: str, separator: str) -> bool:
     (``荷重`` and ``kN``: force; a strain's ratio for a gauge); or, after a name that gives
     no role, a strain's ratio or a micro sign alone after a blank (a Japanese logger's
     ``表-縦 με``, ``表-横 μ``: such a column is warned of), or a unit of force of two
-    letters or more after an underscore (a load logger's ``current_kN``, ``peak_kN``):
-    ``N`` alone may be a number's mark (``Sample_N``)."""
+    letters or more after an underscore (a load logger's ``current_kN``, ``peak_kN``), or
+    of length (a nanoindenter's ``depth_nm``; not ``in``): ``N`` alone may be a number's
+    mark (``Sample_N``), ``m`` a minute's."""
     if not (name and unit) or unit.isdigit():  # a number ends a name (Weg 1, gauge_1)
         return False
     role = match_role(name)
     if role is not None:
         return unit_fits(unit, role) or (role == "gauge" and is_strain_unit(unit))
-    return ((separator == "_" and len(unit) > 1 and unit_fits(unit, "force"))
+    return ((separator == "_" and len(unit) > 1 and unit != "in"
+             and (unit_fits(unit, "force") or unit_fits(unit, "length")))
             or (separator == " " and (is_strain_unit(unit) or is_micro_alone(unit))))
 
 

@@ -139,10 +139,11 @@ def _refuse_tests_one_after_another(head: Head, blocks: list[_Block]) -> None:
         raise LayoutError(
             f"the block of lines {first.start} to {first.stop - 1} starts its time again, at "
             "or before the first block's first time: the file holds "
-            f"{len(restarts) + 1} tests one after another, not one test in blocks",
+            f"{len(restarts) + 1} tests (or a test's steps) one after another, each timed from "
+            "its own start, not one test in blocks",
             file=head.name, row=first.start,
-            hint="export each test to a file of its own, or delete the other tests' lines in "
-                 "a copy of the file")
+            hint="export each test to a file of its own, or delete the other tests' (or "
+                 "steps') lines in a copy of the file")
 
 
 class _Block(NamedTuple):

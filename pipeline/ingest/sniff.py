@@ -40,7 +40,7 @@ from pipeline.ingest.clock import (
     unpadded_milliseconds,
     unread_clock_hint,
 )
-from pipeline.ingest.names import match_role, repeats
+from pipeline.ingest.names import match_role, repeats, split_name_unit
 from pipeline.ingest.source import Source
 from pipeline.ingest.unitparse import (
     NO_UNIT_CELLS,
@@ -588,7 +588,8 @@ def _numeric_row(row: list[str], decimal: str, blanks: bool = False) -> bool:
     """At least two fields, and more numbers (or clock readings, read or not) than texts.
 
     A text cell is allowed so that a table with a text column (a date, a
-    status) is still found; its text column takes no role. A unit of force or
+    status) is still found; its text column takes no role. A clock reading counts only
+    in a cell without another delimiter in it. A unit of force or
     length right after a number counts for neither: a force gauge writes its
     unit beside each value (``1,0.0,gf,0.000,mm,OK``). In a table aligned
     by blanks (`blanks`), where a line of words and numbers splits into fields
@@ -597,7 +598,7 @@ def _numeric_row(row: list[str], decimal: str, blanks: bool = False) -> bool:
     numbers = texts = 0
     after_number = False
     for cell in row:
-        if is_number(cell, decimal) or looks_like_clock(cell):
+        if is_number(cell, decimal) or (looks_like_clock(cell) and not _OTHER_FIELDS.search(cell)):
             numbers += 1
             after_number = True
             continue
@@ -605,6 +606,11 @@ def _numeric_row(row: list[str], decimal: str, blanks: bool = False) -> bool:
             texts += 1
         after_number = False
     return len(row) >= 2 and numbers > texts and not (blanks and texts)
+
+
+#: A delimiter inside a cell: a clock reading there is part of a row split at the wrong
+#: delimiter (``38354132;11:02:46;2`` of ``38354132;11:02:46;2,8;0,0`` split at its commas).
+_OTHER_FIELDS = re.compile(r"[;\t|]")
 
 
 def row_kind(row: list[str], line: str, decimal: str, blanks: bool = False) -> str:
@@ -742,6 +748,12 @@ def find_table(
             + (" (in a table aligned by blanks, separate names that hold a blank by two "
                "blanks or more)" if delimiter == BLANKS else ""),
         )
+    if (0 < len(names) < columns and above >= 0 and units_index is None
+            and not any(match_role(cell) or split_name_unit(cell)[1] for cell in names)
+            and any(cell.strip() for row in rows[data:data + TEXT_ROWS]
+                    for cell in row[len(names):columns])):
+        # narrower than the data, naming nothing: a status or settings line, no names row
+        preamble_end, above, names = data, -1, []
     names = names + [""] * (columns - len(names))
     labels_over = -1
     if len(labels) < 2 and above >= 1:  # labels over the names (Shimadzu Trapezium)

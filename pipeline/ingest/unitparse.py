@@ -233,12 +233,19 @@ def is_strain_unit(text: str | None) -> bool:
 
     Examples
     --------
-    >>> is_strain_unit("(%)"), is_strain_unit("µm/m"), is_strain_unit("mm")
-    (True, True, False)
+    >>> is_strain_unit("(%)"), is_strain_unit("µm/m"), is_strain_unit("mm"), is_strain_unit("dB")
+    (True, True, False, False)
     """
     found = spellings(text or "")
     return (bool(found) and ureg.parse_units(found[0]).dimensionless
-            and _role_of(found[0]) != "angle")
+            and _role_of(found[0]) != "angle"
+            and _NO_RATIO_UNITS.isdisjoint(re.findall(r"[a-z]+", str(ureg.parse_units(found[0])))))
+
+
+#: Units pint counts as dimensionless that no strain channel logs in: levels (an acoustic
+#: emission sensor's ``dB``), counts, solid angles and bits (pint reads ``B`` as a byte).
+_NO_RATIO_UNITS = frozenset({"bel", "decibel", "neper", "octave", "decade", "count",
+                             "steradian", "byte", "bit"})
 
 
 def looks_like_unit(text: str) -> bool:

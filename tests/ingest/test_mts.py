@@ -170,7 +170,7 @@ def test_tests_one_after_another_are_refused_not_joined(write):
     with pytest.raises(LayoutError) as caught:
         read_table(write("appended.csv", appended(tests=3, points=20)))
     assert caught.value.row == 24  # "Specimen 2": 2 lines, 20 samples and a blank line above
-    assert "the file holds 3 tests one after another" in caught.value.message
+    assert "the file holds 3 tests (or a test's steps) one after another" in caught.value.message
     assert "a file of its own" in caught.value.hint
 
 

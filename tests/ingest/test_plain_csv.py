@@ -429,3 +429,32 @@ def test_microstrain_is_a_strain(write):
     table, meta = read_table(write("H300CP_No1.csv", text, "cp932"), kind="tensile")
     np.testing.assert_allclose(table["strain_1"], [-0.947867e-6, 0.947867e-6])
     assert meta.columns[4].unit == "με"
+
+
+def test_a_prefix_written_out_before_a_unit_is_part_of_it(write):
+    # a real nanoindenter's export: micronewtons as load_micro_N, nanometres as depth_nm
+    text = "depth_nm,load_micro_N,time_s\n0.5,1.0,0.0\n12.0,2.0,0.1\n25.0,3.0,0.2\n"
+    table, meta = read_table(write("indent_1_1.csv", text), kind="tensile")
+    assert [(column.name, column.role, column.unit) for column in meta.columns] == [
+        ("depth", "gauge_1", "nm"), ("load", "force", "µN"), ("time", "time", "s")]
+    np.testing.assert_allclose(table["force"], [1e-6, 2e-6, 3e-6])
+    np.testing.assert_allclose(table["gauge_1"], [0.5e-9, 12e-9, 25e-9])
+
+
+def test_a_status_line_narrower_than_the_data_is_no_names_row(write):
+    # a real home-built rig's log: a settings line and status lines, no names row
+    text = ("L0 = 81,2;d = 2,25;Polymer PVC\n ;TEMP:;T:21.6 /0.0 B:0.0 @:0 B\n"
+            "38354132;11:02:46;2,8;0,0\n57745416;11:02:47;1,4;0,5\n"
+            "54460604;11:02:48;0,4;1,0\n")
+    path = write("some 18 Nov 11,02,38.csv", text)
+    with pytest.raises(LayoutError, match="no names row above the first data row") as caught:
+        read_table(path, kind="tensile")
+    assert caught.value.row == 3
+    table, _ = read_table(path, kind="tensile",
+                          columns={"force": "column 3", "gauges": ["column 4"]},
+                          units={"force": "N", "gauges": "mm"})
+    np.testing.assert_allclose(table["force"], [2.8, 1.4, 0.4])
+    # a names row that names its columns stays one, an unnamed last column beside it
+    table, meta = read_table(write("t.csv", "time [s],force [kN]\n0,1,7\n1,2,8\n"),
+                             kind="engagement")
+    np.testing.assert_allclose(table["force"], [1000.0, 2000.0])

@@ -98,6 +98,10 @@ def test_empty(write, content, message):
         # rows hold more numbers, but the names row is split at the commas only
         (["t,f1,f2,state,frame", "0.5,1.5,2.5,OK,DTA;1;15;25;4;5;!",
           "1.5,1.6,2.6,OK,DTA;2;16;26;4;5;!"], (",", ".", 5)),
+        # a home-built rig's log under a settings line: split at its commas, a row's first
+        # field still holds a clock reading, but among semicolons
+        (["L0 = 81,2;d = 2,25;Polymer PVC", "38354132;11:02:46;2,8;0,0",
+          "57745416;11:02:47;1,4;0,0", "54460604;11:02:48;0,4;0,0"], (";", ",", 4)),
     ],
 )
 def test_dialect(lines, dialect, tmp_path):
