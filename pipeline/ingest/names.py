@@ -234,10 +234,11 @@ CRACK_WORDS = frozenset({"crack", "cracks"})
 #: turned, for a compression test's plots).
 SIGN_CONVENTION_WORDS = frozenset({"compressive", "tensile"})
 #: Names of other quantities than a test's: a count that is no cycle count (a load-cell
-#: rig's ``sample_count``, the readings it averaged) and a temperature (``Temp(°)``, whose
-#: degrees are no angle). Such a column takes no role, not even from its unit.
+#: rig's ``sample_count``, the readings it averaged; Bluehill's ``PIP count``, the marks an
+#: operator's button set) and a temperature (``Temp(°)``, whose degrees are no angle). Such
+#: a column takes no role, not even from its unit.
 OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points count",
-                        "reading count", "readings count", "scan count", "temp",
+                        "reading count", "readings count", "scan count", "pip count", "temp",
                         "temperature", "temperatur", "température", "temperatura", "温度")
 #: The labels of :data:`TRANSVERSE_NAMES` and :data:`OTHER_QUANTITY_NAMES` among the role
 #: keywords: each wins as a role would.

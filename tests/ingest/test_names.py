@@ -125,11 +125,12 @@ def test_a_channel_across_the_specimen_takes_no_role(name):
     assert match_role(name) is None and is_transverse(name)
 
 
-@pytest.mark.parametrize("name", ["sample_count", "Sample count", "Temp", "Temperature",
-                                  "Temperatur Probe"])
+@pytest.mark.parametrize("name", ["sample_count", "Sample count", "PIP count", "Temp",
+                                  "Temperature", "Temperatur Probe"])
 def test_a_count_of_samples_or_a_temperature_takes_no_role(name):
-    # a load-cell rig's calibration table counts the readings it averaged in sample_count;
-    # an accelerometer logs its temperature in degrees, no angle
+    # a load-cell rig's calibration table counts the readings it averaged in sample_count,
+    # Bluehill the marks of an operator's button in PIP count; an accelerometer logs its
+    # temperature in degrees, no angle
     assert match_role(name) is None and is_unmeasured(name)
 
 
