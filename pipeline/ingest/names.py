@@ -244,6 +244,7 @@ OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points 
 #: keywords: each wins as a role would.
 _TRANSVERSE = "transverse"
 _OTHER_QUANTITY = "other quantity"
+_NO_ROLE_LABELS = (_TRANSVERSE, _OTHER_QUANTITY)
 
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^()]*)\)"
                         r"|<(?P<ang>[^<>]*)>|【(?P<jis>[^【】]*)】|（(?P<wide>[^（）]*)）)\s*$")
@@ -415,7 +416,7 @@ def match_role(name: str) -> str | None:
     if tokens(name)[-1:] == ("id",):
         return None
     role = _best_match(name, _KEYWORDS)
-    return (None if role in (_TRANSVERSE, _OTHER_QUANTITY) or is_command(name) or is_derived(name)
+    return (None if role in _NO_ROLE_LABELS or is_command(name) or is_derived(name)
             or is_crack(name) else role)
 
 
@@ -456,8 +457,7 @@ def is_unmeasured(name: str) -> bool:
     ...                                   "Crack_length", "sample_count", "Temp", "Load")]
     [True, True, True, True, True, True, False]
     """
-    return (_best_match(name, _KEYWORDS) in (_TRANSVERSE, _OTHER_QUANTITY)
-            or is_command(name) or is_derived(name)
+    return (_best_match(name, _KEYWORDS) in _NO_ROLE_LABELS or is_command(name) or is_derived(name)
             or is_clock_part(name) or is_crack(name))
 
 
@@ -641,9 +641,8 @@ def is_held_peak(names: list[str], index: int) -> bool:
     >>> [is_held_peak(names, index) for index in range(5)]
     [False, False, True, False, False]
     """
-    words = tokens(names[index])
-    return ("max" in {_PEAK_TOKENS.get(word) for word in words}
-            and peak_partner(names, index) is None)
+    found = _extreme(names[index])
+    return found is not None and found[1] == "max" and peak_partner(names, index) is None
 
 
 def _extreme(name: str) -> tuple[tuple[str, ...], str] | None:

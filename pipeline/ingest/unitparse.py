@@ -237,9 +237,11 @@ def is_strain_unit(text: str | None) -> bool:
     (True, True, False, False)
     """
     found = spellings(text or "")
-    return (bool(found) and ureg.parse_units(found[0]).dimensionless
-            and _role_of(found[0]) != "angle"
-            and _NO_RATIO_UNITS.isdisjoint(re.findall(r"[a-z]+", str(ureg.parse_units(found[0])))))
+    if not found:
+        return False
+    unit = ureg.parse_units(found[0])
+    return (unit.dimensionless and _role_of(found[0]) != "angle"
+            and _NO_RATIO_UNITS.isdisjoint(re.findall(r"[a-z]+", str(unit))))
 
 
 #: Units pint counts as dimensionless that no strain channel logs in: levels (an acoustic
