@@ -41,6 +41,7 @@ from pipeline.runsheet import RUN_SHEET_NAME, resolve_inside
 if TYPE_CHECKING:
     import pandas as pd
 
+    from pipeline.condition.channels import Copy
     from pipeline.ingest.table import ColumnInfo, TableMetadata
 
 # The readers are imported inside the functions that use them, so that every other
@@ -98,10 +99,12 @@ class DraftRun:
     specimen_in_file: str | None = None
 
     @property
-    def copies(self) -> dict[str, tuple[str, float]]:
-        """Strain column -> (the length column it is worked out from, the length it divides
-        that one by [m]), by their names in the file (``inspect``'s ``copies``)."""
-        return {name: tuple(copy) for name, copy in self.report["copies"].items()}
+    def copies(self) -> dict[str, Copy]:
+        """Strain column -> how it was worked out from a length column, by their names in
+        the file (``inspect``'s ``copies``)."""
+        from pipeline.condition.channels import Copy
+
+        return {name: Copy(*copy) for name, copy in self.report["copies"].items()}
 
     @property
     def duplicates(self) -> dict[str, str]:
@@ -516,7 +519,7 @@ def _reads(column: ColumnInfo, run: DraftRun) -> str:
     """What a gauge column reads: a length, a strain, a strain worked out from another, or
     another's readings."""
     if column.name in run.copies:
-        return f"strain worked out from {quoted(run.copies[column.name][0])}"
+        return f"strain worked out from {quoted(run.copies[column.name].source)}"
     if column.name in run.duplicates:
         return f"repeats {quoted(run.duplicates[column.name])}"
     return "strain" if _is_strain(column) else "length"
@@ -548,9 +551,9 @@ def _gauge_lines(run: DraftRun) -> list[str]:
     lines.append("# gauge_length_mm = ...  # TODO: the length the gauges measure over")
     lines += [comment(f"the file's header says {quoted(key)} = {value}")
               for key, value in _stated_gauge_lengths(run.metadata.preamble)]
-    lines += [comment(f"the file's {quoted(strain)} is {quoted(source)} over "
-                      f"{length * 1e3:.4g} mm, the gauge length its software used")
-              for strain, (source, length) in run.copies.items()]
+    lines += [comment(f"the file's {quoted(strain)} is {copy.formula(quoted(copy.source))}: "
+                      f"{copy.length * 1e3:.4g} mm is the gauge length its software used")
+              for strain, copy in run.copies.items()]
     if strains:
         lines.append(comment(f"(without it only the strain channel(s) "
                              f"{', '.join(map(quoted, strains))} are used)"))

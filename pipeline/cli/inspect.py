@@ -30,6 +30,7 @@ from pipeline.errors import ChainbenchError
 if TYPE_CHECKING:
     import pandas as pd
 
+    from pipeline.condition.channels import Copy
     from pipeline.ingest.table import TableMetadata
 
 # The readers and the segmentation are imported inside the functions that use them,
@@ -63,11 +64,11 @@ def counted_cycles(table: pd.DataFrame, metadata: TableMetadata) -> np.ndarray |
 
 
 def derived(table: pd.DataFrame, metadata: TableMetadata
-            ) -> tuple[dict[str, str], dict[str, tuple[str, float]]]:
+            ) -> tuple[dict[str, str], dict[str, Copy]]:
     """The gauge and strain columns that measure nothing of their own
     (:func:`~pipeline.condition.channels.find_derived`), by their names in the file: length
-    column -> the column it repeats, and strain column -> (the length column it is worked
-    out from, the length it divides that one by [m])."""
+    column -> the column it repeats, and strain column -> how it was worked out from a
+    length column (:class:`~pipeline.condition.channels.Copy`)."""
     from pipeline.condition.channels import find_derived
 
     names = {column.role: column.name for column in metadata.columns
@@ -77,8 +78,8 @@ def derived(table: pd.DataFrame, metadata: TableMetadata
     duplicates, copies = find_derived(
         {role: table[role].to_numpy(dtype=float) for role in names}, kinds)
     return ({names[name]: names[source] for name, source in duplicates.items()},
-            {names[strain]: (names[source], length)
-             for strain, (source, length) in copies.items()})
+            {names[strain]: copy._replace(source=names[copy.source])
+             for strain, copy in copies.items()})
 
 
 def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
@@ -100,7 +101,7 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
         )
     duplicates, copies = derived(table, metadata)
     kinds = {column.name: column.kind for column in metadata.columns if column.role}
-    sources = {name: source for name, (source, _) in copies.items()} | duplicates
+    sources = {name: copy.source for name, copy in copies.items()} | duplicates
     return {
         "file": metadata.file,
         "layout": metadata.layout,
@@ -116,7 +117,7 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
              "kind": kinds[sources[column.name]] if column.name in sources else column.kind}
             for column in metadata.columns
         ],
-        "copies": {name: [source, length] for name, (source, length) in copies.items()},
+        "copies": {name: list(copy) for name, copy in copies.items()},
         "duplicates": duplicates,
         "cycles": cycles if cycles is not None else counted,
         "machine_cycles": counted,
@@ -141,10 +142,13 @@ def _show(report: dict) -> None:
         table.add_row(*(escape(str(column[key])) if column[key] is not None else "-"
                         for key in ("name", "role", "unit", "si_unit", "kind")))
     console.print(table)
-    for name, (source, length) in report["copies"].items():
-        console.print(f"note: {escape(repr(name))} is {escape(repr(source))} over "
-                      f"{length * 1e3:.4g} mm to the last digit: a strain worked out from it, "
-                      "counted as its kind", highlight=False)
+    from pipeline.condition.channels import Copy
+
+    for name, listed in report["copies"].items():
+        copy = Copy(*listed)
+        console.print(f"note: {escape(repr(name))} is {escape(copy.formula(repr(copy.source)))}"
+                      " to the last digit: a strain worked out from it, counted as its kind",
+                      highlight=False)
     for name, source in report["duplicates"].items():
         console.print(f"note: {escape(repr(name))} moves with {escape(repr(source))} to the "
                       "last digit, its zero and sign aside: one transducer written twice, "

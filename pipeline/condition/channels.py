@@ -23,9 +23,10 @@ to the one used. Never a silent average of different kinds.
 
 A strain column may be no measurement of its own but a length channel of the
 file divided by a length (Bluehill's ``Tensile strain``, a NanoSuite's
-``Engineering Strain``: the crosshead's extension over the gauge length). Its
-name then says nothing of what it measures; :func:`find_copies` finds it by
-its readings, which follow the length channel's to the last digit. A length
+``Engineering Strain``: the crosshead's extension over the gauge length), or
+the logarithm of one plus that (a ``True Strain``). Its name then says nothing
+of what it measures; :func:`find_copies` finds it by its readings, which
+follow the length channel's to the last digit. A length
 column may likewise repeat another's readings (MTS TestSuite's ``Extension``
 beside ``Crosshead`` when no extensometer is fitted): :func:`find_duplicates`
 finds it, and it counts as the kind of the two that claims least.
@@ -34,6 +35,7 @@ finds it, and it counts as the kind of the two that claims least.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import NamedTuple
 
 import numpy as np
 
@@ -65,6 +67,20 @@ MIN_COPY_SAMPLES = 20
 #: Two length channels on one straight line (to within their rounding) repeat one
 #: another when its slope is 1 (or -1) to within this: the same readings to another zero.
 DUPLICATE_SCALE_TOLERANCE = 1e-3
+
+
+class Copy(NamedTuple):
+    """How a strain column was worked out from a length channel of the file."""
+
+    source: str  #: the length channel
+    length: float  #: the length the software divided it by [m]
+    #: True for a true (logarithmic) strain ln(1 + source / length), False for source / length
+    logarithmic: bool = False
+
+    def formula(self, source: str) -> str:
+        """The working in words, the length channel called `source`."""
+        ratio = f"{source} over {self.length * 1e3:.4g} mm"
+        return f"ln(1 + {ratio})" if self.logarithmic else ratio
 
 
 @dataclass(frozen=True)
@@ -109,8 +125,9 @@ def compared_slopes(force: np.ndarray, strains: dict[str, np.ndarray],
     return slopes
 
 
-def find_copies(readings: dict[str, np.ndarray]) -> dict[str, tuple[str, float]]:
-    """The strain channels that are a length channel divided by a length.
+def find_copies(readings: dict[str, np.ndarray]) -> dict[str, Copy]:
+    """The strain channels that are a length channel divided by a length, or the logarithm
+    of one plus that.
 
     Parameters
     ----------
@@ -121,31 +138,33 @@ def find_copies(readings: dict[str, np.ndarray]) -> dict[str, tuple[str, float]]
     Returns
     -------
     dict
-        Strain channel -> (the length channel it was worked out from, the length it
-        divides it by [m]), for each strain whose readings lie on a straight line through
-        that channel's to within their rounding (:data:`COPY_MARGIN`). A copy's offset
-        (another zero) and sign do not matter.
+        Strain channel -> how it was worked out (:class:`Copy`), for each strain whose
+        readings (or their exponential less one, for a true strain) lie on a straight line
+        through a length channel's to within their rounding (:data:`COPY_MARGIN`). A
+        copy's offset (another zero) and sign do not matter.
 
     Examples
     --------
     >>> extension = np.round(np.linspace(0.0, 2e-3, 50) + 1e-5 * np.sin(np.arange(50)), 7)
     >>> strain = np.round(extension / 0.05, 5)  # printed to 5 decimals, as Bluehill does
     >>> extensometer = np.round(0.8 * extension / 0.05 + 2e-5 * np.cos(np.arange(50)), 5)
+    >>> true_strain = np.round(np.log1p(extension / 0.05), 6)
     >>> copies = find_copies({"gauge_1": extension, "strain_1": strain,
-    ...                       "strain_2": extensometer})
-    >>> {name: (source, round(length, 4)) for name, (source, length) in copies.items()}
-    {'strain_1': ('gauge_1', 0.05)}
+    ...                       "strain_2": extensometer, "strain_3": true_strain})
+    >>> {name: copy.formula(copy.source) for name, copy in copies.items()}
+    {'strain_1': 'gauge_1 over 50 mm', 'strain_3': 'ln(1 + gauge_1 over 50 mm)'}
     """
     lengths = [name for name in readings if name.startswith("gauge_")]
     copies = {}
     for name, strain in readings.items():
         if not name.startswith("strain_"):
             continue
-        for source in lengths:
-            scale = _copy_scale(strain, readings[source])
-            if scale is not None:
-                copies[name] = (source, 1.0 / abs(scale))
-                break
+        copy = next((Copy(source, 1.0 / abs(scale), logarithmic)
+                     for logarithmic in (False, True) for source in lengths
+                     if (scale := _copy_scale(strain, readings[source], logarithmic))
+                     is not None), None)
+        if copy is not None:
+            copies[name] = copy
     return copies
 
 
@@ -194,29 +213,34 @@ def find_duplicates(readings: dict[str, np.ndarray], kinds: dict[str, str]) -> d
 
 
 def find_derived(readings: dict[str, np.ndarray], kinds: dict[str, str]
-                 ) -> tuple[dict[str, str], dict[str, tuple[str, float]]]:
+                 ) -> tuple[dict[str, str], dict[str, Copy]]:
     """The channels that measure nothing of their own: the length channels that repeat
     another (:func:`find_duplicates`) and the strain channels worked out from a length
     channel (:func:`find_copies`), a copy's source being the channel its source repeats,
     if it does (parameters as there)."""
     duplicates = find_duplicates(readings, kinds)
-    copies = {name: (duplicates.get(source, source), length)
-              for name, (source, length) in find_copies(readings).items()}
+    copies = {name: copy._replace(source=duplicates.get(copy.source, copy.source))
+              for name, copy in find_copies(readings).items()}
     return duplicates, copies
 
 
-def _copy_scale(copy: np.ndarray, source: np.ndarray) -> float | None:
-    """The slope of `copy` over `source` if `copy` is `source` rescaled (to within their
-    rounding, :data:`COPY_MARGIN`), else None."""
+def _copy_scale(copy: np.ndarray, source: np.ndarray, logarithmic: bool = False
+                ) -> float | None:
+    """The slope of `copy` (of its exponential less one, if `logarithmic`) over `source` if
+    that is `source` rescaled (to within their rounding, :data:`COPY_MARGIN`), else None."""
     both = np.isfinite(copy) & np.isfinite(source)
-    if both.sum() < MIN_COPY_SAMPLES:
+    if both.sum() < MIN_COPY_SAMPLES or not (np.ptp(copy[both]) > 0):
         return None
     copy, source = copy[both], source[both]
+    copy_rounding = _rounding(copy)
+    if logarithmic:  # the rounding of ln(1 + e) grows by 1 + e in e
+        copy_rounding *= np.exp(copy.max())
+        copy = np.expm1(copy)
     y, x = copy - copy.mean(), source - source.mean()
     if not (np.ptp(x) > 0 and np.ptp(y) > 0):
         return None
     scale = float(x @ y / (x @ x))
-    allowed = (COPY_MARGIN * (_rounding(copy) + abs(scale) * _rounding(source)) / 2
+    allowed = (COPY_MARGIN * (copy_rounding + abs(scale) * _rounding(source)) / 2
                + COPY_FLOOR * np.ptp(y))
     return scale if np.abs(y - scale * x).max() <= allowed else None
 

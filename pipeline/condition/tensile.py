@@ -29,7 +29,7 @@ import numpy as np
 import pandas as pd
 
 from pipeline.condition.breaks import find_fracture, find_removal
-from pipeline.condition.channels import choose_channels, compared_slopes, find_derived
+from pipeline.condition.channels import Copy, choose_channels, compared_slopes, find_derived
 from pipeline.condition.segmentation import BRANCHES, Segmentation, load_sign, segment_cycles
 from pipeline.condition.tares import join_tares
 from pipeline.errors import SignalError
@@ -255,23 +255,28 @@ def _settle_duplicates(duplicates: Mapping[str, str], strains: dict[str, np.ndar
                             "one transducer written twice; not used")
 
 
-def _settle_copies(copies: Mapping[str, tuple[str, float]], strains: dict[str, np.ndarray],
+def _settle_copies(copies: Mapping[str, Copy], strains: dict[str, np.ndarray],
                    kinds: dict[str, str], gauge_length: float | None,
                    columns: Mapping[str, str], warnings: list[str]) -> None:
     """Give each strain column worked out from a length channel (:func:`~pipeline.condition.
     channels.find_copies`) that channel's kind, whatever its name says; leave it out where
     that channel gives a strain of its own (the run sheet sets the gauge length), warning
-    when the two lengths differ."""
-    for name, (source, length) in copies.items():
+    when the two lengths differ; a true strain kept is turned back into the engineering
+    strain it was worked out from."""
+    for name, copy in copies.items():
+        source, length = copy.source, copy.length
         kinds[name] = kinds[source]
-        said = (f"channel {columns[name]!r} is {columns[source]!r} ({kinds[source]}) over "
-                f"{length * 1e3:.4g} mm to the last digit: a strain worked out from it, not "
-                "measured by itself")
+        said = (f"channel {columns[name]!r} is "
+                f"{copy.formula(f'{columns[source]!r} ({kinds[source]})')} to the last "
+                "digit: a strain worked out from it, not measured by itself")
         if length < MIN_GAUGE_LENGTH:
             warnings.append(f"no gauge is {length * 1e3:.4g} mm long: the numbers of "
                             f"{columns[name]!r} are likely off by a power of ten (a ratio "
                             "written as %, a lost decimal mark); check its unit in the export")
         if source not in strains:
+            if copy.logarithmic:
+                strains[name] = np.expm1(strains[name])
+                said += "; used as exp() - 1 of it, the engineering strain"
             warnings.append(f"{said}; E0 from it is the {kinds[source]}'s")
             continue
         del strains[name]

@@ -437,8 +437,8 @@ def test_a_strain_worked_out_from_a_length_column_shows_the_length_it_divides_by
             'worked out from "Extensão")') in lines
     assert lines[lines.index("# gauge_length_mm = ...  # TODO: the length the gauges measure "
                              "over") + 1] == (
-        '# the file\'s "Deformação à tracção" is "Extensão" over 190 mm, the gauge length its '
-        "software used")
+        '# the file\'s "Deformação à tracção" is "Extensão" over 190 mm: 190 mm is the gauge '
+        "length its software used")
 
 
 def test_a_length_column_repeating_the_crosshead_is_drafted_as_the_crosshead(tmp_path):

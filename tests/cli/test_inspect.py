@@ -144,7 +144,8 @@ def test_a_strain_worked_out_from_the_crosshead_shows_as_the_crosshead(tmp_path)
     report = inspect_json(str(path))
     assert [column["kind"] for column in report["columns"]] == [
         None, "crosshead", None, "crosshead"]
-    assert report["copies"] == {"Tensile strain": ["Crosshead", pytest.approx(0.05, rel=1e-4)]}
+    assert report["copies"] == {
+        "Tensile strain": ["Crosshead", pytest.approx(0.05, rel=1e-4), False]}
     shown = runner.invoke(app, ["inspect", str(path)], env={"COLUMNS": "200"})
     assert ("note: 'Tensile strain' is 'Crosshead' over 50 mm to the last digit: a strain "
             "worked out from it, counted as its kind") in shown.stdout

@@ -26,15 +26,15 @@ def test_a_strain_printed_from_a_length_channel_is_found_its_copy(seed):
     extension, strain = extension_and_strain(seed)
     copies = find_copies({"gauge_1": extension, "strain_1": strain})
     assert list(copies) == ["strain_1"]
-    source, length = copies["strain_1"]
-    assert source == "gauge_1"
+    source, length, logarithmic = copies["strain_1"]
+    assert (source, logarithmic) == ("gauge_1", False)
     assert length == pytest.approx(METHOD_GAUGE_LENGTH, rel=1e-4)
 
 
 def test_a_copys_own_zero_and_sign_do_not_matter():
     extension, _ = extension_and_strain(0)
     strain = np.round(-(extension - extension[100]) / METHOD_GAUGE_LENGTH, 6)
-    source, length = find_copies({"gauge_1": extension, "strain_1": strain})["strain_1"]
+    source, length, _ = find_copies({"gauge_1": extension, "strain_1": strain})["strain_1"]
     assert (source, length) == ("gauge_1", pytest.approx(METHOD_GAUGE_LENGTH, rel=1e-4))
 
 
@@ -42,7 +42,7 @@ def test_a_copy_kept_at_full_precision_is_found():
     extension, _ = extension_and_strain(1)
     extension = extension + 1e-9 * np.sqrt(np.arange(extension.size))  # no decimal grid
     copies = find_copies({"gauge_1": extension, "strain_1": extension / 0.08})
-    assert copies["strain_1"] == ("gauge_1", pytest.approx(0.08, rel=1e-9))
+    assert copies["strain_1"] == ("gauge_1", pytest.approx(0.08, rel=1e-9), False)
 
 
 def test_missing_readings_are_left_out_of_the_comparison():
@@ -69,6 +69,24 @@ def test_an_extensometer_beside_the_crosshead_is_no_copy_of_it(seed):
     log = simulate_pull(truth, seed)
     assert find_copies({"gauge_1": log["crosshead"].to_numpy(),
                         "strain_1": log["extensometer_strain"].to_numpy()}) == {}
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_a_true_strain_printed_from_a_length_channel_is_found_its_logarithmic_copy(seed):
+    # ln(1 + extension / 50 mm), printed to 6 decimals: off any straight line through the
+    # extension by far more than its rounding at 4 % strain
+    extension, _ = extension_and_strain(seed)
+    true_strain = np.round(np.log1p(extension / METHOD_GAUGE_LENGTH), 6)
+    copy = find_copies({"gauge_1": extension, "strain_1": true_strain})["strain_1"]
+    assert (copy.source, copy.logarithmic) == ("gauge_1", True)
+    assert copy.length == pytest.approx(METHOD_GAUGE_LENGTH, rel=1e-4)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_an_extensometers_true_strain_beside_the_crosshead_is_no_copy_of_it(seed):
+    log = simulate_pull(PullTruth.for_chain("18x64", strain_channel=True), seed)
+    true_strain = np.round(np.log1p(log["extensometer_strain"].to_numpy()), 8)
+    assert find_copies({"gauge_1": log["crosshead"].to_numpy(), "strain_1": true_strain}) == {}
 
 
 def test_two_length_channels_are_not_compared():

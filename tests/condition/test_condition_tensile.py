@@ -265,6 +265,21 @@ def test_a_strain_worked_out_from_the_crosshead_is_the_crosshead_whatever_its_na
                for warning in run.warnings)
 
 
+def test_a_true_strain_worked_out_from_the_crosshead_is_used_as_its_engineering_strain():
+    # with no gauge length for 'Extension', the file's true strain ln(1 + extension / 50 mm)
+    # is what there is: E0 from it is E0 from the extension over 50 mm
+    table, _ = bluehill_pull()
+    engineering = condition_tensile(table, None, n_cycles=1, **BLUEHILL)
+    crosshead = table["gauge_1"].to_numpy()
+    table = table.assign(strain_1=np.round(np.log1p(crosshead / 0.05), 8))
+    run = condition_tensile(table, None, n_cycles=1, **BLUEHILL)
+    assert ("channel 'Tensile strain' is ln(1 + 'Extension' (crosshead) over 50 mm) to the "
+            "last digit: a strain worked out from it, not measured by itself; used as exp() - "
+            "1 of it, the engineering strain; E0 from it is the crosshead's") in run.warnings
+    assert run.channels.loc["strain_1", "slope"] == pytest.approx(
+        engineering.channels.loc["strain_1", "slope"], rel=1e-4)
+
+
 TESTSUITE = {"kinds": {"gauge_1": "crosshead", "gauge_2": "gauge"},
              "columns": {"gauge_1": "Crosshead", "gauge_2": "Extension"}}
 
