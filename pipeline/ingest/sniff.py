@@ -5,7 +5,9 @@ left to :mod:`pipeline.ingest.textbody` (pyarrow). The sniffers find:
 
 * the encoding: a BOM (UTF-8, UTF-16), UTF-16 without BOM (NUL bytes), UTF-8,
   else cp1250 or latin-1, whichever decodes more non-ASCII bytes as letters
-  (Polish exports are cp1250, Spanish and German ones latin-1);
+  (Polish exports are cp1250, Spanish and German ones latin-1), unless those
+  give words without a Latin letter: then the encoding of another script
+  (Russian, Chinese, Korean, Japanese Windows) that reads them as words;
 * the dialect: the delimiter (tab, ``;``, ``,``, ``|``) and decimal mark that
   make the most rows all-numeric with one field count;
 * the table: the first data row, the names row above it, an optional units
@@ -40,7 +42,7 @@ from pipeline.ingest.clock import (
     unpadded_milliseconds,
     unread_clock_hint,
 )
-from pipeline.ingest.names import match_role, repeats, split_name_unit
+from pipeline.ingest.names import COLUMN_NAMES, match_role, repeats, split_name_unit, tokens
 from pipeline.ingest.source import Source
 from pipeline.ingest.unitparse import (
     NO_UNIT_CELLS,
@@ -94,6 +96,24 @@ SHIFT_JIS = "cp932"
 #: μ of microstrain, and the degree sign).
 _JAPANESE_SCRIPTS = ("CJK", "HIRAGANA", "KATAKANA", "HALFWIDTH KATAKANA", "FULLWIDTH",
                      "GREEK", "IDEOGRAPHIC", "DEGREE", "KATAKANA-HIRAGANA")
+#: Encodings of Windows text in other scripts, tried when latin-1 reads words without a
+#: Latin letter (:func:`_in_other_script`), with the Unicode name prefixes of the letters
+#: each writes: Russian (cp1251), simplified Chinese (GBK), Korean (cp949), the last two
+#: with Greek letters (the µ of a microstrain, ``με``).
+OTHER_SCRIPTS = {"cp1251": ("CYRILLIC",), "gbk": ("CJK", "GREEK"), "cp949": ("HANGUL", "GREEK")}
+#: Of those, the alphabets, whose text has no symbol within a run of letters (as Chinese
+#: or Korean text read in cp1251 has, from bytes that are symbols there: ``ЅГ°Ј``) but
+#: for one of these before it (``°С``, ``№``).
+ALPHABETS = ("cp1251",)
+_LEADING_SYMBOLS = "°µ№±"
+#: Words of the column names known in any language (:data:`~pipeline.ingest.names.
+#: COLUMN_NAMES`): of two encodings that read another script's letters, the one that reads
+#: more of these.
+_KNOWN_WORDS = frozenset(tokens(word) for language in COLUMN_NAMES.values()
+                         for words in language.values() for word in words)
+#: A word of letters.
+_WORD = re.compile(r"[^\W\d_]+")
+_NON_ASCII_RUN = re.compile(r"[^\x00-\x7f]+")
 #: First bytes of the Shift-JIS symbols Japanese text also holds: punctuation, brackets
 #: (【kN】), signs (±, ×, ℃, ※), Greek and Cyrillic letters, box drawing (rows 1 to 8 of JIS
 #: X 0208), and NEC's circled numbers and unit squares (㎜).
@@ -348,7 +368,45 @@ def detect_encoding(raw: bytes, complete: bool, file: str) -> tuple[str, str, in
     )
     if _has_controls(text, best) and _is_japanese(text):
         return SHIFT_JIS, SHIFT_JIS, 0
-    return best, best, 0
+    other = _in_other_script(text) if _reads_foreign_words(text) else None
+    return (other, other, 0) if other else (best, best, 0)
+
+
+def _reads_foreign_words(raw: bytes) -> bool:
+    """Whether latin-1 reads `raw` as words without a Latin letter (``Âðåìÿ``, cp1251's
+    ``Время``): at least two, and more than the words that mix in accented letters
+    (``Länge``, ``Siła``), of two letters or more each."""
+    words = [word for word in _WORD.findall(raw.decode("latin-1"))
+             if len(word) > 1 and _NON_ASCII.search(word)]
+    foreign = sum(not re.search(r"[A-Za-z]", word) for word in words)
+    return foreign >= 2 and 2 * foreign > len(words)
+
+
+def _in_other_script(raw: bytes) -> str | None:
+    """The encoding of :data:`OTHER_SCRIPTS` that reads every word of `raw` outside ASCII
+    in its script (:func:`_of_script`), of several the one reading most known column names
+    (:data:`_KNOWN_WORDS`), then the first; None if there is none."""
+    readings = {}
+    for codec, scripts in OTHER_SCRIPTS.items():
+        try:
+            text = raw.decode(codec)
+        except UnicodeDecodeError:
+            continue
+        foreign = [word for word in _WORD.findall(text) if _NON_ASCII.search(word)]
+        if (foreign and all(_of_script(word, scripts) for word in foreign)
+                and (codec not in ALPHABETS or all(
+                    run.lstrip(_LEADING_SYMBOLS).isalpha() or run in _LEADING_SYMBOLS
+                    for run in _NON_ASCII_RUN.findall(text)))):
+            readings[codec] = sum(tokens(word) in _KNOWN_WORDS for word in foreign)
+    return max(readings, key=readings.get, default=None)
+
+
+def _of_script(word: str, scripts: tuple[str, ...]) -> bool:
+    """Whether every letter of `word` is of `scripts`, and a word of more than three letters
+    (no unit's symbol, as ``кН`` or ``МПа``) in one case throughout but for a capital first
+    letter."""
+    return (all(unicodedata.name(char, "").startswith(scripts) for char in word)
+            and (len(word) <= 3 or word.isupper() or word[1:].islower()))
 
 
 def _has_controls(raw: bytes, codec: str) -> bool:

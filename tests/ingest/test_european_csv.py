@@ -23,6 +23,18 @@ def test_polish_export(write, encoding):
     assert meta.columns[1].name == "siła"
 
 
+def test_a_russian_export_in_cp1251_is_read_by_its_names_and_units(write):
+    # Russian Windows writes cp1251: read as latin-1, 'Нагрузка' and 'кН' were 'Íàãðóçêà'
+    # and 'êÍ', no role and no unit, and the units row was taken for the names row
+    text = ("Время\tНагрузка\tПеремещение\r\nс\tкН\tмм\r\n"
+            "0,0\t0,892\t0,010\r\n0,5\t1,784\t0,020\r\n")
+    table, meta = read_table(write("r.txt", text, "cp1251"))
+    assert meta.encoding == "cp1251"
+    assert [column.name for column in meta.columns] == ["Время", "Нагрузка", "Перемещение"]
+    np.testing.assert_allclose(table["force"], [892.0, 1784.0])
+    np.testing.assert_allclose(table["gauge_1"], [1e-5, 2e-5])
+
+
 def test_german_export_latin1_with_quotes(write):
     text = ('"Zeit [s]";"Standardkraft [kgf]";"Weg [mm]"\n'
             '"0,0";"100,0";"0,5"\n"1,0";"200,0";"1,5"\n')

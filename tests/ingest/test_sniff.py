@@ -27,6 +27,12 @@ JAPANESE = ("H300-CP-No.1\r\n名前,測定日時 ,荷重 kN,変位 mm,表-縦 μ
             "1,2019/11/01 17:06:57,0.064,-0.004,-0.947867\r\n"
             "2,2019/11/01 17:06:59,0.104,0,0.947867\r\n")
 GERMAN = "Zeit [s];Temperatur [°C];Kraft [kN];Länge [mm]\r\n0,1;20,5;1,2;3\r\n0,2;20,5;1,3;3\r\n"
+# as Russian, Chinese and Korean Windows write them: latin-1 reads their names as words of
+# accented letters alone (Âðåìÿ), cp1250 likewise
+RUSSIAN = ("Время\tНагрузка\tПеремещение\tТемпература\r\nс\tкН\tмм\t°С\r\n"
+           "0,1\t5,024\t0,000\t20,5\r\n0,2\t5,379\t0,001\t20,5\r\n")
+CHINESE = "时间(s),负荷(kN),位移(mm),应变(με)\r\n0.1,5.024,0.000,1\r\n0.2,5.379,0.001,2\r\n"
+KOREAN = "시간(s),하중(kN),변위(mm)\r\n0.1,5.024,0.000\r\n0.2,5.379,0.001\r\n"
 
 
 @pytest.mark.parametrize(
@@ -38,6 +44,12 @@ GERMAN = "Zeit [s];Temperatur [°C];Kraft [kN];Länge [mm]\r\n0,1;20,5;1,2;3\r\n
         # a real Japanese logger's channel table: ranges in ±, units in 【】 brackets
         (JAPANESE.replace("荷重 kN", "荷重【kN】") + "入力レンジ,±10V\r\n", "cp932", "cp932"),
         (GERMAN, "latin-1", "latin-1"),  # °C and ä decode in Shift-JIS too, as nonsense
+        (RUSSIAN, "cp1251", "cp1251"),
+        (CHINESE, "gbk", "gbk"),
+        (KOREAN, "cp949", "cp949"),
+        # words of accented letters alone, Latin all the same
+        ("Länge;Größe;Höhe;Öffnung;Ärger\r\n1;2;3;4;5\r\n", "latin-1", "latin-1"),
+        ("Siła;Wydłużenie;Czas;Ścieżka\r\n1;2;3;4\r\n", "cp1250", "cp1250"),
         (POLISH, "utf-8", "utf-8"),
         (POLISH, "utf-8-sig", "utf-8-sig"),
         (POLISH, "utf-16", "utf-16"),
