@@ -23,6 +23,8 @@ ureg.define("newton_second = newton * second = Ns")
 # Microstrain, as strain-gauge amplifiers and Japanese loggers write it (µε, με with the
 # micro sign or the Greek mu; Kyowa's µST): a ratio of 1e-6.
 ureg.define("microstrain = 1e-6 = µε = με = µST = μST")
+# Keysight data loggers' volts of a direct or alternating voltage (BenchLink's VDC, VAC).
+ureg.define("@alias volt = VDC = VAC")
 # Russian (Cyrillic) unit symbols, as Russian testing-machine software writes them.
 for _definition in ("с = second", "мс = millisecond", "мин = minute", "ч = hour",
                     "Н = newton", "кН = kilonewton", "кгс = kilogram_force",

@@ -588,7 +588,13 @@ def _settle_units(
                     f"column {name!r}: unit {sheet_text!r} from the run sheet not used: the "
                     "column holds clock readings, read as seconds")
             elif given and index not in raw.clocks:
-                if text and sheet_text != text:
+                if text and sheet_text != text and unit_misfits(text, role):
+                    raw.metadata.warnings.append(
+                        f"column {name!r}: the file gives it in {text!r}, no unit of {role}; "
+                        f"read in {sheet_text!r} as the run sheet says: check that it is the "
+                        f"{role} column (columns = ...) and that its numbers are in "
+                        f"{sheet_text!r}")
+                elif text and sheet_text != text:
                     raw.metadata.warnings.append(
                         f"column {name!r}: unit {sheet_text!r} from the run sheet replaces "
                         f"{text!r} from the file"

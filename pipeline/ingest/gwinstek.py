@@ -21,7 +21,8 @@ siemens); the channel the name ``Source`` (``CH1``) and the unit ``Vertical
 Units``. The layout is known by its first setting (``Memory Length``) and the
 ``Waveform Data`` row.
 
-Refused, with a hint: an export in ``Fast`` mode, whose rows hold the
+Refused, with a hint: an export in ``Fast`` mode, or of an older firmware
+that writes no ``Mode`` (V1.14), whose rows hold one number each: the
 converter's raw codes without their time.
 """
 
@@ -70,15 +71,20 @@ def table_spec(head: Head) -> TableSpec:
     Raises
     ------
     LayoutError
-        For an export in ``Fast`` mode, or one with no row below ``Waveform Data``.
+        For an export of raw codes (in ``Fast`` mode, or one number a row), or one with no
+        row below ``Waveform Data``.
     """
     mark = _mark(head)
     settings = {cells[0]: cells[1] for line in head.lines[:mark]
                 if len(cells := _cells(line)) > 1 and cells[0]}
-    if settings.get("Mode") == "Fast":
+    codes_only = mark + 1 < len(head.lines) and sum(
+        bool(cell) for cell in _cells(head.lines[mark + 1])) == 1
+    if settings.get("Mode") == "Fast" or codes_only:
+        saved = ("in Fast mode" if settings.get("Mode") == "Fast"
+                 else "one number a row (no Mode written)")
         raise LayoutError(
-            "the oscilloscope saved the waveform in Fast mode: its rows hold the "
-            "converter's raw codes, without their time",
+            f"the oscilloscope saved the waveform {saved}: its rows hold the converter's raw "
+            "codes, without their time",
             file=head.name, row=mark + 1,
             hint="save the waveform again in Detail mode, which writes each sample's time "
                  "and value")

@@ -76,6 +76,18 @@ def test_run_sheet_units_fill_missing_units_and_override_with_warning(write):
     assert "'daN' from the run sheet replaces 'kN'" in meta.warnings[0]
 
 
+def test_a_run_sheet_unit_of_another_quantity_than_the_files_is_warned_of_as_such(write):
+    # a logger's pressure channel named as the force: the run sheet's kN is used, and the
+    # warning says the file's MPa is no force, not that one unit of force replaced another
+    text = "time [s],p [MPa],gauge [mm]\n" + rows((0, 1, 2), (1, 2, 3))
+    table, meta = read_table(write("p.csv", text), columns={"force": "p"},
+                             units={"force": "kN"})
+    np.testing.assert_allclose(table["force"], [1e3, 2e3])
+    assert ("column 'p': the file gives it in 'MPa', no unit of force; read in 'kN' as the run "
+            "sheet says: check that it is the force column (columns = ...) and that its "
+            "numbers are in 'kN'") in meta.warnings
+
+
 def test_missing_unit_error_names_column_and_run_sheet_key(write):
     with pytest.raises(UnitError) as caught:
         read_table(write("u.csv", "time [s],force,gauge1 [mm]\n" + rows((0, 1, 2))))

@@ -40,3 +40,12 @@ def test_raw_codes_of_the_fast_mode_are_refused(write):
     with pytest.raises(LayoutError, match="Fast mode") as caught:
         read_table(write("DS0000.CSV", text), kind="engagement")
     assert caught.value.row == 16 and "Detail mode" in caught.value.hint
+
+
+def test_raw_codes_of_an_older_firmware_writing_no_mode_are_refused(write):
+    # a real GDS export of firmware V1.14: no Mode setting, one code a row; read as the
+    # time in seconds, the channel dropped as empty
+    settings = SETTINGS.replace("Time, ,\nMode,{mode},\n", "")
+    with pytest.raises(LayoutError, match="one number a row") as caught:
+        read_table(write("DS0000.CSV", settings + "-1,\n-1,\n0,\n1,\n2,\n"), kind="engagement")
+    assert caught.value.row == 14 and "Detail mode" in caught.value.hint

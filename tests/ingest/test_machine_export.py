@@ -694,8 +694,8 @@ def test_an_oscilloscopes_numbered_channels_over_a_units_row(write):
     assert [column.name for column in meta.columns] == ["x-axis", "1", "2"]
     np.testing.assert_allclose(table["time"], [-1e-6, -999e-9])
     np.testing.assert_allclose(table["force"], [-0.40201005, -0.40201005])
-    assert "unit 'kN' from the run sheet replaces 'Volt' from the file" in " ".join(
-        meta.warnings)
+    assert ("the file gives it in 'Volt', no unit of force; read in 'kN' as the run sheet says"
+            in " ".join(meta.warnings))
 
 
 def bluehill_quoted(rows: int) -> str:

@@ -87,7 +87,8 @@ def test_a_current_in_amperes_is_not_a_time_candidate():
     assert found.roles == {"time": [0], "force": [1]}
 
 
-@pytest.mark.parametrize("cell", ["(sec)", "[mm]", "Sec", "kgf", "cycles", "segments", "", "seg"])
+@pytest.mark.parametrize("cell", ["(sec)", "[mm]", "Sec", "kgf", "cycles", "segments", "", "seg",
+                                  "VDC", "VAC"])  # a Keysight logger's volts
 def test_units_row_cells(cell):
     assert looks_like_unit(cell)
 
