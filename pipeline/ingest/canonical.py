@@ -768,6 +768,7 @@ def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tupl
         first = int(np.argmax(gaps)) + 1
         warnings.append(
             f"time: {count_gaps} gaps longer than {GAP_FACTOR:g} x the median step "
-            f"({median:.3g} s), first before {raw.where(first)}"
+            f"({median:.3g} s), the longest {float(steps[gaps].max()):.3g} s, first before "
+            f"{raw.where(first)}"
         )
     return count == 0, count_gaps

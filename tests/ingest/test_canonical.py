@@ -199,8 +199,10 @@ def _time_warnings_step_by_step(time: list[float]) -> tuple[bool, int, list[str]
     median = float(np.median(positive))
     gaps = [line for line, step in enumerate(steps, 3) if step > 10 * median]
     if gaps:
+        longest = max(step for step in steps if step > 10 * median)
         found.append(f"time: {len(gaps)} gaps longer than 10 x the median step "
-                     f"({median:.3g} s), first before line {gaps[0]}")
+                     f"({median:.3g} s), the longest {longest:.3g} s, first before line "
+                     f"{gaps[0]}")
     return not back, len(gaps), found
 
 

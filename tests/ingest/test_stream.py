@@ -119,7 +119,9 @@ def missing(count, line):
     return f"force: {count} missing values kept as NaN; longest run {count} rows from {line}"
 
 
-GAP = "time: 1 gaps longer than 10 x the median step (0.005 s), first before line "
+# the corpus's pause of 0.5 s after row 20, and the step of 0.005 s
+GAP = ("time: 1 gaps longer than 10 x the median step (0.005 s), the longest 0.505 s, first "
+       "before line ")
 
 
 @pytest.mark.parametrize(
