@@ -702,7 +702,7 @@ def _past_midnight(raw: RawTable, step: float) -> str:
     if not (any(clock.kind == "time of day" for clock in raw.clocks.values())
             and -DAY <= step < -DAY + 3600):
         return ""
-    return (" (the time of day passes midnight; a date in the column before it is joined "
+    return (" (the time of day passes midnight; a date in the column before or after it is joined "
             "only when it can be read one way: year first, dotted, or of slashes whose "
             "dates follow one another day by day read day first or month first; export the "
             "date and time in one column, year first, or the time in seconds)")

@@ -429,7 +429,8 @@ def fraction_column(first: str, index: int, names: list[str], rows: list[list[st
 
 def date_column(kind: str, index: int, names: list[str], rows: list[list[str]]
                 ) -> DateColumn | None:
-    """The column before time-of-day column `index` that gives the date of its readings,
+    """The column beside time-of-day column `index` that gives the date of its readings
+    (the one before it, else the one after, as IMADA's Force Recorder writes ``Time,Date``),
     or None.
 
     Taken only when every cell of that column in `rows` (the head's data rows) is a
@@ -447,21 +448,23 @@ def date_column(kind: str, index: int, names: list[str], rows: list[list[str]]
     >>> date_column("time of day", 1, ["Date", "Time"], [["01/06/2026", "12:00:00"]])
     DateColumn(column=0, order='slashes', first='01/06/2026', name='Date')
     """
-    column = index - 1
-    if kind != "time of day" or column < 0:
+    if kind != "time of day":
         return None
+    return next(filter(None, (_dates_in(column, names, rows)
+                              for column in (index - 1, index + 1) if 0 <= column)), None)
+
+
+def _dates_in(column: int, names: list[str], rows: list[list[str]]) -> DateColumn | None:
+    """Column `column` as the dates of a time of day, if every cell of it is a date that
+    can be read one way (see :func:`date_column`)."""
     cells = [row[column].strip() for row in rows if column < len(row) and row[column].strip()]
-    if not cells:
+    if not cells or column >= len(names):
         return None
     order = next((order for order, form in _DATE_FORMS.items()
                   if all(form.fullmatch(cell) for cell in cells)), None)
-    if order is None:
-        return None
     if order == "slashes":
         order = _order_of_slashes([cell.split("/")[:2] for cell in cells])
-        if order is None:
-            return None
-    return DateColumn(column, order, cells[0], names[column].strip())
+    return None if order is None else DateColumn(column, order, cells[0], names[column].strip())
 
 
 def carried_order(kind: str, index: int, rows: list[list[str]]) -> str | None:

@@ -486,6 +486,19 @@ def test_a_date_in_the_column_before_a_time_of_day_is_joined_past_midnight(
                for w in meta.warnings)
 
 
+def test_a_date_in_the_column_after_a_time_of_day_is_joined_past_midnight(write):
+    # IMADA's Force Recorder writes Time,Date: the date after the time of day
+    start = datetime.datetime(2024, 12, 26, 23, 59, 58, 500_000)
+    stamps = [start + datetime.timedelta(seconds=float(s)) for s in SECONDS]
+    text = "Load (kN),Time,Date\n" + "".join(
+        f"{force:.6f},{stamp:%H:%M:%S.%f}"[:-3] + f",{stamp:%m/%d/%Y}\n"
+        for stamp, force in zip(stamps, FORCE_KN, strict=True))
+    table, meta = read_table(write("log.csv", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
+    assert any("on the dates of column 'Date' (first '12/26/2024', month first)" in w
+               for w in meta.warnings)
+
+
 def slashed_log(start: datetime.datetime, written: str, seconds=SECONDS) -> str:
     """A ``Date,Time,Load (kN)`` log from `start`, its date written as `written`."""
     return "Date,Time,Load (kN)\n" + "".join(
