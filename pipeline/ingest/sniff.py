@@ -817,6 +817,9 @@ def find_table(
     if len(labels) < 2 and above >= 1:  # labels over the names (Shimadzu Trapezium)
         labels = _labels_over(rows[_above(kinds, above)], names)
         labels_over = _above(kinds, above) if len(labels) > 1 else -1
+        if labels_over < 0 and kinds[_above(kinds, above)] == "text":
+            names, named = _named_over(names, rows[_above(kinds, above)])
+            notes += named
     units: list[str | None] = [None] * columns
     clocks = {} if pairs else {
         index: _clock_column(kind, index, names, rows[data:], data + 1)
@@ -984,6 +987,23 @@ def _labels_over(row: list[str], names: list[str]) -> list[str]:
     labels = _group_labels(row)
     count = repeats(names)
     return labels if len(labels) > 1 and len(labels) == count else []
+
+
+def _named_over(names: list[str], over: list[str]) -> tuple[list[str], tuple[str, ...]]:
+    """`names` with a word they repeat that names no role (an Elsys recorder's
+    ``Zeit;Signal;Signal;Signal`` under ``Kanal;DMS1A (0.A1);DMS1B (0.A2);...``) replaced
+    by the cells of `over`, the row over them, when those name each such column apart; and
+    a note saying so (else `names` and no note)."""
+    counts = Counter(name.strip() for name in names if name.strip())
+    repeated = [index for index, name in enumerate(names) if counts[name.strip()] > 1
+                and not match_role(name) and split_name_unit(name)[1] is None]
+    cells = [over[index].strip() if index < len(over) else "" for index in repeated]
+    if not repeated or not all(cells) or len(set(cells)) < len(cells):
+        return names, ()
+    renamed = dict(zip(repeated, cells, strict=True))
+    return ([renamed.get(index, name) for index, name in enumerate(names)],
+            (f"the columns named {names[repeated[0]].strip()!r} alike are named by the row "
+             f"over them: {', '.join(map(repr, cells))}",))
 
 
 def _group_labels(row: list[str]) -> list[str]:

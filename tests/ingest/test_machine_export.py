@@ -412,8 +412,9 @@ RECORDER = ("Starttime;16.08.2016 15:46:25\nSamplerate;10000000 Hz\n\n"
 def test_a_units_row_ending_with_the_delimiter_is_still_the_units_row(write):
     table, meta = read_table(write("recorder.asd", RECORDER), kind="wear", strict=False)
     np.testing.assert_allclose(table["time"], [2.2413e-3, 2.2414e-3])
+    # the channels' names are in the row over the one that names each of them "Signal"
     assert [(column.name, column.unit) for column in meta.columns] == [
-        ("Zeit", "s"), ("Signal", "V"), ("Signal", "V")]
+        ("Zeit", "s"), ("DMS1A (0.A1)", "V"), ("DMS1B (0.A2)", "V")]
 
 
 # a real Siglent SDS1204X-E export: 'Value' over each channel in the units row
@@ -826,3 +827,19 @@ def test_a_unit_column_of_two_units_gives_none(write):
     said = read_table(path, strict=False)[1].warnings
     assert "the column 'Unit' beside 'Force' holds several units (N, gf): none is taken as " \
         "its unit" in said
+
+
+def test_columns_named_alike_are_named_by_the_row_over_them(write):
+    # they could not be told apart: naming one in the run sheet was refused
+    table, meta = read_table(write("shot.asd", RECORDER), kind="engagement",
+                             columns={"force": "DMS1B (0.A2)"}, units={"force": "kN"})
+    np.testing.assert_allclose(table["force"], [-3.125, -5.625])
+    assert ("the columns named 'Signal' alike are named by the row over them: 'DMS1A (0.A1)', "
+            "'DMS1B (0.A2)'") in meta.warnings
+
+
+def test_columns_named_alike_by_a_role_keep_their_names(write):
+    # two load cells written 'Force': the row over them is not asked
+    text = "Test;A;B;C\nTime;Force;Force;Disp\ns;kN;kN;mm\n0;1;2;3\n1;2;3;4\n"
+    with pytest.raises(ColumnError, match="column .Force. is duplicated"):
+        read_table(write("two.csv", text))
