@@ -82,6 +82,28 @@ def derived(table: pd.DataFrame, metadata: TableMetadata
              for strain, copy in copies.items()})
 
 
+def sample_rate(table: pd.DataFrame) -> float | None:
+    """The log's sampling rate [Hz]: one over its median time step, or None without
+    time (or steps)."""
+    if "time" not in table:
+        return None
+    steps = np.diff(table["time"].to_numpy(dtype=float))
+    steps = steps[steps > 0]
+    return float(1.0 / np.median(steps)) if steps.size else None
+
+
+def slow_for_impacts(rate: float | None) -> str | None:
+    """A warning when an engagement log's sampling rate `rate` [Hz] is below the advised
+    one (:data:`~pipeline.condition.engagement.ADVISED_SAMPLE_RATE`), else None."""
+    from pipeline.condition.engagement import ADVISED_SAMPLE_RATE
+
+    if rate is None or rate >= ADVISED_SAMPLE_RATE:
+        return None
+    return (f"sampled at {rate:.3g} Hz: an engagement run needs the ringing of the chain "
+            f"branch after each strike, {ADVISED_SAMPLE_RATE / 1e3:g} kHz or more; processed "
+            "at this rate it is likely refused")
+
+
 def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
     """What ``inspect`` prints, as a JSON-ready mapping."""
     from pipeline.condition.segmentation import count_cycles
@@ -101,6 +123,7 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
         )
     duplicates, copies = derived(table, metadata)
     kinds = {column.name: column.kind for column in metadata.columns if column.role}
+    rate = sample_rate(table)
     sources = {name: copy.source for name, copy in copies.items()} | duplicates
     return {
         "file": metadata.file,
@@ -111,6 +134,7 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
         "sheet": metadata.sheet,
         "specimen": metadata.specimen,
         "rows": metadata.rows,
+        "sample_rate_hz": rate,
         "columns": [
             {"name": column.name, "role": column.role, "unit": column.unit,
              "si_unit": column.si_unit,
@@ -130,10 +154,14 @@ def _show(report: dict) -> None:
     shown = {"\t": "tab", " ": "space"}
     console.print(f"[bold]{escape(str(report['file']))}[/bold]", highlight=False)
     for key in ("layout", "encoding", "delimiter", "decimal", "sheet", "specimen", "rows",
-                "cycles", "machine_cycles"):
+                "sample_rate_hz", "cycles", "machine_cycles"):
         value = report[key]
         if value is not None:
-            console.print(f"  {key:<15}{shown.get(value, value) if key == 'delimiter' else value}",
+            if key == "delimiter":
+                value = shown.get(value, value)
+            elif key == "sample_rate_hz":
+                value = f"{value:.4g}"
+            console.print(f"  {key:<15}{value}",
                           markup=False, highlight=False)
     table = Table(title="columns")
     for heading in ("name", "role", "unit", "si_unit", "kind"):
@@ -179,6 +207,9 @@ def command(
         table, metadata = read_table(file, kind=READ_AS.get(kind.value, kind.value),
                                      specimen=specimen, strict=False)
         report = summary(table, metadata)
+        if kind in (Kind.engagement, Kind.roller_engagement) and (
+                slow := slow_for_impacts(report["sample_rate_hz"])):
+            report["warnings"].append(slow)
     except ChainbenchError as error:
         if debug:
             raise

@@ -69,6 +69,10 @@ PERIOD_TOLERANCE = 0.02
 #: per cent (``docs/file-formats.md``); the filter is insensitive to it.
 ASSUMED_DAMPING = 0.03
 
+#: Sampling rate an engagement log is advised to have, at the least [Hz]: a chain branch
+#: rings at some hundred hertz, and its ringing needs ten samples a period.
+ADVISED_SAMPLE_RATE = 5e3
+
 #: Samples per ringing period of the block-averaged signal used for the onsets.
 SAMPLES_PER_RINGING = 10
 
@@ -259,7 +263,8 @@ def natural_frequency_estimate(force: np.ndarray, sample_rate: float, period: fl
     if band.size == 0:
         raise SignalError(
             f"no spectrum between {low:.4g} and {high:.4g} Hz to find the branch's ringing in",
-            file=file, hint="the sampling rate is too low for this speed; log at 5 kHz or more")
+            file=file, hint="the sampling rate is too low for this speed; log at "
+                            f"{ADVISED_SAMPLE_RATE / 1e3:g} kHz or more")
     peak = band[np.argmax(power[band])]
     f_peak = frequency[peak]
     if 0 < peak < frequency.size - 1:

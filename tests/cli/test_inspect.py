@@ -37,6 +37,23 @@ def test_json_document(tmp_path):
     assert report["warnings"] == []
 
 
+def test_the_sampling_rate_is_shown_and_an_engagement_log_too_slow_for_impacts_warned_of(
+        tmp_path):
+    path = tmp_path / "t.csv"
+    path.write_text(PLAIN)  # a sample every 0.1 s
+    tensile = inspect_json(str(path))
+    assert tensile["sample_rate_hz"] == pytest.approx(10.0)
+    assert tensile["warnings"] == []
+    engagement = inspect_json("--kind", "engagement", str(path))
+    assert engagement["warnings"] == [
+        "sampled at 10 Hz: an engagement run needs the ringing of the chain branch after each "
+        "strike, 5 kHz or more; processed at this rate it is likely refused"]
+    fast = tmp_path / "fast.csv"
+    fast.write_text("time [s],force [kN]\n" + "".join(f"{i / 1e4},{load}\n"
+                                                      for i, load in enumerate(LOAD)))
+    assert inspect_json("--kind", "engagement", str(fast))["warnings"] == []
+
+
 def test_a_counter_that_skips_cycles_is_named(tmp_path):
     # a real fatigue log's counter: cycles 0 to 3 logged, then 110
     path = tmp_path / "fatigue.csv"
