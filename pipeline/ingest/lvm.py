@@ -43,9 +43,11 @@ headers (:data:`TEXT`): a long log is then read by row range, as a CSV log is
 numpy over blocks of bytes (a row with more delimiters than the channels
 need); only then are the rows searched for the comments themselves.
 
-Refused, with a hint: ``X_Columns Multi`` with several channels (an X column
-per channel; with one channel it is ``X_Columns One``), and a file
-of several segments (a header again after the rows).
+``X_Columns Multi`` (an X column per channel) is read when every channel's X
+axis is alike (one ``X0``, ``Delta_X`` and number of ``Samples``): the first
+X column is the time, the others are named ``X_Value 2``, ``X_Value 3``...
+and take no role. Refused, with a hint: ``X_Columns Multi`` of unlike X axes, and a
+file of several segments (a header again after the rows).
 """
 
 from __future__ import annotations
@@ -143,11 +145,16 @@ def table_spec(head: Head) -> TableSpec:
     names = [field.strip() for field in split_fields(head.lines[names_index], delimiter)]
     x_columns = (file_tags.get("X_Columns") or ["One"])[0]
     if x_columns.lower() == "multi" and names.count("X_Value") > 1:
-        row = next((index + 1 for index, line in enumerate(head.lines[: ends[0]])
-                    if line.strip().startswith("X_Columns")), None)
-        raise LayoutError(
-            "X_Columns Multi (an X column for every channel) is not read", file=head.name,
-            row=row, hint="write the file with one X column (X_Columns One) or none")
+        if not _one_x_axis(segment):
+            row = next((index + 1 for index, line in enumerate(head.lines[: ends[0]])
+                        if line.strip().startswith("X_Columns")), None)
+            raise LayoutError(
+                "X_Columns Multi (an X column for every channel), the channels' X axes not "
+                "alike, is not read", file=head.name, row=row,
+                hint="write the file with one X column (X_Columns One) or none")
+        numbers = iter(range(2, len(names) + 1))
+        names = [f"X_Value {next(numbers)}" if name == "X_Value" and index > 0 else name
+                 for index, name in enumerate(names)]
     data_index = names_index + 1
     data_lines = [line for line in head.lines[data_index:] if line.strip()]
     if not data_lines:
@@ -171,9 +178,9 @@ def table_spec(head: Head) -> TableSpec:
     time_axis = (segment.get("X_Dimension") or [""])[0].lower() == "time"
     if time_axis and names[0] == "X_Value":
         names[0] = TIME_NAME
-    labels = segment.get("Y_Unit_Label", [])
-    units = [("s" if time_axis else None), *labels[: width - 1]]
-    units += [None] * (width - len(units))
+    labels = iter(segment.get("Y_Unit_Label", []))  # the channels', not the X columns'
+    units = [("s" if time_axis else None), *(
+        None if name.startswith("X_Value") else next(labels, None) for name in names[1:])]
     return TableSpec(
         delimiter=delimiter,
         decimal=(file_tags.get("Decimal_Separator") or ["."])[0],
@@ -205,6 +212,13 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
                 f"channels' differ ({', '.join(steps)}): they were not sampled at one rate "
                 "(name the time column in the run sheet if a channel holds the time)")
     return raw
+
+
+def _one_x_axis(segment: Mapping[str, list[str]]) -> bool:
+    """Whether every channel of a segment has the same X axis: one ``X0``, one ``Delta_X``,
+    one number of ``Samples`` (an X column for every channel then repeats the first)."""
+    return all(len({value.strip() for value in segment.get(tag, []) if value.strip()}) == 1
+               for tag in ("X0", "Delta_X", "Samples"))
 
 
 def by_rows(head: Head, spec: TableSpec) -> bool:

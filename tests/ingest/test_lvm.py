@@ -94,13 +94,24 @@ def test_without_unit_labels_the_run_sheet_gives_the_units(write):
     np.testing.assert_allclose(table["force"], np.round(FORCE_N, 6) * 1e3)
 
 
-@pytest.mark.parametrize("options, message", [
-    ({"multi": True}, "X_Columns Multi"),
-    ({"segment_again": True}, "several segments"),
+def test_an_x_column_for_every_channel_of_one_x_axis_is_read_by_the_first(write):
+    # a real LabVIEW file (X_Columns Multi): each channel's X column repeats the first's
+    table, meta = read_table(write("log.lvm", lvm(multi=True)), kind="tensile")
+    np.testing.assert_allclose(table["time"], TIME, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(table["gauge_1"], np.round(EXTENSION_MM, 6) * 1e-3)
+    assert [(c.name, c.role, c.unit) for c in meta.columns] == [
+        ("Time", "time", "s"), ("Force", "force", "N"), ("X_Value 2", None, None),
+        ("Extension", "gauge_1", "mm")]
+
+
+@pytest.mark.parametrize("text, message", [
+    (lvm(multi=True).replace("Delta_X\t0.010000\t0.010000", "Delta_X\t0.010000\t0.020000"),
+     "X_Columns Multi"),
+    (lvm(segment_again=True), "several segments"),
 ])
-def test_what_is_not_read_is_refused_with_a_hint(write, options, message):
+def test_what_is_not_read_is_refused_with_a_hint(write, text, message):
     with pytest.raises(LayoutError, match=message) as caught:
-        read_table(write("log.lvm", lvm(**options)))
+        read_table(write("log.lvm", text))
     assert caught.value.hint
 
 
