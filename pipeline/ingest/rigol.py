@@ -13,12 +13,19 @@ units row, in seconds; the units row gives the channels' units. The time of
 sample X is ``Start + X * Increment`` [s]: the reader gives the X column as
 ``Time`` in seconds. Every data row ends with a delimiter.
 
+Some models write no X column (``CH1,CH2,Start,Increment,`` over
+``Volt,Volt,-6.0e-02,1.0e-04``): the time of the i-th row (from 0) is then
+``Start + i * Increment``, given as a ``Time`` column after the channels (in
+the empty field the rows end with).
+
 Refused, with a hint: a ``Start`` or ``Increment`` that is not a number.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
+
+import numpy as np
 
 from pipeline.errors import LayoutError
 from pipeline.ingest.delimited import TextLayout, read_contiguous
@@ -37,12 +44,24 @@ TIME_NAME = "Time"
 
 def matches(head: Head, spec: TableSpec | None = None) -> bool:
     """Whether the head is a Rigol export: ``X``, channels, ``Start``, ``Increment``
-    over a units row that begins with ``Sequence``."""
+    over a units row that begins with ``Sequence``; or, without the ``X`` column, the
+    channels, ``Start`` and ``Increment`` over their units and two numbers."""
     if len(head.lines) < 3:
         return False
-    names = _cells(head.lines[0])
-    return (names[0] == "X" and all(name in names[2:] for name in AXIS)
-            and _cells(head.lines[1])[0] == SEQUENCE)
+    names, units = _cells(head.lines[0]), _cells(head.lines[1])
+    if names[0] == "X":
+        return all(name in names[2:] for name in AXIS) and units[0] == SEQUENCE
+    return (all(name in names[1:] for name in AXIS)
+            and names.index(AXIS[1]) == names.index(AXIS[0]) + 1
+            and all(_is_number(text) for text in _axis_cells(head)))
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
 
 
 #: The rows below the headers as delimited text, read whole (the X column becomes the
@@ -56,14 +75,22 @@ def table_spec(head: Head) -> TableSpec:
     Raises
     ------
     LayoutError
-        If ``Start`` or ``Increment`` is not a number.
+        If ``Start`` or ``Increment`` is not a number, or without an ``X`` column the
+        rows do not end with an empty field to give the time in.
     """
     names, units = _cells(head.lines[0]), _cells(head.lines[1])
     _axis(head)
     channels = names.index(AXIS[0])
     width = len(split_fields(head.lines[2], ","))
-    columns = [TIME_NAME, *names[1:channels]]
-    column_units = ["s", *units[1:channels]]
+    if _has_x(head):
+        columns, column_units = [TIME_NAME, *names[1:channels]], ["s", *units[1:channels]]
+    elif width > channels:  # the time in the empty field after the channels
+        columns, column_units = [*names[:channels], TIME_NAME], [*units[:channels], "s"]
+    else:
+        raise LayoutError(
+            "the export has no X column, and its rows no field to give the time in",
+            file=head.name, row=3, hint="export the waveform again from the oscilloscope "
+            "(CSV), or give the time as a column of its own")
     pad = [""] * (width - len(columns))
     return TableSpec(
         delimiter=",", decimal=".", names=columns + pad, header_index=0, units_index=1,
@@ -74,12 +101,20 @@ def table_spec(head: Head) -> TableSpec:
 
 
 def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTable:
-    """Read a Rigol export sniffed as `head` / `spec`: the X column becomes the time."""
+    """Read a Rigol export sniffed as `head` / `spec`: the X column becomes the time, or
+    without one the time is built from the rows' places."""
     raw = read_contiguous(head, spec, TEXT.header(head, spec, columns))
-    if 0 in raw.arrays:
+    time = spec.names.index(TIME_NAME)
+    if time in raw.arrays:
         start, increment = _axis(head)
-        raw.arrays[0] = start + increment * raw.arrays[0]
+        place = (raw.arrays[time] if _has_x(head)
+                 else raw.first_row + np.arange(raw.rows, dtype=float))
+        raw.arrays[time] = start + increment * place
     return raw
+
+
+def _has_x(head: Head) -> bool:
+    return _cells(head.lines[0])[0] == "X"
 
 
 def _cells(line: str) -> list[str]:

@@ -33,6 +33,25 @@ def test_the_time_is_start_plus_the_sample_number_times_the_increment(write):
                                rtol=0, atol=1e-18)
 
 
+def test_without_an_x_column_the_time_is_built_from_the_rows_places(write):
+    # a real Rigol export of no X column: the time in the empty field the rows end with
+    text = rigol().replace("X,CH1", "CH1").replace("Sequence,Volt", "Volt")
+    text = "\n".join(line.split(",", 1)[1] if index > 1 else line
+                     for index, line in enumerate(text.splitlines())) + "\n"
+    table, meta = read_table(write("NewFile1.csv", text), kind="engagement",
+                             columns={"force": "CH1"}, units={"force": "kN"})
+    assert meta.layout == "rigol"
+    assert [(c.name, c.unit) for c in meta.columns][:3] == [
+        ("CH1", "kN"), ("CH2", "Volt"), ("Time", "s")]
+    np.testing.assert_allclose(table["time"], START + INCREMENT * np.arange(40),
+                               rtol=0, atol=1e-18)
+    np.testing.assert_allclose(table["force"], 10.0 * (np.arange(40) % 7))
+    reader = open_log(write("long.csv", text), kind="engagement",
+                      columns={"force": "CH1"}, units={"force": "kN"})
+    np.testing.assert_allclose(reader.read(30, 40)[0]["time"], table["time"][30:],
+                               rtol=0, atol=1e-18)
+
+
 def test_volts_are_no_force_until_the_run_sheet_says_so(write):
     with pytest.raises(Exception, match="no force column"):
         read_table(write("NewFile1.csv", rigol()), kind="engagement")
