@@ -81,11 +81,14 @@ PROCESSING_WORDS = frozenset({"smp", "avg", "max", "min", "tot", "std", "med", "
 #: Data rows of the head looked at to tell a column of text labels (a step's name, a
 #: status) from a column of numbers with a bad cell.
 TEXT_ROWS = 32
-#: Cell texts read as missing values: pyarrow's defaults, "none" (a data logger's empty
-#: channel; Python's None written as text) and a lone "." (SAS's missing number, as in a
-#: fatigue table's first half cycle); each also after the blank of a ", " delimiter
-#: (``0.50, , 0.113``).
-_NULL_TEXTS = frozenset(pacsv.ConvertOptions().null_values) | {"None", "none", "."}
+#: Cell texts read as missing values: pyarrow's defaults (among them a spreadsheet's
+#: ``#N/A``), "none" (a data logger's empty channel; Python's None written as text), a lone
+#: "." (SAS's missing number, as in a fatigue table's first half cycle) and the other error
+#: values of a spreadsheet's formulas (``#VALUE!``, ``#DIV/0!``); each also after the blank
+#: of a ", " delimiter (``0.50, , 0.113``).
+SPREADSHEET_ERRORS = frozenset({"#VALUE!", "#DIV/0!", "#REF!", "#NUM!", "#NAME?", "#NULL!"})
+_NULL_TEXTS = (frozenset(pacsv.ConvertOptions().null_values) | {"None", "none", "."}
+               | SPREADSHEET_ERRORS)
 NULL_VALUES = _NULL_TEXTS | {" " + text for text in _NULL_TEXTS}
 #: Single-byte encodings tried when a file is not UTF-8, in order of preference on a tie.
 SINGLE_BYTE_ENCODINGS = ("latin-1", "cp1250")

@@ -66,6 +66,16 @@ def test_none_marks_a_missing_value(write):
     assert table["gauge_1"].isna().tolist() == [False, True]
 
 
+@pytest.mark.parametrize("error", ["#VALUE!", "#DIV/0!", "#REF!", "#NUM!", "#NAME?", "#NULL!"])
+def test_a_spreadsheet_formulas_error_value_marks_a_missing_value(write, error):
+    # a structures lab's record worked over in Excel: a failed formula in the first row was
+    # taken for a second table's names row, and the file refused
+    text = HEADER + rows((0, 1, error), (1, 2, 3), (2, 3, 4))
+    table, meta = read_table(write("xl.csv", text))
+    assert table["gauge_1"].isna().tolist() == [True, False, False]
+    assert "gauge_1: 1 missing values kept as NaN; longest run 1 rows from line 2" in meta.warnings
+
+
 def test_run_sheet_units_fill_missing_units_and_override_with_warning(write):
     text = "time,force [kN],gauge1\n" + rows((0, 1, 2), (1, 2, 3))
     table, meta = read_table(write("u.csv", text),
