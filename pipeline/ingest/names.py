@@ -315,7 +315,7 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
     if match is not None and match["name"] and not _qualifier(match):
         unit = next(match[group] for group in ("sq", "par", "ang", "jis", "wide")
                     if match[group] is not None)
-        return match["name"].strip(), unit.strip()
+        return match["name"].strip(), unit.strip() or None  # "time ()": no unit
     separator = " / " if " / " in text else "/" if text.count("/") == 1 else None
     if separator:
         name, _, unit = text.rpartition(separator)

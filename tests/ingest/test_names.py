@@ -108,6 +108,8 @@ def test_every_listed_name_matches_its_own_role():
         # a word in parentheses that says how the values were worked is no unit
         ("(DWRT CPU) Power (uncorrected)", ("(DWRT CPU) Power (uncorrected)", None)),
         ("Chain force (filtered)", ("Chain force (filtered)", None)),
+        # empty brackets (a TelemetryViewer export's "time ()") give no unit, not ''
+        ("time ()", ("time", None)), ("reading []", ("reading", None)),
     ],
 )
 def test_split_name_unit(cell, expected):
