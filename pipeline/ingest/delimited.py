@@ -95,8 +95,10 @@ from pipeline.ingest.unitparse import is_micro_alone, is_strain_unit, spellings,
 #: & Schwarz's RTH writes the singular).
 HORIZONTAL_UNITS = ("Horizontal Units", "Horizontal Unit")
 #: The keys of a preamble row that gives each channel's unit, folded (a DTS SLICE export's
-#: ``Engineering Unit``, a Kyowa PCD-400A's ``単位``).
+#: ``Engineering Unit``, a Kyowa PCD-400A's ``単位``, a Rohde & Schwarz RTH oscilloscope's
+#: ``Vertical Unit``).
 UNITS_ROW_KEYS = frozenset({"engineering unit", "engineering units", "unit", "units", "eu",
+                            "vertical unit", "vertical units",
                             "einheit", "einheiten", "unite", "unites", "unidad", "unidades",
                             "unidade", "単位"})
 #: Column names that are a unit of time, folded: the column holds the time in that unit

@@ -739,7 +739,22 @@ KYOWA = ('"ID番号","PCD-400A"\n"試験日時","2026/02/26","16:41:09"\n"測定
          '0.04,1.75,4.0\n')
 
 
+# the settings of a Rohde & Schwarz RTH1004 export (its layout; our numbers), its load
+# cell's channel set to kN
+RTH = ("Model,RTH1004\nSerialNumber,100001\nFirmware Version,'1.70.3.2'\n\n"
+       "Acquisition Time Stamp,2026-01-05 10:00:00.0,2026-01-05 10:00:00.0\n"
+       "Waveform Type,ANALOG,\nAcquisition Mode,SAMPLE,\nHorizontal Unit,s,\n"
+       "Horizontal Scale,0.2,\nHorizontal Position,0.8,\nReference Point,50 %,\n"
+       "Sample Interval,1e-05,\nRecord Length,100000,\nProbe Setting,'10:1','10:1'\n"
+       "Vertical Unit,kN,V\nVertical Scale,2,2\nVertical Position,-3,0\n"
+       "Vertical Offset,0,0\nHistory Index,0,0\n"
+       "History Time Stamp,0.000000000000,0.000000000000\n,,\nTIME,CH1,CH2\n"
+       + "".join(f"{-0.2 + 1e-5 * i:.5f},{-0.085 - 0.005 * i:.3f},0.15\n" for i in range(30)))
+
+
 @pytest.mark.parametrize("text, options, units, forces, key", [
+    (RTH, {"columns": {"force": "CH1"}}, [("TIME", "s"), ("CH1", "kN"), ("CH2", "V")],
+     -85.0 - 5.0 * np.arange(30), "'CH1', 'CH2' from the preamble's 'Vertical Unit' row"),
     (DTS_SLICE, {"units": {"time": "s"}},
      [("Time", "s"), ("Chan 0:AV1", "deg/sec"), ("Chan 1:AC1", "g"), ("Chan 2:LC1", "kN")],
      [1.5e3, 1.7e3], "'Chan 0:AV1', 'Chan 1:AC1', 'Chan 2:LC1' from the preamble's "
