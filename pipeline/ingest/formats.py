@@ -131,8 +131,9 @@ def read_raw(
     sheet : str or int, optional
         Sheet of a workbook.
     specimen : str or int, optional
-        Of the specimens one below the other in an Instron Merlin export, the one read
-        (its name or place from 1); the other layouts leave the choice of a specimen
+        Of the specimens one below the other in an Instron Merlin export or of the tests
+        in an MTS-like export of blocks, the one read (its name or place from 1); the
+        other layouts leave the choice of a specimen
         to :func:`~pipeline.ingest.canonical.build`.
     """
     if sniffed.layout in xlsx.LAYOUTS:
@@ -141,4 +142,6 @@ def read_raw(
         return tdms.parse(source, columns)
     if sniffed.layout == merlin.LAYOUT:
         return merlin.read(sniffed.head, columns, specimen)
+    if sniffed.layout == mts.LAYOUT:
+        return mts.read(sniffed.head, sniffed.spec, columns, specimen)
     return TEXT_LAYOUTS[sniffed.layout].read(sniffed.head, sniffed.spec, columns)

@@ -31,8 +31,14 @@ File defects handled
   :mod:`pipeline.ingest.canonical`);
 * a later block whose time starts again (at or before the first block's first
   time): several tests one after another, as a logger writes that appends
-  each test to one file with its names row: refused, naming the block's
-  lines, rather than read as one test whose time steps back;
+  each test to one file with its names row, or a press's software each
+  specimen of a series (Form+Test: a line of the specimen's results, the
+  names row and the units row over each table): the specimens one below the
+  other, of which the run sheet's ``specimen_in_file`` names the one read (its
+  place from 1 at the top); without it the file is refused, listing them,
+  rather than read as one test whose time steps back. A units row repeated
+  over a later block, and a line of another width just above a repeated names
+  row (a specimen's results), are that block's header;
 * no line end after the last point; a truncated last point (dropped, warned).
 """
 
@@ -49,6 +55,7 @@ from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.sniff import Head, TableSpec, split_fields
 from pipeline.ingest.source import BufferSource
+from pipeline.ingest.specimens import choose
 from pipeline.ingest.textbody import (
     Region,
     parse_body,
@@ -63,6 +70,8 @@ LAYOUT = "mts"
 _DATA_START = r"[ \t]*(?:[-+.\d]|(?i:nan|n/a|na|null) *(?=[\t;,|\r\n]|$)|(?=[\t;,|\r\n]|$))"
 _HEADER_LINE = re.compile(rb"(?m)^(?!" + _DATA_START.encode() + rb")[^\r\n]*(?:\r\n|\r|\n|\Z)")
 _DATA_LINE = re.compile(_DATA_START)
+#: Put before a line that reads as data but belongs to a block's header.
+HEADER_MARK = b"#"
 #: A line that is not blank.
 _ROW = re.compile(rb"[^\r\n]*[^\s][^\r\n]*")
 
@@ -90,17 +99,32 @@ def _block_openers(head: Head, spec: TableSpec) -> set[str]:
             if any(char.isalpha() for char in line)}
 
 
-def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTable:
-    """Read an MTS cyclic-acquisition export sniffed as `head` / `spec`."""
+def read(head: Head, spec: TableSpec, columns: Mapping | None = None,
+         specimen: str | int | None = None) -> RawTable:
+    """Read an MTS cyclic-acquisition export sniffed as `head` / `spec`; of several tests
+    one below the other, the one `specimen` (the run sheet's ``specimen_in_file``) names.
+
+    Raises
+    ------
+    SpecimensError
+        When the file holds several tests and `specimen` does not say which.
+    """
     header = text_header(head, spec, LAYOUT, parse_preamble(spec.preamble, spec.delimiter), columns)
     start = head.offsets[spec.data_index]
     data = head.source.read(start, head.size)
     if not head.ascii_compatible:
         data = data.decode(head.codec, errors="replace").encode("utf-8")
+    first_line = spec.data_index + 1
+    marked = _marked_headers(head, spec, data, first_line)
+    data = marked.data
     times = header.candidates.roles.get("time", [])
     blocks = _later_blocks(head, spec, data, times[0] if len(times) == 1 else None)
+    tests = [block for block in blocks if block.restarts and not block.other]
+    part = range(start, head.size)
+    if tests:
+        data, blocks, part, first_line = _one_test(head, marked, blocks, tests, start,
+                                                   first_line, specimen, header.metadata)
     same = [block for block in blocks if not block.other]
-    _refuse_tests_one_after_another(head, same)
     header.metadata.preamble["blocks"] = str(1 + sum(block.opens for block in same))
     header.metadata.warnings += [block.note for block in blocks if block.other]
     if any(block.other for block in blocks):
@@ -112,8 +136,9 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
     del data
     kept, truncated = trim_truncated_tail(Region(points, 0, points.size, 1, "utf-8"),
                                           spec.width, spec.delimiter, spec.decimal)
-    region = Region(head.source, start, head.size, spec.data_index + 1, head.codec, _is_data,
-                    frozenset(line for block in blocks if block.other for line in block.lines))
+    region = Region(head.source, part.start, part.stop, first_line, head.codec, _is_data,
+                    frozenset(line for block in blocks if block.other for line in block.lines)
+                    | marked.lines)
     table, _ = parse_body(  # comment lines are not data lines: filtered out above
         kept,
         region,
@@ -128,22 +153,79 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
     del table
     if truncated:
         header.metadata.warnings.append(truncated_warning(region.line_of(parsed[1])))
+    if tests:
+        header.metadata.first_data_line = region.line_of(0)
     return raw_table(parsed, region, header)
 
 
-def _refuse_tests_one_after_another(head: Head, blocks: list[_Block]) -> None:
-    """Refuse a file whose later blocks start their time again: tests one after another."""
-    restarts = [block for block in blocks if block.restarts]
-    if restarts:
-        first = restarts[0].lines
+class _Marked(NamedTuple):
+    """The data with header marks (:func:`_marked_headers`), and where they stand."""
+
+    data: bytes
+    cuts: list[int]  #: offsets in the unmarked data of the lines marked, in order
+    lines: frozenset[int]  #: their line numbers in the file
+
+    def unmarked(self, offset: int) -> int:
+        """The offset in the unmarked data of `offset` in the marked."""
+        return offset - len(HEADER_MARK) * sum(
+            cut + index * len(HEADER_MARK) < offset for index, cut in enumerate(self.cuts))
+
+
+def _marked_headers(head: Head, spec: TableSpec, data: bytes, first_line: int) -> _Marked:
+    """`data` (the file from its first data row, on line `first_line`) with the lines that
+    belong to a later block's header though they read as data marked as header lines
+    (:data:`HEADER_MARK` before them): the units row repeated (its first field empty,
+    ``;;;s;kN;mm``) and a line of another width than the table's just above a repeated
+    names row (a press's results of the next specimen)."""
+    names = head.lines[spec.header_index].strip().encode()
+    units = (head.lines[spec.units_index].strip().encode()
+             if spec.units_index is not None else b"")
+    cuts = set()
+    for found in re.finditer(rb"(?m)^[ \t]*" + re.escape(names) + rb"[ \t]*\r?$", data):
+        before = data[:found.start()].rstrip()
+        line_start = before.rfind(b"\n") + 1
+        line = before[line_start:].decode("utf-8", errors="replace")
+        if line and _DATA_LINE.match(line) and len(split_fields(line, spec.delimiter)) != (
+                spec.width):
+            cuts.add(line_start)
+    if units.strip(b" \t;,|"):
+        cuts.update(found.start() for found in re.finditer(
+            rb"(?m)^[ \t]*" + re.escape(units) + rb"[ \t]*\r?$", data))
+    ordered = sorted(cuts)
+    marked = b"".join(data[a:b] if index == 0 else HEADER_MARK + data[a:b]
+                      for index, (a, b) in enumerate(zip([0, *ordered], [*ordered, len(data)],
+                                                         strict=True)))
+    return _Marked(marked, ordered, frozenset(first_line + data.count(b"\n", 0, cut)
+                                              for cut in ordered))
+
+
+def _one_test(head: Head, marked: _Marked, blocks: list[_Block], tests: list[_Block],
+              start: int, first_line: int, specimen: str | int | None,
+              metadata) -> tuple[bytes, list[_Block], range, int]:
+    """Of tests one below the other (`tests`: the later blocks whose time starts again),
+    the one `specimen` names: its part of the marked data (the file from offset `start`
+    on, whose first line `first_line` is the first data row), its later blocks there, and
+    where that part lies in the file (offsets, first line number)."""
+    lines = [test.lines.start for test in tests]
+    if not head.ascii_compatible:  # its offsets in the file are not those of the data
         raise LayoutError(
-            f"the block of lines {first.start} to {first.stop - 1} starts its time again, at "
-            "or before the first block's first time: the file holds "
-            f"{len(restarts) + 1} tests (or a test's steps) one after another, each timed from "
-            "its own start, not one test in blocks",
-            file=head.name, row=first.start,
-            hint="export each test to a file of its own, or delete the other tests' (or "
-                 "steps') lines in a copy of the file")
+            f"the block of lines {lines[0]} and on starts its time again: the file holds "
+            f"{len(tests) + 1} tests (or a test's steps) one after another",
+            file=head.name, row=lines[0],
+            hint="save the file as UTF-8, or export each test to a file of its own")
+    said = (f"the file holds {len(tests) + 1} tests (specimens, or a test's steps) one below "
+            f"the other, each timed from its own start: the time starts again at line"
+            f"{'s' if len(lines) > 1 else ''} {', '.join(map(str, lines))}")
+    chosen = choose([], len(tests) + 1, specimen, said, "from the top", file=head.name,
+                    row=lines[0])
+    metadata.specimen = str(chosen + 1)
+    low = tests[chosen - 1].start if chosen else 0
+    high = tests[chosen].start if chosen < len(tests) else len(marked.data)
+    kept = [block._replace(start=block.start - low) for block in blocks
+            if low < block.start < high]
+    return (marked.data[low:high], kept,
+            range(start + marked.unmarked(low), start + marked.unmarked(high)),
+            lines[chosen - 1] if chosen else first_line)
 
 
 class _Block(NamedTuple):
@@ -201,7 +283,8 @@ def _block(spec: TableSpec, first: _FirstBlock, header_text: str, points: memory
     """The block at offset `start` of the data, on file `lines`: its header lines
     `header_text`, then its `points`."""
     openers = first.openers
-    header = [line.strip() for line in header_text.splitlines()]
+    header = [line.strip().removeprefix(HEADER_MARK.decode()).strip()  # marked: as written
+              for line in header_text.splitlines()]
     widths = {line: len(split_fields(line, spec.delimiter)) for line in header}
     rows = [row.group().decode("latin-1") for row in islice(_ROW.finditer(points), 3)]
     fields = split_fields(rows[0], spec.delimiter) if rows else []

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from pipeline.errors import LayoutError, ValueParseError
+from pipeline.errors import SpecimensError, ValueParseError
 from pipeline.ingest import read_table
 from pipeline.units import STANDARD_GRAVITY
 
@@ -164,14 +164,45 @@ def appended(tests: int, points: int, runs_on: bool = False) -> str:
     return "\n".join(lines)
 
 
-def test_tests_one_after_another_are_refused_not_joined(write):
+def test_tests_one_after_another_are_read_one_at_a_time_not_joined(write):
     # joined, the second pull followed the first as one test whose time steps back once
     # (a warning only), and its force drop read as the fracture
-    with pytest.raises(LayoutError) as caught:
-        read_table(write("appended.csv", appended(tests=3, points=20)))
+    path = write("appended.csv", appended(tests=3, points=20))
+    with pytest.raises(SpecimensError) as caught:
+        read_table(path)
     assert caught.value.row == 24  # "Specimen 2": 2 lines, 20 samples and a blank line above
-    assert "the file holds 3 tests (or a test's steps) one after another" in caught.value.message
+    assert caught.value.message.startswith(
+        "the file holds 3 tests (specimens, or a test's steps) one below the other, each "
+        "timed from its own start: the time starts again at lines 24, 47")
     assert "a file of its own" in caught.value.hint
+    for test in (1, 2, 3):
+        table, meta = read_table(path, specimen=test)
+        np.testing.assert_allclose(table["time"], np.arange(20) / 10)
+        np.testing.assert_allclose(table["force"], 1e3 * test * np.arange(20))
+        assert (meta.specimen, meta.first_data_line) == (str(test), 3 + 23 * (test - 1))
+        assert meta.warnings == []
+
+
+# a Form+Test press's export of a series (its layout; our numbers): over each specimen's
+# table a line of its results, the names row and the units row (its first fields empty)
+PRESS = ("HiLo floors\nDouble Punch;22.10.2019;09:23;29.11.2019;09:56;38;00:33;\n"
+         "1;150.000;150.000;7716;2911;106.9;6.1;0.66\n"
+         "Index;Element;Markierung;Zeit;Kraft;Weg\n;;;s;kN;mm\n{rows}\n"
+         "2;150.000;150.000;7728;2915;141.7;8.0;1.31\n"
+         "Index;Element;Markierung;Zeit;Kraft;Weg\n;;;s;kN;mm\n{rows}")
+
+
+def test_a_press_series_specimens_under_their_results_lines_are_read_one_at_a_time(write):
+    rows = "\n".join(f"{i + 1};100;100;{0.5 * i:.4f};{5 + i:.2f};{0.01 * i:.3f}"
+                     for i in range(25))
+    path = write("Double_Punch.txt", PRESS.format(rows=rows))
+    with pytest.raises(SpecimensError, match="the file holds 2 tests") as caught:
+        read_table(path)
+    assert caught.value.row == 31  # the second specimen's results line
+    table, meta = read_table(path, specimen=2)
+    assert meta.first_data_line == 34 and len(table) == 25
+    np.testing.assert_allclose(table["force"], 1e3 * (5 + np.arange(25)))
+    np.testing.assert_allclose(table["time"], 0.5 * np.arange(25))
 
 
 def test_blocks_whose_time_runs_on_are_one_test(write):
