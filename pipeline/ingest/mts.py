@@ -174,29 +174,43 @@ class _Marked(NamedTuple):
 def _marked_headers(head: Head, spec: TableSpec, data: bytes, first_line: int) -> _Marked:
     """`data` (the file from its first data row, on line `first_line`) with the lines that
     belong to a later block's header though they read as data marked as header lines
-    (:data:`HEADER_MARK` before them): the units row repeated (its first field empty,
-    ``;;;s;kN;mm``) and a line of another width than the table's just above a repeated
-    names row (a press's results of the next specimen)."""
+    (:data:`HEADER_MARK` before them): the units row repeated when its first field is
+    empty (``;;;s;kN;mm``), and a line of another width than the table's just above a
+    repeated names row (a press's results of the next specimen)."""
     names = head.lines[spec.header_index].strip().encode()
-    units = (head.lines[spec.units_index].strip().encode()
-             if spec.units_index is not None else b"")
+    units = (head.lines[spec.units_index].strip()
+             if spec.units_index is not None else "")
     cuts = set()
     for found in re.finditer(rb"(?m)^[ \t]*" + re.escape(names) + rb"[ \t]*\r?$", data):
-        before = data[:found.start()].rstrip()
-        line_start = before.rfind(b"\n") + 1
-        line = before[line_start:].decode("utf-8", errors="replace")
+        line_start, line = _line_before(data, found.start())
         if line and _DATA_LINE.match(line) and len(split_fields(line, spec.delimiter)) != (
                 spec.width):
             cuts.add(line_start)
-    if units.strip(b" \t;,|"):
+    if units.strip(" \t;,|") and _DATA_LINE.match(units):
         cuts.update(found.start() for found in re.finditer(
-            rb"(?m)^[ \t]*" + re.escape(units) + rb"[ \t]*\r?$", data))
+            rb"(?m)^[ \t]*" + re.escape(units.encode()) + rb"[ \t]*\r?$", data))
     ordered = sorted(cuts)
+    bounds = [0, *ordered, len(data)]
     marked = b"".join(data[a:b] if index == 0 else HEADER_MARK + data[a:b]
-                      for index, (a, b) in enumerate(zip([0, *ordered], [*ordered, len(data)],
-                                                         strict=True)))
-    return _Marked(marked, ordered, frozenset(first_line + data.count(b"\n", 0, cut)
-                                              for cut in ordered))
+                      for index, (a, b) in enumerate(zip(bounds[:-1], bounds[1:], strict=True)))
+    lines, line = [], first_line
+    for previous, cut in zip(bounds[:-2], ordered, strict=True):
+        line += data.count(b"\n", previous, cut)
+        lines.append(line)
+    return _Marked(marked, ordered, frozenset(lines))
+
+
+def _line_before(data: bytes, offset: int) -> tuple[int, str]:
+    """The offset and text of the last line of `data` before `offset` that is not blank
+    (``(0, "")`` if none)."""
+    end = offset
+    while end > 0:
+        start = data.rfind(b"\n", 0, end - 1) + 1
+        text = data[start:end].strip()
+        if text:
+            return start, text.decode("utf-8", errors="replace")
+        end = start
+    return 0, ""
 
 
 def _one_test(head: Head, marked: _Marked, blocks: list[_Block], tests: list[_Block],

@@ -128,11 +128,13 @@ def test_a_channel_across_the_specimen_takes_no_role(name):
 
 
 @pytest.mark.parametrize("name", ["sample_count", "Sample count", "PIP count", "Temp",
-                                  "Temperature", "Temperatur Probe"])
-def test_a_count_of_samples_or_a_temperature_takes_no_role(name):
+                                  "Temperature", "Temperatur Probe",
+                                  "Deformation Acceleration", "Accel X"])
+def test_a_count_of_samples_a_temperature_or_an_acceleration_takes_no_role(name):
     # a load-cell rig's calibration table counts the readings it averaged in sample_count,
     # Bluehill the marks of an operator's button in PIP count; an accelerometer logs its
-    # temperature in degrees, no angle
+    # temperature in degrees, no angle; a drop tower's 'Deformation Acceleration (m/s^2)'
+    # was a gauge by its first word
     assert match_role(name) is None and is_unmeasured(name)
 
 
