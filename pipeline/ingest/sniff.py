@@ -835,6 +835,7 @@ def find_table(
     specimens = tuple(labels) if len(labels) > 1 else ()
     if specimens:  # names and units written over the first specimen's columns only
         names, units = _each_specimen(names, specimens), _each_specimen(units, specimens)
+    notes += _settings_beside(rows[data:], decimal, columns, data)
     return TableSpec(
         delimiter=delimiter,
         decimal="," if pairs else decimal,
@@ -990,6 +991,34 @@ def _labels_over(row: list[str], names: list[str]) -> list[str]:
     labels = _group_labels(row)
     count = repeats(names)
     return labels if len(labels) > 1 and len(labels) == count else []
+
+
+#: Fewest first data rows whose text in a column, empty below them, makes them settings.
+SETTINGS_BESIDE_ROWS = 3
+
+
+def _settings_beside(rows: list[list[str]], decimal: str, columns: int,
+                     data: int) -> tuple[str, ...]:
+    """A note when the first data rows hold text in some column that is empty below them
+    (a Hopkinson bar's export: its settings, ``Test Time<TAB>11:48:55 AM``, in the first
+    columns beside the waveforms, whose first two numbers are their start and step), else
+    none; `rows` are the head's data rows, the first on line ``data + 1``."""
+    beside = []
+    for column in range(columns):
+        cells = [row[column].strip() if column < len(row) else "" for row in rows]
+        filled = [cell for cell in cells if not is_missing(cell)]
+        texts = max((count + 1 for count, cell in enumerate(cells) if not is_missing(cell)),
+                    default=0)
+        if (len(filled) >= SETTINGS_BESIDE_ROWS and texts + SETTINGS_BESIDE_ROWS <= len(cells)
+                and not any(is_number(cell, decimal) for cell in filled)):
+            beside.append((column, texts))
+    if not beside:
+        return ()
+    last = max(texts for _, texts in beside)
+    return (f"lines {data + 1} to {data + last}: text beside the numbers in column(s) "
+            f"{', '.join(str(column + 1) for column, _ in beside)}, and none below: settings "
+            "written beside the data? The numbers of those lines may be settings too (a "
+            "waveform's start and step), not samples: check them",)
 
 
 def _named_over(names: list[str], over: list[str]) -> tuple[list[str], tuple[str, ...]]:

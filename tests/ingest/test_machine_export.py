@@ -858,3 +858,26 @@ def test_columns_named_alike_by_a_role_keep_their_names(write):
     text = "Test;A;B;C\nTime;Force;Force;Disp\ns;kN;kN;mm\n0;1;2;3\n1;2;3;4\n"
     with pytest.raises(ColumnError, match="column .Force. is duplicated"):
         read_table(write("two.csv", text))
+
+
+def test_settings_beside_the_first_rows_of_the_data_are_questioned(write):
+    # a Hopkinson bar lab's export (its layout; our numbers): settings in the first two
+    # columns beside the waveforms, whose first two numbers are their start and step
+    settings = [("Test Time", "11:48:55 AM"), ("System ID", "HE"), ("Test Loading", "Compression"),
+                ("Sample", "Cu")]
+    lines = ["Test Date\t12/1/2006\tIncident\tTransmitted",
+             *(f"{key}\t{value}\t{number}\t{number}" for (key, value), number
+               in zip(settings, ["-5.00E-05", "1.00E-07", "-0.0113", "-0.0122"], strict=True)),
+             *(f"\t\t{-0.01 * i:.4f}\t{-0.02 * i:.4f}" for i in range(10))]
+    _, meta = read_table(write("shot.raw", "\n".join(lines) + "\n"), kind="engagement",
+                         columns={"time": "Incident", "force": "Transmitted"},
+                         units={"time": "s", "force": "kN"}, strict=False)
+    assert ("lines 2 to 5: text beside the numbers in column(s) 1, 2, and none below: settings "
+            "written beside the data? The numbers of those lines may be settings too (a "
+            "waveform's start and step), not samples: check them") in meta.warnings
+
+
+def test_a_comment_column_filled_to_the_end_of_the_head_is_no_setting(write):
+    lines = ["time [s],force [kN],note", *(f"{i},{i * 2},ok" for i in range(12))]
+    _, meta = read_table(write("log.csv", "\n".join(lines) + "\n"), kind="engagement")
+    assert not any("settings written beside" in warning for warning in meta.warnings)
