@@ -148,12 +148,15 @@ def _trailing_unit_words(cells: list[str]) -> list[tuple[str, str | None]] | Non
     (``1``, amperes) without being units.
     None when no cell has a unit.
     """
-    split = [cell.strip().rpartition(" ") for cell in cells]
+    # a comma before the unit (Russian software's "Время, с") is no part of the name
+    split = [(name.rstrip().removesuffix(","), blank, unit)
+             for name, blank, unit in (cell.strip().rpartition(" ") for cell in cells)]
     named = [(name.strip(), unit) for name, _, unit in split if unit]
     if len(named) >= 2 and all(
             name and not unit.isdigit() and spellings(unit) for name, unit in named):
         return [(_without_in(name), unit or None) for name, _, unit in split]
-    fitting = [(name.strip(), unit) if _unit_after_its_name(name.strip(), unit, blank)
+    fitting = [(name.strip().removesuffix(","), unit)
+               if _unit_after_its_name(name.strip(), unit, blank)
                else (cell.strip(), None)
                for cell, (name, blank, unit) in zip(cells, map(_last_word, cells), strict=True)]
     return fitting if any(unit for _, unit in fitting) else None

@@ -415,12 +415,24 @@ def match_role(name: str) -> str | None:
     ('cycle_count', 'force', 'force')
     >>> match_role("actuator_a_id") is None
     True
+    >>> match_role("SmallLVDT"), match_role("LoadCell")  # camel case, set apart
+    ('gauge', 'force')
     """
     if tokens(name)[-1:] == ("id",):
         return None
-    role = _best_match(name, _KEYWORDS)
+    role = _best_match(name, _KEYWORDS) or _best_match(_camel_apart(name), _KEYWORDS)
     return (None if role in _NO_ROLE_LABELS or is_command(name) or is_derived(name)
             or is_crack(name) else role)
+
+
+#: Where a name written in camel case (``SmallLVDT``, ``LoadCell``) is set apart into words.
+_CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])")
+
+
+def _camel_apart(name: str) -> str:
+    """`name` with its camel-case words set apart (``SmallLVDT`` -> ``Small LVDT``): matched
+    only when the name as written matches nothing (``CrossHead`` is one word)."""
+    return _CAMEL.sub(" ", name)
 
 
 _COMMAND_KEYWORDS = tuple((tokens(word), "command") for word in COMMAND_NAMES)

@@ -76,6 +76,9 @@ def test_units_as_the_last_word_of_every_name_are_read(write):
 
 
 @pytest.mark.parametrize(("header", "names", "units"), [
+    # Russian software writes a comma between the name and the unit
+    ("Время, с;Нагрузка, кН;Перемещение, мм", ["Время", "Нагрузка", "Перемещение"],
+     ["с", "кН", "мм"]),
     ("Time s;Weg 1;Load N", ["Time", "Weg 1", "Load"], ["s", None, "N"]),
     ("Time;Extension mm;Load N", ["Time", "Extension", "Load"], [None, "mm", "N"]),
     # a real Japanese logger: 名前 (the row number) and 測定日時 beside 荷重 kN, 変位 mm

@@ -32,6 +32,9 @@ from pipeline.ingest.names import (
         ("Total Cycle Count", "cycle_count"), ("Zyklus", "cycle_count"),
         ("cykl", "cycle_count"), ("Channel 1 Recuento", "cycle_count"),
         ("Machine_N_cycles", "cycle_count"),
+        # a salt-consolidation rig's logger writes its names in camel case
+        ("SmallLVDT", "gauge"), ("LargeLVDT", "gauge"), ("DilaFBK", None), ("ConfP", None),
+        ("PistonTemp", None), ("CrossHead", "gauge"),
         ("Cycle time", "time"), ("Load test/Time", "time"), ("Rig/Branch tension", "force"),
         ("Segment ID", None), ("exx--1", None), ("", None),
         # a real Bluehill export in Chinese: 时间, 位移, 载荷, 压缩应力, 循环计数
