@@ -99,7 +99,7 @@ def slow_for_impacts(rate: float | None) -> str | None:
 
     if rate is None or rate >= ADVISED_SAMPLE_RATE:
         return None
-    return (f"sampled at {rate:.3g} Hz: an engagement run needs the ringing of the chain "
+    return (f"sampled at {rate:.4g} Hz: an engagement run needs the ringing of the chain "
             f"branch after each strike, {ADVISED_SAMPLE_RATE / 1e3:g} kHz or more; processed "
             "at this rate it is likely refused")
 

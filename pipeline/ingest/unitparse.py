@@ -111,10 +111,17 @@ def spellings(text: str) -> list[str]:
     if is_micro_alone(text):
         return []
     text = text.strip().strip("()[]{}").strip()
+    since = _SINCE.fullmatch(text)  # a clock's count from an epoch: its unit
+    text = since["unit"] if since else text
     candidates = [text]
     if not _parses(text) or _case_says_nothing(text):
         candidates += [text.lower(), text[:1].lower() + text[1:]]
     return [spelling for spelling in dict.fromkeys(candidates) if spelling and _parses(spelling)]
+
+
+#: A time counted from an epoch, as a logger writes its stamps' unit (TelemetryViewer's
+#: ``Milliseconds since 1970-01-01``).
+_SINCE = re.compile(r"(?P<unit>[^\W\d_]+)\s+since\s+\S.*", re.IGNORECASE)
 
 
 def _parses(spelling: str) -> bool:

@@ -27,6 +27,7 @@ def factor(text, role):
         ("rev", "angle", 2 * 3.141592653589793),  # a rotary stage's revolutions
         ("Min", "time", 60.0), ("MM", "gauge", 1e-3), ("SEC", "time", 1.0),
         ("seg", "time", 1.0), ("sek", "time", 1.0),  # Portuguese and Spanish; German, Polish
+        ("Milliseconds since 1970-01-01", "time", 1e-3),  # a logger's stamps from an epoch
         # a mass in a force column is its weight (texture analysers, tribometers: "g")
         ("g", "force", 1e-3 * STANDARD_GRAVITY), ("kg", "force", STANDARD_GRAVITY),
         ("lb", "force", 4.4482216152605), ("oz", "force", 4.4482216152605 / 16),
