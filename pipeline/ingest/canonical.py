@@ -46,6 +46,7 @@ from pipeline.errors import (
 )
 from pipeline.ingest.decimalshift import decimal_shifts, step_blocks
 from pipeline.ingest.names import (
+    fold,
     gauge_kind,
     is_auxiliary,
     is_cycle_statistic,
@@ -372,7 +373,25 @@ def build(
     meta.time_monotonic, meta.time_gaps = conversion.checked_rows(table, raw, meta.warnings)
     meta.rows = len(table)
     meta.columns = list(conversion.infos)
+    meta.warnings += short_of_stated(meta.preamble, meta.rows)
     return table, meta
+
+
+#: Keys of a header that state how many rows the file holds, folded (IMADA's ``Data
+#: Quantity`` and ``DATA COUNT``, an oscilloscope's ``Record Length``).
+STATED_ROWS_KEYS = frozenset({"data quantity", "data count", "record length",
+                              "number of points", "number of samples", "number of rows"})
+
+
+def short_of_stated(preamble: Mapping[str, str], rows: int) -> list[str]:
+    """A warning when the header states more rows (:data:`STATED_ROWS_KEYS`) than the `rows`
+    read: a file cut short at a line end shows no other sign."""
+    for key, value in preamble.items():
+        text = value.strip().rstrip(",").strip()
+        if fold(key.strip()) in STATED_ROWS_KEYS and text.isdigit() and int(text) > rows:
+            return [f"the header says {key.strip()} = {int(text)}, the file holds {rows} "
+                    "rows: it may be cut short (copy it again from the machine)"]
+    return []
 
 
 def _without_padding(table: pd.DataFrame, raw: RawTable, meta: TableMetadata) -> pd.DataFrame:

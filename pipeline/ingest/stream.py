@@ -45,7 +45,14 @@ import pandas as pd
 
 from pipeline.errors import IngestError
 from pipeline.ingest import continuation, delimited, lvm, tdms
-from pipeline.ingest.canonical import Conversion, clean, convert_rows, empty_warning, settle
+from pipeline.ingest.canonical import (
+    Conversion,
+    clean,
+    convert_rows,
+    empty_warning,
+    settle,
+    short_of_stated,
+)
 from pipeline.ingest.formats import TEXT_LAYOUTS, Sniffed, check_options, read_raw, sniff
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.rowindex import EVERY, RowIndex, index_rows
@@ -344,6 +351,7 @@ def open_log(
     conversion = settle(rows.header, empty, kind=kind, units=units, specimen=specimen)
     meta.rows = rows.rows
     meta.columns = list(conversion.infos)
+    meta.warnings += short_of_stated(meta.preamble, meta.rows)
     reader = LogReader(str(path), rows.rows, meta, conversion, rows, stamp)
     continuation.note_unread_parts(path, meta, reader.last_time,
                                      {"kind": kind, "columns": columns, "units": units,

@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from pipeline.errors import ColumnError, UnitError
-from pipeline.ingest import parse_table, read_table
+from pipeline.ingest import open_log, parse_table, read_table
 
 HEADER = "time [s],force [kN],gauge1 [mm]\n"
 
@@ -275,3 +275,15 @@ def test_a_strain_column_of_an_unknown_name_is_warned_of_not_passed_over_silentl
     table, meta = read_table(write("nl.csv", text),
                              columns={"gauges": ["Verlenging", "Kanaal 3"]})
     assert "strain_1" in table and meta.warnings == []
+
+
+@pytest.mark.parametrize("stated, warned", [(5, True), (3, False)])
+def test_a_file_holding_fewer_rows_than_its_header_states_is_warned_of(write, stated, warned):
+    # a force gauge's export states its row count ('Data Quantity'): a copy cut short at a
+    # line end shows no other sign
+    text = f"Data Quantity,{stated},,\n" + HEADER + rows((0, 1, 2), (1, 2, 3), (2, 3, 4))
+    path = write("gauge.csv", text)
+    message = (f"the header says Data Quantity = {stated}, the file holds 3 rows: it may be cut "
+               "short (copy it again from the machine)")
+    for meta in (read_table(path)[1], open_log(path).metadata):
+        assert (message in meta.warnings) is warned
