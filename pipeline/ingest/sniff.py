@@ -99,6 +99,10 @@ SHIFT_JIS = "cp932"
 #: μ of microstrain, and the degree sign).
 _JAPANESE_SCRIPTS = ("CJK", "HIRAGANA", "KATAKANA", "HALFWIDTH KATAKANA", "FULLWIDTH",
                      "GREEK", "IDEOGRAPHIC", "DEGREE", "KATAKANA-HIRAGANA")
+#: Turkish Windows text: latin-1 but for six letters (ğ ı ş Ğ İ Ş), which latin-1 reads
+#: as Icelandic ones no lab writes (ð ý þ Ð Ý Þ: ``Sýnýfý`` for ``Sınıfı``).
+TURKISH = "cp1254"
+_TURKISH_BYTES = frozenset(b"\xd0\xdd\xde\xf0\xfd\xfe")
 #: Encodings of Windows text in other scripts, tried when latin-1 reads words without a
 #: Latin letter (:func:`_in_other_script`), with the Unicode name prefixes of the letters
 #: each writes: Russian (cp1251), simplified Chinese (GBK), Korean (cp949), the last two
@@ -371,6 +375,8 @@ def detect_encoding(raw: bytes, complete: bool, file: str) -> tuple[str, str, in
     )
     if _has_controls(text, best) and _is_japanese(text):
         return SHIFT_JIS, SHIFT_JIS, 0
+    if best == "latin-1" and not _TURKISH_BYTES.isdisjoint(text):
+        best = TURKISH
     other = _in_other_script(text) if _reads_foreign_words(text) else None
     return (other, other, 0) if other else (best, best, 0)
 

@@ -47,6 +47,8 @@ KOREAN = "시간(s),하중(kN),변위(mm)\r\n0.1,5.024,0.000\r\n0.2,5.379,0.001\
         (RUSSIAN, "cp1251", "cp1251"),
         (CHINESE, "gbk", "gbk"),
         (KOREAN, "cp949", "cp949"),
+        # a Turkish machine's export: latin-1 read its ı and ş as Icelandic letters
+        ("Süre;Yük;Uzama;Çevrim sayısı;Sınıfı\r\n1;2;3;4;5\r\n", "cp1254", "cp1254"),
         # words of accented letters alone, Latin all the same
         ("Länge;Größe;Höhe;Öffnung;Ärger\r\n1;2;3;4;5\r\n", "latin-1", "latin-1"),
         ("Siła;Wydłużenie;Czas;Ścieżka\r\n1;2;3;4\r\n", "cp1250", "cp1250"),
