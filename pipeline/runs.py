@@ -47,6 +47,7 @@ from pipeline.fit.wear import (
     predict_life,
 )
 from pipeline.ingest import TableMetadata, open_log, read_table
+from pipeline.ingest.names import tokens
 from pipeline.ingest.unitparse import COUNTER_UNITS
 from pipeline.results import EngagementResult, TensileResult, WearResult
 from pipeline.results.engagement import MAX_STORED_SAMPLES
@@ -484,15 +485,26 @@ def process_wear_run(sheet: RunSheet, run: RunDef, raw_sha256: str,
 
 
 def _check_counter(sheet: RunSheet, run: RunDef, metadata: TableMetadata) -> None:
-    """Refuse a cycle counter whose unit scales it (``kcycles``): it is kept as counted."""
+    """Refuse a cycle counter whose unit scales it (``kcycles``), or that counts segments
+    by its unit or name (MTS's ``Axial Segment Count``: two a cycle of a sine, more of
+    other waveforms): it is kept as counted, as cycles."""
     for column in metadata.columns:
         unit = (column.unit or "").strip().strip("()[]").strip()
-        if column.role == "cycle_count" and unit.lower() not in COUNTER_UNITS:
+        if column.role != "cycle_count":
+            continue
+        if unit.lower() not in COUNTER_UNITS:
             raise UnitError(
                 f"the cycle counter has the unit {column.unit!r}, which chainbench cannot "
                 "scale: counts are kept as counted", file=sheet.run_file(run),
                 column=column.name,
                 hint="log the cycles as a plain count (unit 1, cycles, or none)")
+        if "segment" in (*tokens(column.name), unit.lower().rstrip("s")):
+            raise UnitError(
+                f"the cycle counter {column.name!r} counts segments (two a cycle of a sine, "
+                "more of other waveforms), and chainbench counts cycles",
+                file=sheet.run_file(run), column=column.name,
+                hint="log the machine's cycle count, or name another counter in the run "
+                     "sheet, columns = {cycle_count = \"...\"}")
 
 
 def _pin_criterion(run: RunDef, chain: dict[str, float | None]

@@ -91,3 +91,34 @@ def test_a_log_longer_than_a_chunk_is_read_from_its_file_in_chunks_with_the_same
     a, b = (read_dataset(result.run_files[run_id]) for result in (whole, chunked))
     np.testing.assert_allclose(a["event_time"], b["event_time"], rtol=0, atol=1e-9)
     np.testing.assert_array_equal(a["time"], b["time"])  # the stored preview
+
+
+class _Sheet:
+    """The run sheet as _check_counter asks it: where a run's file is."""
+
+    @staticmethod
+    def run_file(run) -> Path:
+        return Path(run)
+
+
+@pytest.mark.parametrize(("header", "refused"), [
+    ("Cycles", None), ("Count (cycles)", None),
+    ("Axial Segment Count", "counts segments"),  # MTS: two a cycle, kept as counted
+    ("Count (segments)", "counts segments"),
+    ("Count (kcycles)", "cannot scale"),
+])
+def test_a_wear_logs_counter_of_segments_or_of_scaled_cycles_is_refused(
+        tmp_path, header, refused):
+    from pipeline.errors import UnitError
+    from pipeline.ingest import read_table
+    from pipeline.runs import _check_counter
+
+    path = tmp_path / "wear.csv"
+    path.write_text(f"{header},Length (mm)\n" + "".join(
+        f"{cycle},{500 + 0.001 * cycle}\n" for cycle in range(0, 1000, 100)))
+    _, metadata = read_table(path, kind="wear")
+    if refused is None:
+        _check_counter(_Sheet(), "w1", metadata)
+        return
+    with pytest.raises(UnitError, match=refused):
+        _check_counter(_Sheet(), "w1", metadata)

@@ -52,14 +52,18 @@ class Kind(StrEnum):
 
 
 def counted_cycles(table: pd.DataFrame, metadata: TableMetadata) -> np.ndarray | None:
-    """The load cycles of the machine's counter the file holds (segments counted two per
-    cycle), sorted, or None without a counter."""
+    """The load cycles of the machine's counter the file holds (segments, by the counter's
+    unit or name, counted two per cycle), sorted, or None without a counter."""
+    from pipeline.ingest.names import tokens
+
     if "cycle_count" not in table:
         return None
     counts = table["cycle_count"].to_numpy()
     counts = counts[np.isfinite(counts)]
-    unit = next((column.unit for column in metadata.columns if column.role == "cycle_count"), None)
-    per_cycle = 2 if (unit or "").strip().lower() in SEGMENT_UNITS else 1
+    counter = next(column for column in metadata.columns if column.role == "cycle_count")
+    segments = ((counter.unit or "").strip().lower() in SEGMENT_UNITS
+                or "segment" in tokens(counter.name))
+    per_cycle = 2 if segments else 1
     return np.unique(np.floor(counts / per_cycle)) if counts.size else None
 
 

@@ -53,6 +53,7 @@ from pipeline.ingest.names import (
     is_held_peak,
     is_humidity,
     is_unmeasured,
+    match_role,
     peak_partner,
     repeats,
     says_sign_convention,
@@ -243,6 +244,7 @@ def settle(
         ))
     if kind == "tensile":
         _warn_unnamed_strains(raw, empty)
+        _warn_gauges_by_unit_alone(raw, assigned.get("gauge", []))
     canonical = _canonical_names(assigned, strains)
     columns = tuple((index, canonical[index], factors[index]) for role in ROLES
                     for index in assigned.get(role, []) if index in factors)
@@ -282,6 +284,22 @@ def _warn_unnamed_strains(raw: RawColumns, empty: set[int]) -> None:
                 f"column {shown!r} reads in {unit!r}, {said}, but its name is not one the "
                 "readers know: not used (if it is an extensometer's strain, name it in the "
                 f"run sheet, columns = {{gauges = [\"{shown}\"]}}{given})")
+
+
+def _warn_gauges_by_unit_alone(raw: RawColumns, gauges: list[int]) -> None:
+    """Warn of each gauge column taken as one by its unit alone, its name not one the readers
+    know (a logger's ``Ch 2 (mm)``, but also a force plate's centre of pressure ``Ax (m)``,
+    a rig's ``DilaFBK (in)``): unless the run sheet names the gauges."""
+    if "gauge" in raw.candidates.explicit:
+        return
+    for index in gauges:
+        if match_role(raw.names[index]) is None:
+            shown = display_name(raw.names, index)
+            raw.metadata.warnings.append(
+                f"column {shown!r} is read as a gauge by its unit {raw.units[index]!r} alone, "
+                "its name not one the readers know: if it is no length along the specimen "
+                "(a position, a level, a feedback), name the gauges in the run sheet, "
+                "columns = {gauges = [...]}")
 
 
 def _refuse_a_table_of_peaks(raw: RawColumns) -> None:

@@ -375,7 +375,8 @@ def detect_encoding(raw: bytes, complete: bool, file: str) -> tuple[str, str, in
     )
     if _has_controls(text, best) and _is_japanese(text):
         return SHIFT_JIS, SHIFT_JIS, 0
-    if best == "latin-1" and not _TURKISH_BYTES.isdisjoint(text):
+    if (best == "latin-1" and not _TURKISH_BYTES.isdisjoint(text)
+            and _letter_score(text, TURKISH) is not None):  # it decodes
         best = TURKISH
     other = _in_other_script(text) if _reads_foreign_words(text) else None
     return (other, other, 0) if other else (best, best, 0)
