@@ -378,8 +378,10 @@ def detect_encoding(raw: bytes, complete: bool, file: str) -> tuple[str, str, in
     if (best == "latin-1" and not _TURKISH_BYTES.isdisjoint(text)
             and _letter_score(text, TURKISH) is not None):  # it decodes
         best = TURKISH
-    other = _in_other_script(text) if _reads_foreign_words(text) else None
-    return (other, other, 0) if other else (best, best, 0)
+    other, known = _in_other_script(text)
+    if other is not None and (known or _reads_foreign_words(text)):
+        return other, other, 0
+    return best, best, 0
 
 
 def _reads_foreign_words(raw: bytes) -> bool:
@@ -392,10 +394,11 @@ def _reads_foreign_words(raw: bytes) -> bool:
     return foreign >= 2 and 2 * foreign > len(words)
 
 
-def _in_other_script(raw: bytes) -> str | None:
+def _in_other_script(raw: bytes) -> tuple[str | None, int]:
     """The encoding of :data:`OTHER_SCRIPTS` that reads every word of `raw` outside ASCII
     in its script (:func:`_of_script`), of several the one reading most known column names
-    (:data:`_KNOWN_WORDS`), then the first; None if there is none."""
+    (:data:`_KNOWN_WORDS`), then the first; and how many it reads. (None, 0) if there is
+    none."""
     readings = {}
     for codec, scripts in OTHER_SCRIPTS.items():
         try:
@@ -408,15 +411,22 @@ def _in_other_script(raw: bytes) -> str | None:
                     run.lstrip(_LEADING_SYMBOLS).isalpha() or run in _LEADING_SYMBOLS
                     for run in _NON_ASCII_RUN.findall(text)))):
             readings[codec] = sum(tokens(word) in _KNOWN_WORDS for word in foreign)
-    return max(readings, key=readings.get, default=None)
+    best = max(readings, key=readings.get, default=None)
+    return best, readings.get(best, 0)
 
 
 def _of_script(word: str, scripts: tuple[str, ...]) -> bool:
-    """Whether every letter of `word` is of `scripts`, and a word of more than three letters
-    (no unit's symbol, as ``кН`` or ``МПа``) in one case throughout but for a capital first
-    letter."""
-    return (all(unicodedata.name(char, "").startswith(scripts) for char in word)
-            and (len(word) <= 3 or word.isupper() or word[1:].islower()))
+    """Whether every letter of `word` outside ASCII is of `scripts`, a word that mixes in
+    ASCII letters one of a unit's symbol (``μm``: Greek, then Latin); and a word of more
+    than three letters of a script with cases (no unit's symbol, as ``кН`` or ``МПа``) in
+    one case throughout but for a capital first letter."""
+    letters = [char for char in word if not char.isascii()]
+    if not all(unicodedata.name(char, "").startswith(scripts) for char in letters):
+        return False
+    if len(letters) < len(word):  # Latin letters beside
+        return all(unicodedata.name(char, "").startswith("GREEK") for char in letters)
+    cased = word.lower() != word.upper()
+    return not cased or len(word) <= 3 or word.isupper() or word[1:].islower()
 
 
 def _has_controls(raw: bytes, codec: str) -> bool:

@@ -47,6 +47,12 @@ KOREAN = "시간(s),하중(kN),변위(mm)\r\n0.1,5.024,0.000\r\n0.2,5.379,0.001\
         (RUSSIAN, "cp1251", "cp1251"),
         (CHINESE, "gbk", "gbk"),
         (KOREAN, "cp949", "cp949"),
+        # a few names only, of four characters, beside English ones or Greek units
+        ("试验时间(s),横梁位移(mm),循环次数\r\n1,2,3\r\n", "gbk", "gbk"),
+        ("Time(s),Force(kN),位移(mm)\r\n1,2,3\r\n", "gbk", "gbk"),
+        ("试验力(kN),变形(μm)\r\n1,2\r\n", "gbk", "gbk"),
+        ("하중(N),변위(mm)\r\n1,2\r\n", "cp949", "cp949"),
+        ("힘(N),변형량(mm)\r\n1,2\r\n", "cp949", "cp949"),
         # a Turkish machine's export: latin-1 read its ı and ş as Icelandic letters
         ("Süre;Yük;Uzama;Çevrim sayısı;Sınıfı\r\n1;2;3;4;5\r\n", "cp1254", "cp1254"),
         # words of accented letters alone, Latin all the same
