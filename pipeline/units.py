@@ -30,6 +30,11 @@ for _definition in ("с = second", "мс = millisecond", "мин = minute", "ч 
                     "Н = newton", "кН = kilonewton", "кгс = kilogram_force",
                     "м = meter", "мм = millimeter", "см = centimeter", "мкм = micrometer"):
     ureg.define(_definition)
+# Chinese unit names, as Chinese testing-machine software writes them.
+for _definition in ("秒 = second", "毫秒 = millisecond", "分钟 = minute", "小时 = hour",
+                    "牛 = newton", "牛顿 = newton", "千牛 = kilonewton", "千牛顿 = kilonewton",
+                    "米 = meter", "毫米 = millimeter", "微米 = micrometer", "厘米 = centimeter"):
+    ureg.define(_definition)
 Q_ = ureg.Quantity
 
 #: Standard acceleration of gravity [m/s^2] (CGPM 1901); 1 kgf = 9.80665 N.

@@ -35,6 +35,9 @@ def factor(text, role):
         ("с", "time", 1.0), ("мс", "time", 1e-3), ("мин", "time", 60.0), ("ч", "time", 3600.0),
         ("Н", "force", 1.0), ("кН", "force", 1e3), ("кгс", "force", STANDARD_GRAVITY),
         ("мм", "gauge", 1e-3), ("мкм", "gauge", 1e-6), ("см", "gauge", 1e-2), ("м", "gauge", 1.0),
+        # Chinese unit names
+        ("秒", "time", 1.0), ("毫秒", "time", 1e-3), ("千牛", "force", 1e3), ("牛", "force", 1.0),
+        ("毫米", "gauge", 1e-3), ("微米", "gauge", 1e-6),
     ],
 )
 def test_si_factor(unit, role, expected):
