@@ -235,14 +235,17 @@ CRACK_WORDS = frozenset({"crack", "cracks"})
 SIGN_CONVENTION_WORDS = frozenset({"compressive", "tensile"})
 #: Names of other quantities than a test's: a count that is no cycle count (a load-cell
 #: rig's ``sample_count``, the readings it averaged; Bluehill's ``PIP count``, the marks an
-#: operator's button set), a temperature (``Temp(°)``, whose degrees are no angle) and an
-#: acceleration (a drop tower's ``Deformation Acceleration (m/s^2)``, no deformation). Such
+#: operator's button set), a temperature (``Temp(°)``, whose degrees are no angle), an
+#: acceleration (a drop tower's ``Deformation Acceleration (m/s^2)``, no deformation) and a
+#: torque (a drive rig's ``torque (nm)``, newton metres in lower case, no nanometres). Such
 #: a column takes no role, not even from its unit.
 OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points count",
                         "reading count", "readings count", "scan count", "pip count", "temp",
                         "temperature", "temperatur", "température", "temperatura", "温度",
                         "acceleration", "accel", "beschleunigung", "accélération",
-                        "aceleración", "aceleração", "accelerazione")
+                        "aceleración", "aceleração", "accelerazione", "torque", "drehmoment",
+                        "moment obrotowy", "momento torsor", "couple moteur", "扭矩", "トルク",
+                        "토크", "крутящий момент")
 #: The labels of :data:`TRANSVERSE_NAMES` and :data:`OTHER_QUANTITY_NAMES` among the role
 #: keywords: each wins as a role would.
 _TRANSVERSE = "transverse"

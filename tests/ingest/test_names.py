@@ -132,7 +132,8 @@ def test_a_channel_across_the_specimen_takes_no_role(name):
 
 @pytest.mark.parametrize("name", ["sample_count", "Sample count", "PIP count", "Temp",
                                   "Temperature", "Temperatur Probe",
-                                  "Deformation Acceleration", "Accel X"])
+                                  "Deformation Acceleration", "Accel X", "torque",
+                                  "Drehmoment"])
 def test_a_count_of_samples_a_temperature_or_an_acceleration_takes_no_role(name):
     # a load-cell rig's calibration table counts the readings it averaged in sample_count,
     # Bluehill the marks of an operator's button in PIP count; an accelerometer logs its
