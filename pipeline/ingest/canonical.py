@@ -224,13 +224,14 @@ def settle(
     _refuse_a_table_of_peaks(raw)
     problems = _Problems(strict, meta.warnings)
     sheet_units = _run_sheet_units(units, meta.file)
-    assigned = _settle_roles(raw, empty, set(sheet_units), problems, kind)
+    ambiguous: set[str] = set()
+    assigned = _settle_roles(raw, empty, set(sheet_units), problems, kind, ambiguous)
     rejected: dict[str, UnitError] = {}
     factors, found_units, strains = _settle_units(raw, assigned, sheet_units, problems, kind,
                                                   rejected)
     needs = " and ".join(" or ".join(group) for group in REQUIRED[kind])
     for group in REQUIRED[kind]:
-        if any(assigned.get(role) for role in group):
+        if any(assigned.get(role) or role in ambiguous for role in group):
             continue
         keys = " or ".join(f"columns = {{{SHEET_KEY[role]} = \"...\"}}" for role in group)
         why = "".join(f"{reason}; " for role, reason in raw.set_aside if role in group)
@@ -497,10 +498,11 @@ def empty_warning(names: list[str], empty: set[int]) -> str:
 
 
 def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], problems: _Problems,
-                  kind: str) -> dict[str, list[int]]:
+                  kind: str, ambiguous: set[str]) -> dict[str, list[int]]:
     """The columns of each role: the candidates with values, and of a role that takes one
-    column, the only one (else an ambiguity is reported; for a role the `kind` of run does
-    without, :data:`DISPENSABLE`, a warning, and no column takes it). Of several
+    column, the only one (else an ambiguity is reported, and no column takes the role: it is
+    added to `ambiguous`; for a role the `kind` of run does without, :data:`DISPENSABLE`, a
+    warning only). Of several
     candidates matched by name, those whose unit in the file is not one of the role (a
     stress in MPa named after its load channel) are left out, with a warning, when some
     others fit; so are those :data:`_PREFERRED` passes over (:func:`_preferred`)."""
@@ -539,8 +541,9 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
                     f"{ambiguity.message}: none is used as the {role}, which {kind} runs do "
                     f"without ({ambiguity.hint})")
                 continue
-            problems.report(ambiguity)
-            live = live[:1]
+            problems.report(ambiguity)  # not strict: no column is taken for a guess
+            ambiguous.add(role)
+            continue
         if live:
             assigned[role] = live
     return assigned

@@ -222,6 +222,23 @@ def test_skips_what_is_no_export(tmp_path):
     assert "# skipped empty.csv: " in text and "# skipped notes.txt: " in text
 
 
+def test_a_file_of_several_force_columns_is_skipped_saying_so_not_drafted_with_one(tmp_path):
+    # a results block left of the reading: 'Max force' was drafted as the run's force
+    (tmp_path / "run1.csv").write_text(PLAIN)
+    (tmp_path / "pull.csv").write_text("Max force (N),Min force (N),Force (N),gauge [mm]\n"
+                                       + "".join(f"3.96,-1.15,{i / 10},{i}\n"
+                                                 for i in range(20)))
+    result = init("--json", str(tmp_path))
+    assert result.exit_code == 0, result.output
+    document = json.loads(result.stdout)
+    assert [run["file"] for run in document["runs"]] == ["run1.csv"]
+    assert document["skipped"] == [{
+        "file": "pull.csv",
+        "reason": "column 'Max force': 3 columns could be the force: 'Max force', 'Min "
+                  "force', 'Force' (hint: write this run by hand, naming its force, columns = "
+                  "{force = \"...\"})"}]
+
+
 def test_no_readable_file_exits_1(tmp_path):
     (tmp_path / "notes.txt").write_text("nothing to read here\n")
     result = init(str(tmp_path))

@@ -287,3 +287,15 @@ def test_a_file_holding_fewer_rows_than_its_header_states_is_warned_of(write, st
                "short (copy it again from the machine)")
     for meta in (read_table(path)[1], open_log(path).metadata):
         assert (message in meta.warnings) is warned
+
+
+def test_of_several_columns_for_one_role_none_is_taken_when_not_strict(write):
+    # a results block left of the reading: the first was shown as the force, and drafted
+    text = "Max force (N),Min force (N),Force (N),gauge [mm]\n" + rows(
+        (3.96, -1.15, 0.01, 1), (3.96, -1.15, 0.5, 2), (3.96, -1.15, 1.0, 3))
+    table, meta = read_table(write("pull.csv", text), strict=False)
+    assert "force" not in table
+    assert [column.role for column in meta.columns][:3] == [None, None, None]
+    assert ("column 'Max force': 3 columns could be the force: 'Max force', 'Min force', "
+            "'Force' (say which in the run sheet, columns = {force = \"...\"})") in meta.warnings
+    assert not any(warning.startswith("no force column") for warning in meta.warnings)
