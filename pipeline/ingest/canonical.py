@@ -240,8 +240,8 @@ def settle(
             f"no {' or '.join(group)} column found ({kind} runs need {needs})",
             file=meta.file, row=raw.units_line,
             hint=f"name it in the run sheet, {keys}; {why}"
-            "the file has: " + ", ".join(display_name(raw.names, i)
-                                          for i in range(len(raw.names))),
+            "the file has: " + ", ".join(display_name(raw.names, i)  # not the empty ones
+                                          for i in range(len(raw.names)) if i not in empty),
         ))
     if kind == "tensile":
         _warn_unnamed_strains(raw, empty)

@@ -299,3 +299,10 @@ def test_of_several_columns_for_one_role_none_is_taken_when_not_strict(write):
     assert ("column 'Max force': 3 columns could be the force: 'Max force', 'Min force', "
             "'Force' (say which in the run sheet, columns = {force = \"...\"})") in meta.warnings
     assert not any(warning.startswith("no force column") for warning in meta.warnings)
+
+
+def test_the_columns_listed_for_a_missing_role_leave_out_the_empty_ones(write):
+    text = "time [s],load,extra,\n" + "".join(f"{i},{i * 2},,\n" for i in range(5))
+    _, meta = read_table(write("log.csv", text), strict=False)
+    missing = next(warning for warning in meta.warnings if "no gauge column" in warning)
+    assert missing.endswith("the file has: time, load)")
