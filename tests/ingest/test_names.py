@@ -33,6 +33,7 @@ from pipeline.ingest.names import (
         ("cykl", "cycle_count"), ("Channel 1 Recuento", "cycle_count"),
         ("Machine_N_cycles", "cycle_count"),
         # a salt-consolidation rig's logger writes its names in camel case
+        ("Längung", "gauge"), ("Längenänderung", "gauge"),  # a German wear rig's elongation
         ("SmallLVDT", "gauge"), ("LargeLVDT", "gauge"), ("DilaFBK", None), ("ConfP", None),
         ("PistonTemp", None), ("CrossHead", "gauge"),
         ("Cycle time", "time"), ("Load test/Time", "time"), ("Rig/Branch tension", "force"),
