@@ -363,14 +363,14 @@ def draft_run(path: Path, folder: Path, taken: set[str], specimen: str | None = 
     from pipeline.cli.inspect import summary
 
     table, metadata = _read(path, "tensile", specimen=specimen)
+    several = next((warning for warning in metadata.warnings
+                    if "columns could be the force" in warning), None)
+    if several is not None:  # drafting one of them, or no force at all, would be a guess
+        raise ColumnError(several.split(" (say which")[0], file=path,
+                          hint="write this run by hand, naming its force, columns = "
+                               "{force = \"...\"}")
     kind, reason = run_kind(table, metadata)
     if kind != "wear" and not any(column.role == "force" for column in metadata.columns):
-        several = next((warning for warning in metadata.warnings
-                        if "columns could be the force" in warning), None)
-        if several is not None:  # drafting one of them would be a guess
-            raise ColumnError(several.split(" (say which")[0], file=path,
-                              hint="write this run by hand, naming its force, columns = "
-                                   "{force = \"...\"}")
         raise ColumnError("no force column found", file=path,
                           hint="a run needs a force (a wear log, a section length or "
                           "elongation against time or cycles); name it in the run sheet if "
