@@ -245,6 +245,7 @@ def settle(
         ))
     if kind == "tensile":
         _warn_unnamed_strains(raw, empty)
+    if kind in ("tensile", "wear"):  # the runs whose gauges are measured
         _warn_gauges_by_unit_alone(raw, assigned.get("gauge", []))
     canonical = _canonical_names(assigned, strains)
     columns = tuple((index, canonical[index], factors[index]) for role in ROLES

@@ -82,6 +82,8 @@ def _key_and_value(line: str, delimiter: str) -> tuple[str | None, str]:
         category, rest = (part.strip() for part in line.split(" : ", 1))
         fields = split_fields(rest, delimiter) if len(whole) != 1 else [rest]
         key, values = (fields[0], fields[1:]) if len(fields) > 1 else (category, [rest])
+        if len(values) > 1 and not values[0].strip():  # "Name,,s": no value, its unit only
+            values = []
     else:
         fields = [field.strip() for field in split_fields(line, delimiter) if field.strip()]
         if not fields:  # a blank row padded with delimiters (a spreadsheet's ",,,,")

@@ -306,3 +306,19 @@ def test_the_columns_listed_for_a_missing_role_leave_out_the_empty_ones(write):
     _, meta = read_table(write("log.csv", text), strict=False)
     missing = next(warning for warning in meta.warnings if "no gauge column" in warning)
     assert missing.endswith("the file has: time, load)")
+
+
+@pytest.mark.parametrize("kind", ["tensile", "wear"])
+def test_a_gauge_taken_by_its_unit_alone_is_warned_of(write, kind):
+    # a force plate's centre of pressure in metres, a rig's feedback in inches: gauges by
+    # their unit, whatever they measure
+    text = "time [s],Fz [N],Ax [m],Extension [mm]\n" + rows((0, 1, 0.1, 2), (1, 2, 0.1, 3))
+    _, meta = read_table(write("plate.csv", text), kind=kind)
+    assert ("column 'Ax' is read as a gauge by its unit 'm' alone, its name not one the "
+            "readers know: if it is no length along the specimen (a position, a level, a "
+            "feedback), name the gauges in the run sheet, columns = {gauges = [...]}"
+            ) in meta.warnings
+    assert not any("'Extension' is read as a gauge" in warning for warning in meta.warnings)
+    _, named = read_table(write("named.csv", text), kind=kind,
+                          columns={"gauges": ["Ax", "Extension"]})
+    assert not any("by its unit" in warning for warning in named.warnings)

@@ -233,6 +233,9 @@ def test_run_sheet_columns_pick_among_candidates(write):
         # a real Bluehill results preamble: key, value, unit
         (['"Modulus","242,370.29658","MPa"', '"Length","26.00000","mm"'],
          {"Modulus": "242,370.29658 MPa", "Length": "26.00000 mm"}),
+        # a real Spanish Bluehill preamble: a result not measured, its unit only
+        (["Deformación : Hora de retirada,,s", "Deformación : Longitud,26.0,mm"],
+         {"Hora de retirada": "", "Longitud": "26.0 mm"}),
         # a real LabVIEW header: one key per line, over as many channels
         (["X_Dimension\tTime\tTime\tTime", "X0\t0.0E+0\t0.0E+0\t0.0E+0"],
          {"X_Dimension": "Time Time Time", "X0": "0.0E+0 0.0E+0 0.0E+0"}),
