@@ -424,7 +424,7 @@ def match_role(name: str) -> str | None:
     """
     if tokens(name)[-1:] == ("id",):
         return None
-    role = _best_match(name, _KEYWORDS) or _best_match(_camel_apart(name), _KEYWORDS)
+    role = _keyword(name)
     return (None if role in _NO_ROLE_LABELS or is_command(name) or is_derived(name)
             or is_crack(name) else role)
 
@@ -433,10 +433,11 @@ def match_role(name: str) -> str | None:
 _CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])")
 
 
-def _camel_apart(name: str) -> str:
-    """`name` with its camel-case words set apart (``SmallLVDT`` -> ``Small LVDT``): matched
-    only when the name as written matches nothing (``CrossHead`` is one word)."""
-    return _CAMEL.sub(" ", name)
+def _keyword(name: str) -> str | None:
+    """The label of :data:`COLUMN_NAMES` (or of the no-role names) `name` matches: as
+    written, else with its camel-case words set apart (``SmallLVDT`` -> ``Small LVDT``;
+    ``CrossHead`` matches as written)."""
+    return _best_match(name, _KEYWORDS) or _best_match(_CAMEL.sub(" ", name), _KEYWORDS)
 
 
 _COMMAND_KEYWORDS = tuple((tokens(word), "command") for word in COMMAND_NAMES)
@@ -476,7 +477,7 @@ def is_unmeasured(name: str) -> bool:
     ...                                   "Crack_length", "sample_count", "Temp", "Load")]
     [True, True, True, True, True, True, False]
     """
-    return (_best_match(name, _KEYWORDS) in _NO_ROLE_LABELS or is_command(name) or is_derived(name)
+    return (_keyword(name) in _NO_ROLE_LABELS or is_command(name) or is_derived(name)
             or is_clock_part(name) or is_crack(name))
 
 
@@ -563,7 +564,7 @@ def is_transverse(name: str) -> bool:
     >>> [is_transverse(name) for name in ("Breitenänderung", "Transverse strain", "Strain")]
     [True, True, False]
     """
-    return _best_match(name, _KEYWORDS) == _TRANSVERSE
+    return _keyword(name) == _TRANSVERSE
 
 
 def repeats(names: list[str]) -> int:

@@ -30,7 +30,7 @@ import numpy as np
 from pipeline.errors import LayoutError
 from pipeline.ingest.delimited import TextLayout, read_contiguous
 from pipeline.ingest.raw import RawTable
-from pipeline.ingest.sniff import Head, TableSpec, split_fields
+from pipeline.ingest.sniff import Head, TableSpec, is_number, split_fields
 
 LAYOUT = "rigol"
 
@@ -53,15 +53,7 @@ def matches(head: Head, spec: TableSpec | None = None) -> bool:
         return all(name in names[2:] for name in AXIS) and units[0] == SEQUENCE
     return (all(name in names[1:] for name in AXIS)
             and names.index(AXIS[1]) == names.index(AXIS[0]) + 1
-            and all(_is_number(text) for text in _axis_cells(head)))
-
-
-def _is_number(text: str) -> bool:
-    try:
-        float(text)
-    except ValueError:
-        return False
-    return True
+            and all(is_number(text, ".") for text in _axis_cells(head)))
 
 
 #: The rows below the headers as delimited text, read whole (the X column becomes the

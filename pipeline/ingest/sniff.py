@@ -5,9 +5,10 @@ left to :mod:`pipeline.ingest.textbody` (pyarrow). The sniffers find:
 
 * the encoding: a BOM (UTF-8, UTF-16), UTF-16 without BOM (NUL bytes), UTF-8,
   else cp1250 or latin-1, whichever decodes more non-ASCII bytes as letters
-  (Polish exports are cp1250, Spanish and German ones latin-1), unless those
-  give words without a Latin letter: then the encoding of another script
-  (Russian, Chinese, Korean, Japanese Windows) that reads them as words;
+  (Polish exports are cp1250, Spanish and German ones latin-1; Turkish cp1254
+  where latin-1 would read Icelandic letters), unless the header reads as words
+  of another script (words without a Latin letter, or a known column name):
+  Russian cp1251, Chinese GBK, Korean cp949, or Japanese Windows' Shift-JIS;
 * the dialect: the delimiter (tab, ``;``, ``,``, ``|``) and decimal mark that
   make the most rows all-numeric with one field count;
 * the table: the first data row, the names row above it, an optional units
@@ -1024,14 +1025,14 @@ def _settings_beside(rows: list[list[str]], decimal: str, columns: int,
     for column in range(columns):
         cells = [row[column].strip() if column < len(row) else "" for row in rows]
         filled = [cell for cell in cells if not is_missing(cell)]
-        texts = max((count + 1 for count, cell in enumerate(cells) if not is_missing(cell)),
-                    default=0)
-        if (len(filled) >= SETTINGS_BESIDE_ROWS and texts + SETTINGS_BESIDE_ROWS <= len(cells)
+        reach = max((count + 1 for count, cell in enumerate(cells) if not is_missing(cell)),
+                    default=0)  # the rows down to the last filled one
+        if (len(filled) >= SETTINGS_BESIDE_ROWS and reach + SETTINGS_BESIDE_ROWS <= len(cells)
                 and not any(is_number(cell, decimal) for cell in filled)):
-            beside.append((column, texts))
+            beside.append((column, reach))
     if not beside:
         return ()
-    last = max(texts for _, texts in beside)
+    last = max(reach for _, reach in beside)
     return (f"lines {data + 1} to {data + last}: text beside the numbers in column(s) "
             f"{', '.join(str(column + 1) for column, _ in beside)}, and none below: settings "
             "written beside the data? The numbers of those lines may be settings too (a "
