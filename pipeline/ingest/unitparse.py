@@ -242,19 +242,27 @@ def is_strain_unit(text: str | None) -> bool:
     --------
     >>> is_strain_unit("(%)"), is_strain_unit("µm/m"), is_strain_unit("mm"), is_strain_unit("dB")
     (True, True, False, False)
+    >>> is_strain_unit("mV/V")  # a bridge's output: a strain only through its gauge factor
+    False
     """
     found = spellings(text or "")
     if not found:
         return False
     unit = ureg.parse_units(found[0])
     return (unit.dimensionless and _role_of(found[0]) != "angle"
-            and _NO_RATIO_UNITS.isdisjoint(re.findall(r"[a-z]+", str(unit))))
+            and _NO_RATIO_UNITS.isdisjoint(re.findall(r"[a-z]+", str(unit)))
+            and not _BRIDGE_OUTPUT.search(found[0]))
 
 
 #: Units pint counts as dimensionless that no strain channel logs in: levels (an acoustic
 #: emission sensor's ``dB``), counts, solid angles and bits (pint reads ``B`` as a byte).
 _NO_RATIO_UNITS = frozenset({"bel", "decibel", "neper", "octave", "decade", "count",
                              "steradian", "byte", "bit"})
+
+
+#: A bridge's output over its excitation (``mV/V``, ``µV/V``, ``V/V``): a strain gauge
+#: amplifier's raw signal, which is a strain only through the gauge factor and the bridge.
+_BRIDGE_OUTPUT = re.compile(r"V\s*/\s*V")
 
 
 def looks_like_unit(text: str) -> bool:

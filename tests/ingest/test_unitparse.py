@@ -122,6 +122,25 @@ def test_an_angle_is_no_strain(unit):
     assert not is_strain_unit(unit) and is_strain_unit("%")
 
 
+@pytest.mark.parametrize("unit", ["mV/V", "µV/V", "V/V", "[mV/V]"])
+def test_a_bridge_output_is_no_strain(unit):
+    from pipeline.ingest.unitparse import is_strain_unit
+
+    # pint reads mV/V as a ratio (1e-3), but it is a strain gauge amplifier's raw signal:
+    # about 2000 µm/m per mV/V of a quarter bridge, 500 of a full one
+    assert not is_strain_unit(unit) and is_strain_unit("µm/m")
+
+
+def test_a_strain_channel_in_mv_per_v_is_not_read_as_a_strain():
+    from pipeline.ingest import parse_table
+
+    # an HBM catman export of a strain gauge's bridge signal beside the force
+    text = b"Time [s]\tForce [kN]\tStrain 1 [mV/V]\n0\t0\t0\n0.1\t1\t-0.00011\n0.2\t2\t-0.0002\n"
+    table, metadata = parse_table(text, kind="engagement", name="catman.asc")
+    assert "gauge_1" not in table and "strain_1" not in table
+    assert any("'mV/V' is not a unit of gauge" in warning for warning in metadata.warnings)
+
+
 def test_a_position_in_degrees_is_an_angle_not_a_strain():
     from pipeline.ingest import parse_table
 
