@@ -98,10 +98,20 @@ REQUIRED = {"tensile": (("force",), ("gauge",)), "engagement": (("time",), ("for
 
 _SINGLE = ("time", "force", "angle", "cycle_count", "length", "speed", "segment_force_1",
            "segment_force_2", "side_force")
-#: Roles a kind of run does without (a tensile run's stiffness needs force and gauges
-#: only): when several columns could take one, none does, with a warning, rather than the
-#: run being refused (two times or counts, neither a second instrument's nor the whole test's).
-DISPENSABLE = {"tensile": frozenset({"time", "angle", "cycle_count", "length", "speed"})}
+#: The roles each kind of run uses: a tensile run's stiffness needs force and gauges; an
+#: engagement run the time, force and the wheel's angle when logged; a wear run its running
+#: time or cycles and length or elongation; a segment-load run the time and its forces.
+#: A wear run's force and speed are only shown beside its results (the load and speed
+#: logged), so it does without them.
+USED = {"tensile": frozenset({"force", "gauge"}),
+        "engagement": frozenset({"time", "force", "angle"}),
+        "wear": frozenset({"time", "cycle_count", "length", "gauge"}),
+        "segment-load": frozenset({"time", "force", "segment_force_1", "segment_force_2",
+                                   "side_force"})}
+#: Roles a kind of run does without: when several columns could take one, none does, or
+#: when its column has no unit, it is not used, with a warning, rather than the run being
+#: refused (a drive rig's motor speed beside an engagement log's force and time).
+DISPENSABLE = {kind: frozenset(ROLES) - used for kind, used in USED.items()}
 
 
 #: Words that make a gauge column a strain by its name (English, German).

@@ -404,7 +404,7 @@ def test_a_candidate_whose_unit_is_not_of_its_role_makes_no_ambiguity(write):
 def test_candidates_none_of_which_fits_are_still_an_ambiguity(write):
     text = TRACKING.replace("Load(8801:Load) (kN)", "Load(8801:Load) (MPa)")
     with pytest.raises(ColumnError, match="2 columns could be the force"):
-        read_table(write("tracking.csv", text), kind="wear")
+        read_table(write("tracking.csv", text), kind="engagement")
 
 
 # a real transient recorder's export (Hopkinson bar strain gauges): every header row ends

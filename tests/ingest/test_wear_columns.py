@@ -67,3 +67,28 @@ def test_run_sheet_names_and_units_of_the_wear_columns():
 def test_a_wear_log_without_its_channels_is_refused(header, error, words):
     with pytest.raises(error, match=words):
         parse_table(header + b"\n0,1\n1,2\n2,3\n", kind="wear", name="w.csv")
+
+
+def test_a_wear_run_does_without_a_force_or_speed_it_cannot_settle():
+    # a pin-on-disc tribometer's log: two speeds, the load beside two friction forces
+    text = (b"Test Time [s],Displacement [um],Sliding Velocity [m/s],Speed [m/s],Load [N],"
+            b"Friction Force [N],Friction Force [N]\n0,3969,0.1,60,59.8,5.1,5.2\n"
+            b"1,3970,0.1,60,59.8,5.3,5.2\n2,3971,0.1,60,59.9,5.2,5.1\n")
+    table, meta = parse_table(text, kind="wear", name="pod.csv")
+    assert list(table.columns) == ["time", "gauge_1"]
+    np.testing.assert_allclose(table["gauge_1"], [3969e-6, 3970e-6, 3971e-6])
+    assert any("could be the force" in warning and "which wear runs do without" in warning
+               for warning in meta.warnings)
+    with pytest.raises(ColumnError, match="could be the force"):  # an engagement run needs it
+        parse_table(text, kind="engagement", name="pod.csv")
+
+
+def test_an_engagement_run_does_without_a_gauge_of_no_unit():
+    # a wave tank's mooring line load cell beside the wave maker's paddle position
+    text = b"Time [s],Tension [N],WM_Position\n0,10,0.1\n0.001,11,0.2\n0.002,12,0.3\n"
+    table, meta = parse_table(text, kind="engagement", name="tank.csv")
+    assert list(table.columns) == ["time", "force"]
+    assert any("no unit for the gauge column, which engagement runs do without" in warning
+               for warning in meta.warnings)
+    with pytest.raises(UnitError, match="no unit for the gauge column"):
+        parse_table(text, kind="wear", name="tank.csv")
