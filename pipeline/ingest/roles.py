@@ -7,6 +7,7 @@ which candidates are empty.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -88,13 +89,17 @@ def display_name(names: list[str], index: int) -> str:
     return names[index] or f"column {index + 1}"
 
 
+#: A run sheet's column given by its place, from 1 (``"column 3"``), folded.
+_PLACE = re.compile(r"column\s*(\d+)")
+
+
 def _lookup(wanted: str, names: list[str], role: str, file: Path | str, line: int | None) -> int:
     target = fold(str(wanted).strip())
-    hits = [  # a blank name answers to the "column N" the messages call it
-        index for index, name in enumerate(names)
-        if target in (fold(name.strip()), fold(name.rsplit("/", 1)[-1].strip()))
-        or (not name.strip() and target == fold(display_name(names, index)))
-    ]
+    hits = [index for index, name in enumerate(names)
+            if target in (fold(name.strip()), fold(name.rsplit("/", 1)[-1].strip()))]
+    place = _PLACE.fullmatch(target)
+    if not hits and place and 1 <= int(place.group(1)) <= len(names):
+        hits = [int(place.group(1)) - 1]  # "column N": the Nth field, as the messages call it
     if not hits:
         raise ColumnError(
             f"no column {wanted!r} (given for {role} in the run sheet)",
@@ -106,7 +111,8 @@ def _lookup(wanted: str, names: list[str], role: str, file: Path | str, line: in
             f"column {wanted!r} appears {len(hits)} times (fields "
             + ", ".join(str(index + 1) for index in hits) + ")",
             file=file, row=line, column=str(wanted),
-            hint="rename the duplicated columns in the export so that each name is unique",
+            hint=f"name it by its place, as \"column {hits[0] + 1}\", or rename the "
+                 "duplicated columns in the export so that each name is unique",
         )
     return hits[0]
 

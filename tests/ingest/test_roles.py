@@ -45,8 +45,19 @@ def test_a_column_without_a_name_is_given_by_what_the_messages_call_it():
     assert caught.value.hint == "the file has: Time, column 2, column 3"
     found = candidates(["Time", "", ""], columns={"force": "Column 3"})
     assert found.roles == {"force": [2], "time": [0]}
-    with pytest.raises(ColumnError, match="no column 'column 1'"):  # it has a name
-        candidates(["Time", "", ""], columns={"force": "column 1"})
+    with pytest.raises(ColumnError, match="no column 'column 4'"):
+        candidates(["Time", "", ""], columns={"force": "column 4"})
+
+
+def test_a_column_is_given_by_its_place_when_its_name_is_duplicated():
+    names = ["Channel name", "Force", "Channel name", "Input 1"]
+    with pytest.raises(ColumnError) as caught:
+        candidates(names, columns={"time": "Channel name"})
+    assert 'as "column 1"' in caught.value.hint
+    found = candidates(names, columns={"time": "column 3", "force": "Force"})
+    assert found.roles["time"] == [2] and found.roles["force"] == [1]
+    # a column named so is the one meant, not the place
+    assert candidates(["column 2", "Load"], columns={"force": "column 2"}).roles["force"] == [0]
 
 
 @pytest.mark.parametrize(
