@@ -64,6 +64,7 @@ from dataclasses import dataclass
 import pyarrow as pa
 
 from pipeline.errors import EmptyFileError, LayoutError
+from pipeline.ingest import waveforms
 from pipeline.ingest.clock import (
     MINUTE_READINGS,
     READ_FORMS,
@@ -354,6 +355,7 @@ def text_header(
     require_names(spec, head.name, columns)
     names, units = header_columns(spec)
     meta = metadata(head, spec, layout, preamble)
+    names, units = waveforms.time_columns(head, spec, names, units, meta.warnings)
     units = _time_unit_of_the_scope(names, units, preamble, meta.warnings)
     units = _unit_of_its_name(names, units, meta.warnings)
     if spec.units_index is None:
