@@ -173,11 +173,13 @@ GAUGE_KINDS: dict[str, tuple[str, ...]] = {
 }
 
 #: Names of channels that measure across the specimen (a width or thickness change, a
-#: transverse strain): never its extension, whatever their unit says.
+#: transverse strain, a DIC field's minor strain): never its extension, whatever their unit
+#: says.
 TRANSVERSE_NAMES = (
     "width", "width change", "transverse", "transverse strain", "lateral", "lateral strain",
-    "thickness", "thickness change", "breite", "breitenänderung", "breitenaenderung",
-    "dicke", "dickenänderung", "dickenaenderung", "querdehnung", "szerokość", "grubość",
+    "thickness", "thickness change", "thickness strain", "width strain", "minor strain",
+    "breite", "breitenänderung", "breitenaenderung", "breitendehnung", "dicke",
+    "dickenänderung", "dickenaenderung", "dickendehnung", "querdehnung", "szerokość", "grubość",
     "anchura", "espesor", "横", "横 ひずみ", "横ひずみ", "横歪み",
 )
 #: Words of a channel that holds what the controller asked for (a setpoint, a command),
@@ -237,14 +239,18 @@ SIGN_CONVENTION_WORDS = frozenset({"compressive", "tensile"})
 #: Names of other quantities than a test's: a count that is no cycle count (a load-cell
 #: rig's ``sample_count``, the readings it averaged; Bluehill's ``PIP count``, the marks an
 #: operator's button set), a temperature (``Temp(°)``, whose degrees are no angle), an
-#: acceleration (a drop tower's ``Deformation Acceleration (m/s^2)``, no deformation) and a
+#: acceleration (a drop tower's ``Deformation Acceleration (m/s^2)``, no deformation), a
+#: strain of a DIC field other than along the specimen (``mises_strain``, an equivalent
+#: strain; a shear strain) and a
 #: torque (a drive rig's ``torque (nm)``, newton metres in lower case, no nanometres). Such
 #: a column takes no role, not even from its unit.
 OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points count",
                         "reading count", "readings count", "scan count", "pip count", "temp",
                         "temperature", "temperatur", "température", "temperatura", "温度",
                         "acceleration", "accel", "beschleunigung", "accélération",
-                        "aceleración", "aceleração", "accelerazione", "torque", "drehmoment",
+                        "aceleración", "aceleração", "accelerazione", "mises strain",
+                        "von mises strain", "equivalent strain", "effective strain",
+                        "shear strain", "vergleichsdehnung", "torque", "drehmoment",
                         "moment obrotowy", "momento torsor", "couple moteur", "扭矩", "トルク",
                         "토크", "крутящий момент")
 #: The labels of :data:`TRANSVERSE_NAMES` and :data:`OTHER_QUANTITY_NAMES` among the role

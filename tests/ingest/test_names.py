@@ -126,7 +126,9 @@ def test_fold_drops_case_and_diacritics():
 
 @pytest.mark.parametrize("name", ["Breitenänderung", "BREITENAENDERUNG", "Width change",
                                   "Transverse strain", "Transverse", "Querdehnung",
-                                  "表-横 ひずみ", "横-平均"])  # a Japanese logger's
+                                  "表-横 ひずみ", "横-平均",  # a Japanese logger's
+                                  # a DIC export's (GOM Correlate's thickness_strain)
+                                  "thickness_strain", "Width strain", "Minor strain"])
 def test_a_channel_across_the_specimen_takes_no_role(name):
     assert match_role(name) is None and is_transverse(name)
 
@@ -134,12 +136,14 @@ def test_a_channel_across_the_specimen_takes_no_role(name):
 @pytest.mark.parametrize("name", ["sample_count", "Sample count", "PIP count", "Temp",
                                   "Temperature", "Temperatur Probe",
                                   "Deformation Acceleration", "Accel X", "torque",
-                                  "Drehmoment"])
+                                  "Drehmoment", "mises_strain", "von Mises strain",
+                                  "Equivalent strain", "Shear strain"])
 def test_a_count_of_samples_a_temperature_or_an_acceleration_takes_no_role(name):
     # a load-cell rig's calibration table counts the readings it averaged in sample_count,
     # Bluehill the marks of an operator's button in PIP count; an accelerometer logs its
     # temperature in degrees, no angle; a drop tower's 'Deformation Acceleration (m/s^2)'
-    # was a gauge by its first word
+    # was a gauge by its first word; a DIC field's equivalent (von Mises) strain is about
+    # 0.87 of the axial strain in the elastic range, and a shear strain none of it
     assert match_role(name) is None and is_unmeasured(name)
 
 
@@ -172,7 +176,7 @@ def test_an_identifier_named_after_a_channel_takes_no_role(name):
     assert match_role(name) is None
 
 
-@pytest.mark.parametrize("name", ["Dehnung", "Strain 1", "Extension", "Weg"])
+@pytest.mark.parametrize("name", ["Dehnung", "Strain 1", "Extension", "Weg", "Major strain"])
 def test_a_channel_along_the_specimen_is_not_transverse(name):
     assert match_role(name) == "gauge" and not is_transverse(name)
 
