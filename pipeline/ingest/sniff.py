@@ -773,7 +773,7 @@ def find_table(
         units_cells
         and any(not (is_number(cell, decimal) or is_missing(cell)) for cell in rows[above - 1])
         and _filled_width(units_cells) <= width  # a trailing delimiter adds a blank field
-        and _units_row(units_cells, rows[data], decimal)
+        and _units_row(units_cells, rows[data], decimal, rows[above - 1])
     ):  # numbers among the names over a units row (sensors named by serial number, an
         # oscilloscope's channels 1 and 2: "x-axis,1,2") do not make the names row data
         if units_cells is not rows[above]:
@@ -849,7 +849,8 @@ def find_table(
         for index, cell in enumerate(units_cells[:columns]):
             unit = cell.strip().strip("()[]<>").strip()
             units[index] = (None if unit.lower() in NO_UNIT_CELLS or is_sample_interval(unit)
-                            or _over_text(rows[data], index, decimal) else unit or None)
+                            or _over_text(rows[data], index, decimal)
+                            or _repeats_name(cell, names, index) else unit or None)
     specimens = tuple(labels) if len(labels) > 1 else ()
     if specimens:  # names and units written over the first specimen's columns only
         names, units = _each_specimen(names, specimens), _each_specimen(units, specimens)
@@ -974,7 +975,7 @@ def _header_top(rows: list[list[str]], kinds: list[str], data: int, decimal: str
     """The first row of the names (and units) rows over the data row `data`."""
     above = _above(kinds, data)
     if (above >= 1 and kinds[above] == "text"
-            and _units_row(rows[above], rows[data], decimal)):
+            and _units_row(rows[above], rows[data], decimal, rows[above - 1])):
         above = _above(kinds, above)
     return max(above, 0)
 
@@ -1142,17 +1143,26 @@ def _filled_width(row: list[str]) -> int:
     return width
 
 
-def _units_row(row: list[str], first_data: list[str], decimal: str) -> bool:
-    """Whether `row` is a units row: a unit (or nothing) over every column of numbers.
+def _units_row(row: list[str], first_data: list[str], decimal: str, names: list[str]) -> bool:
+    """Whether `row` is a units row under the names row `names`: a unit (or nothing) over
+    every column of numbers.
 
     Cells over columns the first data row leaves empty are notes beside the
     table (Bluehill: ``"20 N preload"`` under ``"10 mm/min"``), not units; cells
     over text or clock readings are whatever the logger writes there (Graphtec:
-    ``Time`` over its date and time, ``A1234567890`` over its alarms' states).
+    ``Time`` over its date and time, ``A1234567890`` over its alarms' states); a
+    cell that repeats the name above it says the column has no unit (Instron
+    WaveMatrix: ``CycleCount`` under ``CycleCount``).
     """
-    return all(looks_like_unit(cell) for index, cell in enumerate(row)
+    return all(looks_like_unit(cell) or _repeats_name(cell, names, index)
+               for index, cell in enumerate(row)
                if index >= len(first_data)
                or not (is_missing(first_data[index]) or _over_text(first_data, index, decimal)))
+
+
+def _repeats_name(cell: str, names: list[str], index: int) -> bool:
+    """Whether the units cell `cell` of column `index` repeats its name (not blank)."""
+    return bool(cell.strip()) and index < len(names) and cell.strip() == names[index].strip()
 
 
 def _over_text(first_data: list[str], index: int, decimal: str) -> bool:

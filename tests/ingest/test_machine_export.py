@@ -887,3 +887,15 @@ def test_a_comment_column_filled_to_the_end_of_the_head_is_no_setting(write):
     lines = ["time [s],force [kN],note", *(f"{i},{i * 2},ok" for i in range(12))]
     _, meta = read_table(write("log.csv", "\n".join(lines) + "\n"), kind="engagement")
     assert not any("settings written beside" in warning for warning in meta.warnings)
+
+
+def test_a_units_row_repeating_a_name_gives_that_column_no_unit(write):
+    # Instron WaveMatrix's peak-valley export writes the counter's name where its unit goes
+    text = ("CycleCount,Axial Displacement ,Axial Force \nCycleCount,mm,N\n"
+            "1,-0.9897321,-1043.830078\n1,-2.194233239,-2446.410645\n2,-1.0,-1100.5\n")
+    table, meta = read_table(write("pv.csv", text), kind="tensile")
+    np.testing.assert_allclose(table["force"], [-1043.830078, -2446.410645, -1100.5])
+    np.testing.assert_allclose(table["gauge_1"], [-0.9897321e-3, -2.194233239e-3, -1.0e-3])
+    np.testing.assert_allclose(table["cycle_count"], [1, 1, 2])
+    assert {column.name: column.unit for column in meta.columns}["CycleCount"] is None
+    assert meta.header_line == 1
