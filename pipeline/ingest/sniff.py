@@ -50,6 +50,7 @@ from pipeline.ingest.unitparse import (
     is_measure_unit,
     is_sample_interval,
     looks_like_unit,
+    unit_role,
 )
 
 #: Bytes read to sniff a file.
@@ -840,7 +841,8 @@ def find_table(
         labels_over = _above(kinds, above) if len(labels) > 1 else -1
         if labels_over < 0 and kinds[_above(kinds, above)] == "text":
             names, named = _named_over(names, rows[_above(kinds, above)])
-            notes += named
+            names, united = _units_under_names(names, rows[_above(kinds, above)])
+            notes += named + united
     units: list[str | None] = [None] * columns
     clocks = {} if pairs else {
         index: _clock_column(kind, index, names, rows[data:], data + 1)
@@ -1055,6 +1057,21 @@ def _named_over(names: list[str], over: list[str]) -> tuple[list[str], tuple[str
     return ([renamed.get(index, name) for index, name in enumerate(names)],
             (f"the columns named {names[repeated[0]].strip()!r} alike are named by the row "
              f"over them: {', '.join(map(repr, cells))}",))
+
+
+def _units_under_names(names: list[str], over: list[str]) -> tuple[list[str], tuple[str, ...]]:
+    """`names` with a unit alone under a name of the row `over` them that names a role of
+    that unit taken as that name in that unit (a Mitsubishi servo export's ``ms`` under
+    ``Time``: ``Time [ms]``), and a note saying so (else `names` and no note)."""
+    joined = {index: f"{over[index].strip()} [{name.strip()}]"
+              for index, name in enumerate(names)
+              if index < len(over) and not match_role(name)
+              and (role := unit_role(name.strip())) is not None and match_role(over[index]) == role}
+    if not joined:
+        return names, ()
+    return ([joined.get(index, name) for index, name in enumerate(names)],
+            ("a unit alone in the names row is taken with the name over it: "
+             + ", ".join(map(repr, joined.values())),))
 
 
 def _group_labels(row: list[str]) -> list[str]:

@@ -899,3 +899,17 @@ def test_a_units_row_repeating_a_name_gives_that_column_no_unit(write):
     np.testing.assert_allclose(table["cycle_count"], [1, 1, 2])
     assert {column.name: column.unit for column in meta.columns}["CycleCount"] is None
     assert meta.header_line == 1
+
+
+def test_a_unit_alone_in_the_names_row_takes_the_name_over_it(write):
+    # a Mitsubishi MR Configurator export: 'ms' under 'Time', the channels' names under
+    # their slots
+    text = ("Axis1\nNumber of sampling data,3\nSampling time interval(ms),0.667\n"
+            "Time,Analog 1,Analog 2\nms,Servo motor speed,Torque\n"
+            "0.000000,0.0,-1.0\n0.666666,0.0,-1.0\n1.333332,0.0,-0.8\n")
+    table, meta = read_table(write("mr.csv", text), kind="engagement",
+                             columns={"force": "Torque"}, units={"force": "N"})
+    np.testing.assert_allclose(table["time"], [0, 0.666666e-3, 1.333332e-3])
+    assert {column.name: column.unit for column in meta.columns}["Time"] == "ms"
+    assert "a unit alone in the names row is taken with the name over it: 'Time [ms]'" in (
+        meta.warnings)
