@@ -11,7 +11,8 @@ log counts from the same origin. Nothing is guessed:
 * only these three forms are read: hours of one or two digits (a time of day;
   up to four as a test clock counts the time elapsed past 24 hours), ``.`` or ``,``
   before the fraction of a second (``9:03:27,125``, as a logger set to a
-  decimal comma writes it), the date's parts joined by ``-`` or, as some
+  decimal comma writes it), or ``:`` before three digits of milliseconds
+  (``09:39:48:776``, as a press's software writes them), the date's parts joined by ``-`` or, as some
   loggers write it, by ``/`` (``2024/03/05 14:03:27.125``: the year first, so
   still one reading), or the day first with dots as German and Central European
   software writes it (``05.03.2024 14:03:27,125``: a dotted date is always day,
@@ -69,7 +70,7 @@ from pipeline.errors import LayoutError
 #: elapsed time in minutes and seconds (hours in front once past the hour).
 _FORMS = {
     "time of day": re.compile(
-        r" *(?:\d{1,2}/\d{1,2}/\d{4}[ T]+)?(?:\d{1,4}:\d{2}:\d{2}(?:[.,]\d+)?"
+        r" *(?:\d{1,2}/\d{1,2}/\d{4}[ T]+)?(?:\d{1,4}:\d{2}:\d{2}(?:[.,]\d+|:\d{3})?"
         r"|(?:0?[1-9]|1[0-2]):\d{2}:\d{2}(?:[.,]\d+)? *[AaPp]\.?[Mm]\.?) *"),
     "date and time": re.compile(
         r" *(?:\d{4}(?P<sep>[-/])\d{2}(?P=sep)\d{2}|\d{2}\.\d{2}\.\d{4})"
@@ -99,6 +100,8 @@ _ARROW_FORMS = {
 #: hour (a regular expression and its replacement, RE2 reading ``\10`` as group 1, "0").
 _PLAIN_REWRITES = (("/", "-"), (",", "."))
 _ONE_DIGIT_HOUR = (r"([T ])(\d):", r"\10\2:")
+#: Milliseconds after a colon (a press's ``09:39:48:776``), rewritten after a point.
+_COLON_MILLISECONDS = (r"^(.*\d:\d{2}:\d{2}):(\d{3})$", r"\1.\2")
 #: A date joined to its time by "-" or "_" (a load-cell logger's ``2018-11-15-09:30:25.349``),
 #: rewritten with a blank (after :data:`_PLAIN_REWRITES`).
 _DATE_TIME_JOINT = (r"^(\d{4}-\d{2}-\d{2})[_-]", r"\1 ")
@@ -107,7 +110,7 @@ _DAY_FIRST_DATE = (r"^(\d{2})\.(\d{2})\.(\d{4})", r"\3-\2-\1")
 #: Anything with hours and minutes: a clock reading, read or not.
 _CLOCK_LIKE = re.compile(r"\d{1,2}:\d{2}")
 #: The hint for a clock reading in a form that is not read.
-READ_FORMS = ("H:MM:SS.fff, YYYY-MM-DD H:MM:SS.fff, YYYY/MM/DD H:MM:SS.fff, "
+READ_FORMS = ("H:MM:SS.fff (or H:MM:SS:fff), YYYY-MM-DD H:MM:SS.fff, YYYY/MM/DD H:MM:SS.fff, "
               "DD.MM.YYYY H:MM:SS.fff, D/M/YYYY or M/D/YYYY H:MM:SS.fff, each also with AM "
               "or PM, and M:SS.fff, with '.' or ',' before the fraction")
 UNREAD_FORM_HINT = (
@@ -324,6 +327,7 @@ class ClockColumn:
             for pattern, padded in _PAD_MILLISECONDS:
                 column = pc.replace_substring_regex(column, pattern, padded)
         if self.kind == "time of day":
+            column = pc.replace_substring_regex(column, *_COLON_MILLISECONDS)
             return self._carried_days(column) if self.carried else _elapsed_nanoseconds(
                 column, _HOURS_PARTS)
         return pc.cast(pc.cast(column, pa.timestamp("ns")), pa.int64())

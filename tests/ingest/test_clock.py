@@ -51,6 +51,7 @@ def log(cells: list[str], header: str = "Time,Load (kN)") -> str:
     ("1.5", None), ("", None),
     ("0:00.0", "minutes and seconds"), ("75:12,3", "minutes and seconds"),
     ("1:00:00.5", "time of day"), ("12:3.4", None),
+    ("09:39:48:776", "time of day"), ("09:39:48:77", None),
 ])
 def test_clock_kind(text, kind):
     assert clock_kind(text) == kind
@@ -174,6 +175,19 @@ def test_one_digit_hours_and_a_decimal_comma_in_the_seconds(write):
     np.testing.assert_allclose(table["force"], np.round(FORCE_KN, 3) * 1e3)
     assert any("holds clock readings (time of day, first '9:59:58,500')" in warning
                for warning in meta.warnings)
+
+
+def test_milliseconds_after_a_colon(write):
+    # a press's software: "09:39:48:776", a colon before the milliseconds
+    cells = [time_of_day(s, 9 * 3600 + 3598.5) for s in SECONDS]
+    cells = [cell[:-4] + ":" + cell[-3:] for cell in cells]
+    assert cells[0] == "09:59:58:500" and cells[-1] == "10:00:01:250"
+    path = write("press.csv", log(cells))
+    table, meta = read_table(path, kind="engagement")
+    np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
+    rows, _ = open_log(path, kind="engagement").read(4, 12)  # by row ranges too
+    np.testing.assert_allclose(rows["time"], SECONDS[4:], rtol=0, atol=1e-9)
+    assert "first '09:59:58:500'" in meta.warnings[0]
 
 
 def test_a_reading_not_in_the_first_rows_arrow_form_is_named(write):
