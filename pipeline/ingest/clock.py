@@ -8,21 +8,22 @@ column is read by pyarrow (or npTDMS) as a time of day or a timestamp and
 becomes seconds after the first data row's stamp, so that every chunk of a long
 log counts from the same origin. Nothing is guessed:
 
-* only these three forms are read: hours of one or two digits (a time of day;
-  up to four as a test clock counts the time elapsed past 24 hours), ``.`` or ``,``
-  before the fraction of a second (``9:03:27,125``, as a logger set to a
-  decimal comma writes it), or ``:`` before three digits of milliseconds
-  (``09:39:48:776``, as a press's software writes them), the date's parts joined by ``-`` or, as some
-  loggers write it, by ``/`` (``2024/03/05 14:03:27.125``: the year first, so
-  still one reading), or the day first with dots as German and Central European
-  software writes it (``05.03.2024 14:03:27,125``: a dotted date is always day,
-  month, year); minutes and seconds with the fraction of a second (``0:00.1``,
-  ``75:12.3``, hours in front once past the hour, as Measurement Computing's
-  DAQami writes its elapsed time: without the fraction, ``5:14`` could be hours
-  and minutes); a 12-hour clock (``2:03:27 PM``: 12 AM is midnight) and, in
-  front of a time of day, a date of slashes (``3/5/2024 2:03:27 PM``, as a
-  spreadsheet saves a date and time: March or May, told as a date column's
-  are, :func:`carried_order`). Other forms (``3/5/2024 2:03 PM``, without
+* only these three forms are read: hours of one or two digits (a time of day; up to
+  four as a test clock counts the time elapsed past 24 hours), ``.`` or ``,`` before
+  the fraction of a second (``9:03:27,125``, as a logger set to a decimal comma
+  writes it), or ``:`` before three digits of milliseconds (``09:39:48:776``, as a
+  press's software writes them), the date's parts joined by ``-`` or, as some
+  loggers write it, by ``/`` (``2024/03/05 14:03:27.125``: the year first, so still
+  one reading), or the day first with dots as German and Central European software
+  writes it (``05.03.2024 14:03:27,125``: a dotted date is always day, month, year),
+  with or without its offset from UTC (``2021-02-26T16:41:09+01:00``, ``...Z``: read
+  as UTC, so that summer time beginning or ending is no step); minutes and seconds
+  with the fraction of a second (``0:00.1``, ``75:12.3``, hours in front once past
+  the hour, as Measurement Computing's DAQami writes its elapsed time: without the
+  fraction, ``5:14`` could be hours and minutes); a 12-hour clock (``2:03:27 PM``:
+  12 AM is midnight) and, in front of a time of day, a date of slashes (``3/5/2024
+  2:03:27 PM``, as a spreadsheet saves a date and time: March or May, told as a date
+  column's are, :func:`carried_order`). Other forms (``3/5/2024 2:03 PM``, without
   seconds) are not read: such a column is set aside as text
   (:func:`is_unread_clock`), and a run that needs the time is refused;
 * a column whose first reading is in pyarrow's own form (two-digit hours,
@@ -74,7 +75,7 @@ _FORMS = {
         r"|(?:0?[1-9]|1[0-2]):\d{2}:\d{2}(?:[.,]\d+)? *[AaPp]\.?[Mm]\.?) *"),
     "date and time": re.compile(
         r" *(?:\d{4}(?P<sep>[-/])\d{2}(?P=sep)\d{2}|\d{2}\.\d{2}\.\d{4})"
-        r"[T _-]\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)? *"),
+        r"[T _-]\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)?(?:Z|[+-]\d{2}:?\d{2})? *"),
     "minutes and seconds": re.compile(r" *(?:\d+:)?\d+:\d{2}[.,]\d+ *"),
 }
 #: The parts of an elapsed time (RE2, for pyarrow), its decimal comma made a point.
@@ -100,6 +101,8 @@ _ARROW_FORMS = {
 #: hour (a regular expression and its replacement, RE2 reading ``\10`` as group 1, "0").
 _PLAIN_REWRITES = (("/", "-"), (",", "."))
 _ONE_DIGIT_HOUR = (r"([T ])(\d):", r"\10\2:")
+#: A date and time's offset from UTC (ISO 8601: ``Z``, ``+01:00``, ``-0500``).
+_UTC_OFFSET = re.compile(r"(?:Z|[+-]\d{2}:?\d{2}) *$")
 #: Milliseconds after a colon (a press's ``09:39:48:776``), rewritten after a point.
 _COLON_MILLISECONDS = (r"^(.*\d:\d{2}:\d{2}):(\d{3})$", r"\1.\2")
 #: A date joined to its time by "-" or "_" (a load-cell logger's ``2018-11-15-09:30:25.349``),
@@ -110,9 +113,10 @@ _DAY_FIRST_DATE = (r"^(\d{2})\.(\d{2})\.(\d{4})", r"\3-\2-\1")
 #: Anything with hours and minutes: a clock reading, read or not.
 _CLOCK_LIKE = re.compile(r"\d{1,2}:\d{2}")
 #: The hint for a clock reading in a form that is not read.
-READ_FORMS = ("H:MM:SS.fff (or H:MM:SS:fff), YYYY-MM-DD H:MM:SS.fff, YYYY/MM/DD H:MM:SS.fff, "
-              "DD.MM.YYYY H:MM:SS.fff, D/M/YYYY or M/D/YYYY H:MM:SS.fff, each also with AM "
-              "or PM, and M:SS.fff, with '.' or ',' before the fraction")
+READ_FORMS = ("H:MM:SS.fff (or H:MM:SS:fff), YYYY-MM-DD H:MM:SS.fff (also with a UTC "
+              "offset), YYYY/MM/DD H:MM:SS.fff, DD.MM.YYYY H:MM:SS.fff, D/M/YYYY or "
+              "M/D/YYYY H:MM:SS.fff, each also with AM or PM, and M:SS.fff, with '.' or ',' "
+              "before the fraction")
 UNREAD_FORM_HINT = (
     f"the column holds clock readings in a form the reader does not guess (it reads "
     f"{READ_FORMS}): export the time in seconds, or name another time column in the run "
@@ -330,7 +334,14 @@ class ClockColumn:
             column = pc.replace_substring_regex(column, *_COLON_MILLISECONDS)
             return self._carried_days(column) if self.carried else _elapsed_nanoseconds(
                 column, _HOURS_PARTS)
-        return pc.cast(pc.cast(column, pa.timestamp("ns")), pa.int64())
+        return pc.cast(pc.cast(column, pa.timestamp("ns", tz="UTC" if self._zoned else None)),
+                       pa.int64())
+
+    @cached_property
+    def _zoned(self) -> bool:
+        """Whether the readings carry their offset from UTC (read as UTC: a change of
+        offset, summer time beginning or ending, is no step of the time)."""
+        return self.kind == "date and time" and _UTC_OFFSET.search(self.first) is not None
 
     def _carried_days(self, column: pa.ChunkedArray) -> pa.ChunkedArray:
         """Times of day that carry a date of slashes (:attr:`carried`) as int64 nanoseconds
@@ -385,6 +396,8 @@ class ClockColumn:
                      f"{self.date.first.strip()!r}, {_ORDER_NAMES[self.date.order]})")
         if self.carried is not None:
             note += f", on the date each reading carries ({_ORDER_NAMES[self.carried]})"
+        if self._zoned:
+            note += ", each at its offset from UTC"
         return note
 
 

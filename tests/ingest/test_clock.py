@@ -52,6 +52,8 @@ def log(cells: list[str], header: str = "Time,Load (kN)") -> str:
     ("0:00.0", "minutes and seconds"), ("75:12,3", "minutes and seconds"),
     ("1:00:00.5", "time of day"), ("12:3.4", None),
     ("09:39:48:776", "time of day"), ("09:39:48:77", None),
+    ("2021-02-26T16:41:09.000+01:00", "date and time"), ("2021-02-26 15:41:09Z", "date and time"),
+    ("2021-02-26T16:41:09-0500", "date and time"), ("2021-02-26T16:41:09+1", None),
 ])
 def test_clock_kind(text, kind):
     assert clock_kind(text) == kind
@@ -188,6 +190,20 @@ def test_milliseconds_after_a_colon(write):
     rows, _ = open_log(path, kind="engagement").read(4, 12)  # by row ranges too
     np.testing.assert_allclose(rows["time"], SECONDS[4:], rtol=0, atol=1e-9)
     assert "first '09:59:58:500'" in meta.warnings[0]
+
+
+def test_date_times_at_their_offset_from_utc_count_on_as_utc(write):
+    # a logger's ISO 8601 stamps with their offset, over the night summer time begins:
+    # 01:59:59.5+01:00 is followed by 03:00:00+02:00, half a second later
+    cells = ["2021-03-28T01:59:59.000+01:00", "2021-03-28T01:59:59.500+01:00",
+             "2021-03-28T03:00:00.000+02:00", "2021-03-28T03:00:00.500+02:00"]
+    text = "Time,Load (kN)\n" + "".join(f"{cell},{i}\n" for i, cell in enumerate(cells))
+    path = write("tz.csv", text)
+    table, meta = read_table(path, kind="engagement")
+    np.testing.assert_allclose(table["time"], [0, 0.5, 1.0, 1.5], rtol=0, atol=1e-9)
+    assert meta.warnings[0].endswith("each at its offset from UTC")
+    rows, _ = open_log(path, kind="engagement").read(2, 4)
+    np.testing.assert_allclose(rows["time"], [1.0, 1.5], rtol=0, atol=1e-9)
 
 
 def test_a_reading_not_in_the_first_rows_arrow_form_is_named(write):
