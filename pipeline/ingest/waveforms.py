@@ -67,21 +67,14 @@ def time_columns(head: Head, spec: TableSpec, names: list[str], units: list[str 
 
 def _require_one_axis(head: Head, spec: TableSpec, xs: list[int]) -> None:
     """Refuse waveforms of different :data:`AXIS_KEYS` values (right of each x column's
-    key)."""
-    for offset, line in enumerate(spec.preamble):
+    key) in the lines over the names row."""
+    for number, line in enumerate(head.lines[:spec.header_index], start=1):
         cells = [cell.strip().strip('"') for cell in split_fields(line, spec.delimiter)]
         what = AXIS_KEYS.get(fold(cells[0])) if cells else None
         values = {cells[index + 1] for index in xs if index + 1 < len(cells)}
         if what is not None and len(values) > 1:
             raise LayoutError(
                 f"the waveforms side by side {what} (" + ", ".join(sorted(values))
-                + "): they have no common time", file=head.name,
-                row=_line_of(head, line, offset),
+                + "): they have no common time", file=head.name, row=number,
                 hint="export the channels of one start and interval together, others to "
                      "files of their own")
-
-
-def _line_of(head: Head, line: str, fallback: int) -> int:
-    """The 1-based line of the preamble `line` in the head."""
-    return next((number for number, text in enumerate(head.lines, start=1) if text == line),
-                fallback + 1)
