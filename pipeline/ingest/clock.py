@@ -71,7 +71,7 @@ from pipeline.errors import LayoutError
 #: elapsed time in minutes and seconds (hours in front once past the hour).
 _FORMS = {
     "time of day": re.compile(
-        r" *(?:\d{1,2}/\d{1,2}/\d{4}[ T]+)?(?:\d{1,4}:\d{2}:\d{2}(?:[.,]\d+|:\d{3})?"
+        r" *(?:\d{1,2}/\d{1,2}/(?:\d{4}|\d{2})[ T]+)?(?:\d{1,4}:\d{2}:\d{2}(?:[.,]\d+|:\d{3})?"
         r"|(?:0?[1-9]|1[0-2]):\d{2}:\d{2}(?:[.,]\d+)? *[AaPp]\.?[Mm]\.?) *"),
     "date and time": re.compile(
         r" *(?:\d{4}(?P<sep>[-/])\d{2}(?P=sep)\d{2}|\d{2}\.\d{2}\.\d{4})"
@@ -86,10 +86,11 @@ _ELAPSED_PARTS = r"^(?P<hours>\d+:)?(?P<minutes>\d+):(?P<seconds>\d{2}\.\d+)$"
 _HOURS_PARTS = (r"^(?P<hours>\d+:)(?P<minutes>\d{2}):(?P<seconds>\d{2}(?:\.\d+)?)"
                 r"(?: *(?P<half>[AaPp])\.?[Mm]\.?)?$")
 #: A date of slashes before a time of day in one cell (``3/5/2024 2:03:27 PM``, as a
-#: spreadsheet writes a date and time): its date, and the time of day after it.
-_CARRIED_DATE = r"^(?P<date>\d{1,2}/\d{1,2}/\d{4})[ T]+(?P<time>.*)$"
-#: The same date before a time, for the head's cells (Python's regex).
-_SLASHED_DATE_FIRST = re.compile(r" *(\d{1,2})/(\d{1,2})/\d{4}[ T]")
+#: spreadsheet writes a date and time; a logger's ``11/17/18 12:37:17 PM`` with a
+#: two-digit year): its date, and the time of day after it.
+_CARRIED_DATE = r"^(?P<date>\d{1,2}/\d{1,2}/(?:\d{4}|\d{2}))[ T]+(?P<time>.*)$"
+#: The same date before a time, for the head's cells (Python's regex): its three parts.
+_SLASHED_DATE_FIRST = re.compile(r" *(\d{1,2})/(\d{1,2})/(\d{4}|\d{2})[ T]")
 #: The forms pyarrow's CSV reader parses itself: two-digit hours, ``.``, ISO 8601 dashes
 #: (a column whose hours pass 24 is read again as text: :meth:`ClockColumn.readings`).
 _ARROW_FORMS = {
@@ -115,8 +116,8 @@ _CLOCK_LIKE = re.compile(r"\d{1,2}:\d{2}")
 #: The hint for a clock reading in a form that is not read.
 READ_FORMS = ("H:MM:SS.fff (or H:MM:SS:fff), YYYY-MM-DD H:MM:SS.fff (also with a UTC "
               "offset), YYYY/MM/DD H:MM:SS.fff, DD.MM.YYYY H:MM:SS.fff, D/M/YYYY or "
-              "M/D/YYYY H:MM:SS.fff, each also with AM or PM, and M:SS.fff, with '.' or ',' "
-              "before the fraction")
+              "M/D/YYYY (or YY) H:MM:SS.fff, each also with AM or PM, and M:SS.fff, with "
+              "'.' or ',' before the fraction")
 UNREAD_FORM_HINT = (
     f"the column holds clock readings in a form the reader does not guess (it reads "
     f"{READ_FORMS}): export the time in seconds, or name another time column in the run "
@@ -144,17 +145,21 @@ _WHOLE_COUNT = re.compile(r" *\+?\d+(?:\.0+)? *")  # "250.0": a spreadsheet's nu
 _DATE_FORMS = {
     "ymd": re.compile(r"\d{4}([-/])\d{1,2}\1\d{1,2}(?: 00:00:00)?"),
     "dmy": re.compile(r"\d{1,2}\.\d{1,2}\.\d{4}"),
-    "slashes": re.compile(r"\d{1,2}/\d{1,2}/\d{4}"),
+    "slashes": re.compile(r"\d{1,2}/\d{1,2}/(?:\d{4}|\d{2})"),
 }
 #: The parts of a date of each order (RE2, for pyarrow); a cell of another form is null.
 _DATE_PARTS = {
     "ymd": r"^(?P<year>\d{4})[-/](?P<month>\d{1,2})[-/](?P<day>\d{1,2})(?: 00:00:00)?$",
-    "dmy": r"^(?P<day>\d{1,2})[./](?P<month>\d{1,2})[./](?P<year>\d{4})$",
-    "mdy": r"^(?P<month>\d{1,2})/(?P<day>\d{1,2})/(?P<year>\d{4})$",
+    "dmy": r"^(?P<day>\d{1,2})[./](?P<month>\d{1,2})[./](?P<year>\d{4}|\d{2})$",
+    "mdy": r"^(?P<month>\d{1,2})/(?P<day>\d{1,2})/(?P<year>\d{4}|\d{2})$",
 }
 _ORDER_NAMES = {"ymd": "year first", "dmy": "day first", "mdy": "month first",
                 "slashes": "day or month first, whichever makes the dates follow one "
                            "another day by day"}
+#: A two-digit year below it is of this century, from it of the last (as POSIX reads
+#: ``%y``): only the days between dates count, so only a log across the first of January
+#: 2069 would step by a century, and not be read as a log day by day.
+_TWO_DIGIT_PIVOT = "69"
 #: Seconds per day.
 _DAY_SECONDS = 86_400.0
 #: A time of day or date and time split at its fraction of a second.
@@ -480,7 +485,7 @@ def _dates_in(column: int, names: list[str], rows: list[list[str]]) -> DateColum
     order = next((order for order, form in _DATE_FORMS.items()
                   if all(form.fullmatch(cell) for cell in cells)), None)
     if order == "slashes":
-        order = _order_of_slashes([cell.split("/")[:2] for cell in cells])
+        order = _order_of_slashes([cell.split("/") for cell in cells])
     return None if order is None else DateColumn(column, order, cells[0], names[column].strip())
 
 
@@ -508,13 +513,19 @@ def carried_order(kind: str, index: int, rows: list[list[str]]) -> str | None:
 
 
 def _order_of_slashes(parts: list) -> str | None:
-    """The order of dates of slashes from their first two `parts` (texts of numbers) in
-    the head: ``"dmy"`` or ``"mdy"`` when a part past 12 says which is the day,
+    """The order of dates of slashes from their three `parts` (texts of numbers) in the
+    head: ``"dmy"`` or ``"mdy"`` when a part past 12 says which is the day,
     ``"slashes"`` when none does (:func:`slash_order` decides later), None when parts
-    past 12 on both sides leave no date."""
+    past 12 on both sides leave no date.
+
+    A two-digit year always leaves the order to the dates' steps (``"slashes"``): it
+    may as well be first (``18/11/17``, year, month, day), where a part past 12 is no
+    day."""
     day_first, month_first = (any(int(part[i]) > 12 for part in parts) for i in (0, 1))
     if day_first and month_first:
         return None
+    if any(len(part[2]) == 2 for part in parts):
+        return "slashes"
     return "dmy" if day_first else "mdy" if month_first else "slashes"
 
 
@@ -616,6 +627,9 @@ def _days(dates: pa.ChunkedArray, order: str) -> pa.ChunkedArray:
     parts = pc.extract_regex(pc.utf8_trim_whitespace(dates), _DATE_PARTS[order])
     year, month, day = (pc.utf8_lpad(pc.struct_field(parts, name), 2, "0")
                         for name in ("year", "month", "day"))
+    century = pc.if_else(pc.less(year, _TWO_DIGIT_PIVOT), "20", "19")
+    year = pc.if_else(pc.equal(pc.utf8_length(year), 2),
+                      pc.binary_join_element_wise(century, year, ""), year)
     iso = pc.binary_join_element_wise(year, month, day, "-")
     seconds = pc.cast(pc.cast(iso, pa.timestamp("s")), pa.int64())
     return pc.divide(seconds, 86_400)

@@ -313,10 +313,12 @@ def test_a_tensile_log_with_a_clock_form_not_read_is_read_without_it(tmp_path, s
     assert meta.warnings[-1].endswith("export from the machine): not used as the time")
 
 
-def spreadsheet_stamp(stamp: datetime.datetime, order: str, twelve: bool) -> str:
-    """``3/5/2024 11:59:58.500 PM`` (a US spreadsheet) or ``05/03/2024 23:59:58.500``."""
-    date = (f"{stamp.month}/{stamp.day}/{stamp.year}" if order == "mdy"
-            else f"{stamp:%d/%m/%Y}")
+def spreadsheet_stamp(stamp: datetime.datetime, order: str, twelve: bool,
+                      year: str = "%Y") -> str:
+    """``3/5/2024 11:59:58.500 PM`` (a US spreadsheet) or ``05/03/2024 23:59:58.500``;
+    `year` ``"%y"``: two digits (``3/5/24``)."""
+    date = (f"{stamp.month}/{stamp.day}/" if order == "mdy" else f"{stamp:%d/%m/}"
+            ) + stamp.strftime(year)
     clock = (f"{int(stamp.strftime('%I'))}:{stamp:%M:%S}.{stamp.microsecond // 1000:03d} "
              f"{stamp:%p}" if twelve else f"{stamp:%H:%M:%S}.{stamp.microsecond // 1000:03d}")
     return f"{date} {clock}"
@@ -347,6 +349,34 @@ def test_a_spreadsheets_date_and_time_counts_on_past_midnight(tmp_path, suffix, 
     assert meta.time_monotonic
     assert any("holds clock readings (date and time, first" in w and "on the date each "
                "reading carries (day or month first, whichever" in w for w in meta.warnings)
+
+
+@pytest.mark.parametrize(("order", "twelve"), [("mdy", True), ("dmy", False)])
+def test_a_loggers_two_digit_year_counts_on_past_midnight(write, order, twelve):
+    """A logger's date of slashes with a two-digit year (HOBOware's ``11/17/18 12:37:17
+    PM``): the change of day at midnight says which part is the day, though the 17th
+    says it too (a two-digit year might come first)."""
+    start = datetime.datetime(2018, 11, 17, 23, 59, 58, 500_000)
+    cells = [spreadsheet_stamp(start + datetime.timedelta(seconds=float(s)), order, twelve,
+                               "%y") for s in SECONDS]
+    assert cells[0] in ("11/17/18 11:59:58.500 PM", "17/11/18 23:59:58.500")
+    text = '"#","Date Time, GMT-06:00","Force, N"\n' + "".join(
+        f"{row},{cell},{force:.3f}\n" for row, (cell, force) in enumerate(
+            zip(cells, FORCE_KN, strict=True), start=1))
+    table, meta = read_table(write("hobo.csv", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], SECONDS, rtol=0, atol=1e-9)
+    assert "whichever makes the dates follow one another day by day" in meta.warnings[0]
+
+
+def test_a_two_digit_year_first_is_not_read_as_the_day(write):
+    # "18/11/17" (year, month, day) then "18/11/18": read day first, a step of a year;
+    # so the dates are not joined, and the time's step back past midnight is told
+    cells = ["18/11/17 23:59:59", "18/11/17 23:59:59.5", "18/11/18 00:00:00",
+             "18/11/18 00:00:00.5"]
+    text = "Date Time,Load (kN)\n" + "".join(f"{cell},{i}\n" for i, cell in enumerate(cells))
+    table, meta = read_table(write("ymd.csv", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], [0, 0.5, 0.5 - 86_399.5, 1 - 86_399.5])
+    assert any(warning.startswith("time: steps back 1 times") for warning in meta.warnings)
 
 
 def test_a_twelve_hour_clock_with_an_hour_past_12_is_refused(write):
