@@ -559,6 +559,8 @@ def detect_dialect(
         if delimiter == BLANKS and best[0][0]:
             break  # blanks only when no delimiter gives a table: they drop empty cells
         rows = [split_fields(line, delimiter) for line in sample]
+        if delimiter == ",":
+            rows = [row for row in rows if not _split_at_decimal_commas(row)]
         for decimal in ".,":
             numeric = [row for row in rows if _numeric_row(row, decimal, delimiter == BLANKS)]
             if not numeric:
@@ -687,6 +689,17 @@ def _numeric_row(row: list[str], decimal: str, blanks: bool = False) -> bool:
         after_number = False
     return len(row) >= 2 and numbers > texts and not (blanks and texts)
 
+
+def _split_at_decimal_commas(row: list[str]) -> bool:
+    """Whether `row`, split at commas, is a row of a table aligned by blanks with decimal
+    commas (``0,133656  -0,004617`` -> ``0``, ``133656  -0``, ``004617``): a cell holds
+    two numbers apart by blanks, not one grouped in thousands (``1 234``)."""
+    return any((match := _NUMBERS_APART.fullmatch(cell)) and (
+        len(match["blanks"]) > 1 or match["sign"] or len(match["last"]) != 3) for cell in row)
+
+
+#: Two whole numbers apart by blanks, the second perhaps signed.
+_NUMBERS_APART = re.compile(r" *[-+]?\d+(?P<blanks> +)(?P<sign>[-+]?)(?P<last>\d+) *")
 
 #: A delimiter inside a cell: a clock reading there is part of a row split at the wrong
 #: delimiter (``38354132;11:02:46;2`` of ``38354132;11:02:46;2,8;0,0`` split at its commas).

@@ -122,6 +122,10 @@ def test_empty(write, content, message):
         # field still holds a clock reading, but among semicolons
         (["L0 = 81,2;d = 2,25;Polymer PVC", "38354132;11:02:46;2,8;0,0",
           "57745416;11:02:47;1,4;0,0", "54460604;11:02:48;0,4;0,0"], (";", ",", 4)),
+        # a GOM ARAMIS section: aligned by blanks, with decimal commas (split at them,
+        # a row would leave "133656  -0" in a cell)
+        (["Sectionlength deltaL", "0,000000  -0,004665", "0,133656  -0,004617",
+          "2,398251  0,000270"], (" ", ",", 2)),
     ],
 )
 def test_dialect(lines, dialect, tmp_path):
