@@ -261,6 +261,11 @@ _NO_ROLE_LABELS = (_TRANSVERSE, _OTHER_QUANTITY)
 
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^()]*)\)"
                         r"|<(?P<ang>[^<>]*)>|【(?P<jis>[^【】]*)】|（(?P<wide>[^（）]*)）)\s*$")
+#: A sensor's serial number in brackets after a name and its unit (HOBOware's
+#: ``Temp, °C (LGR S/N: 10694967)``): no unit.
+_SERIAL = re.compile(r"\b(?:S/N|SN|serial)\b", re.IGNORECASE)
+#: A unit after a comma (``Temp, °C``, ``Нагрузка, кН``): one word, no number.
+_COMMA_UNIT = re.compile(r"(?P<name>.*\S),\s+(?P<unit>[^\s\d]\S*)")
 #: The run label PASCO Capstone writes after a column's unit (``Force (N) Run #1``,
 #: ``Time (s) Auto``).
 _RUN_LABEL = re.compile(r"\s+(?:Run\s*#?\s*\d+|Auto)$")
@@ -306,8 +311,9 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
     ----------
     header : str
         A names-row cell, e.g. ``"force [kN]"``, ``"Load (N)"``, ``"KRAFT <N>"``,
-        ``"Kraft / kN"`` (ISO 80000 quantity / unit), ``"荷重【kN】"``, ``"Force (N) Run #1"``
-        (the run label kept in the name) or ``"Time"``.
+        ``"Kraft / kN"`` (ISO 80000 quantity / unit), ``"Нагрузка, кН"`` (after a comma),
+        ``"荷重【kN】"``, ``"Force (N) Run #1"`` (the run label kept in the name),
+        ``"Temp, °C (LGR S/N: 1069)"`` (a serial number kept in the name) or ``"Time"``.
 
     Returns
     -------
@@ -315,8 +321,8 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
         The name without the unit, stripped.
     unit : str or None
         The text inside trailing ``[...]``, ``(...)``, ``<...>``, ``【...】`` or full-width
-        parentheses ``（...）``, or after `` / `` (or a single ``/``) when pint reads it as
-        a unit; None when there is none.
+        parentheses ``（...）``, or after `` / `` (or a single ``/``) or a comma when pint
+        reads it as a unit; None when there is none.
     """
     text = header_text(header)
     label = _RUN_LABEL.search(text)
@@ -325,6 +331,9 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
         if unit is not None:
             return name + label.group(), unit
     match = _BRACKETED.match(text)
+    if match is not None and match["par"] is not None and _SERIAL.search(match["par"]):
+        name, unit = split_name_unit(match["name"])
+        return f"{name} ({match['par'].strip()})", unit
     if match is not None and match["name"] and not _qualifier(match):
         unit = next(match[group] for group in ("sq", "par", "ang", "jis", "wide")
                     if match[group] is not None)
@@ -335,6 +344,9 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
         if name.strip() and spellings(unit) and not (
                 separator == "/" and _ends_in_unit_over(name, unit)):
             return name.strip(), unit.strip()
+    match = _COMMA_UNIT.fullmatch(text)
+    if match is not None and spellings(match["unit"]):
+        return match["name"], match["unit"]
     return text, None
 
 

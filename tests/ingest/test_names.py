@@ -114,6 +114,14 @@ def test_every_listed_name_matches_its_own_role():
         ("Chain force (filtered)", ("Chain force (filtered)", None)),
         # empty brackets (a TelemetryViewer export's "time ()") give no unit, not ''
         ("time ()", ("time", None)), ("reading []", ("reading", None)),
+        # a unit after a comma, one word and no number; a logger's serial number after
+        # it stays in the name (HOBOware)
+        ("Нагрузка, кН", ("Нагрузка", "кН")), ("RH, %", ("RH", "%")),
+        ("Force, N (LGR S/N: 10694967, SEN S/N: 10694967)",
+         ("Force (LGR S/N: 10694967, SEN S/N: 10694967)", "N")),
+        ("Host Connected (LGR S/N: 10694967)", ("Host Connected (LGR S/N: 10694967)", None)),
+        ("Date Time, GMT-06:00", ("Date Time, GMT-06:00", None)),
+        ("Force, total", ("Force, total", None)), ("Channel, 1", ("Channel, 1", None)),
     ],
 )
 def test_split_name_unit(cell, expected):
