@@ -175,6 +175,16 @@ def test_find_plain_table_with_bad_first_row(tmp_path):
 def test_trailing_delimiter_pads_names(tmp_path):
     spec = find_table(["t [s],f [kN]", "0.0,1.0,", "0.1,2.0,"], tmp_path, ",", ".", 3)
     assert spec.names == ["t [s]", "f [kN]", ""]
+    assert not spec.notes  # the column on the right is empty
+
+
+def test_data_wider_than_its_names_is_told(tmp_path):
+    # a rig's log whose names row lost a delimiter: names and data may not line up
+    spec = find_table(["t [s],f [N],angle [rad]", "0.0,1.0,10.0,0.1", "0.1,1.1,10.1,0.2"],
+                      tmp_path, ",", ".", 4)
+    assert spec.names == ["t [s]", "f [N]", "angle [rad]", ""]
+    assert any("has 3 names over data rows of 4 fields" in note and "1 column(s) on the "
+               "right go without one" in note for note in spec.notes)
 
 
 def test_names_row_too_wide(tmp_path):
