@@ -26,7 +26,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
             "actuator", "piston", "clip gauge", "ave", "video extensometer", "travel",
         ),
         "angle": ("angle", "encoder", "rotation"),
-        "cycle_count": ("cycle", "cycles", "cycle count", "count"),
+        "cycle_count": ("cycle", "cycles", "cycle count", "segment count"),
         "length": ("length", "section length", "measured length", "chain length"),
         "speed": ("speed", "velocity", "chain speed"),
         "segment_force_1": ("segment force 1", "segment 1", "f k1", "fk 1"),

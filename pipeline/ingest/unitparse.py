@@ -46,11 +46,13 @@ _SI_FACTOR_RANGE = {
 #: (``g``: gram-force), as texture analysers and tribometers write it.
 FORCE_ROLES = frozenset({"force", "segment_force_1", "segment_force_2", "side_force"})
 
+#: Units that make a column the machine's cycle (or segment) counter whatever its name
+#: (pint would read ``cycles`` as an angle, a revolution).
+CYCLE_UNITS = frozenset({"cycle", "cycles", "segment", "segments", "zyklen", "cykle", "ciclos"})
+#: A unit of :data:`CYCLE_UNITS`, perhaps with a prefix (``kcycles``: scaled, refused later).
+_COUNTED_CYCLES = re.compile(r"(?:k|m|kilo|mega)?(?:" + "|".join(sorted(CYCLE_UNITS)) + ")")
 #: Units a machine's own counter may carry; the counter is kept as counted.
-COUNTER_UNITS = frozenset(
-    {"", "1", "-", "#", "n", "cycle", "cycles", "segment", "segments", "count", "counts",
-     "zyklen", "cykle", "ciclos"}
-)
+COUNTER_UNITS = CYCLE_UNITS | {"", "1", "-", "#", "n", "count", "counts"}
 
 #: Units-row cells that stand for no unit: Siglent oscilloscopes write ``Value`` over each
 #: channel beside ``Second`` over the time; a Campbell Scientific TOA5 file ``TS`` over its
@@ -227,7 +229,10 @@ def unit_misfits(text: str | None, role: str) -> bool:
 
 
 def unit_role(text: str | None) -> str | None:
-    """The role a unit alone suggests (``"kN"`` -> ``"force"``), or None."""
+    """The role a unit alone suggests (``"kN"`` -> ``"force"``, ``"cycles"`` ->
+    ``"cycle_count"``), or None."""
+    if _COUNTED_CYCLES.fullmatch((text or "").strip().casefold()):
+        return "cycle_count"
     for spelling in spellings(text or ""):
         role = _role_of(spelling)
         if role is not None:

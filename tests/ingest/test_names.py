@@ -31,7 +31,9 @@ from pipeline.ingest.names import (
         ("Winkel", "angle"), ("kąt", "angle"), ("encoder", "angle"),
         ("Total Cycle Count", "cycle_count"), ("Zyklus", "cycle_count"),
         ("cykl", "cycle_count"), ("Channel 1 Recuento", "cycle_count"),
-        ("Machine_N_cycles", "cycle_count"),
+        ("Machine_N_cycles", "cycle_count"), ("Segment Count", "cycle_count"),
+        # a bare count may count anything (a DIC rig's camera frames): its unit decides
+        ("Count", None), ("1000 kN Count", None),
         # a salt-consolidation rig's logger writes its names in camel case
         ("Längung", "gauge"), ("Längenänderung", "gauge"),  # a German wear rig's elongation
         ("SmallLVDT", "gauge"), ("LargeLVDT", "gauge"), ("DilaFBK", None), ("ConfP", None),

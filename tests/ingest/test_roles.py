@@ -21,6 +21,13 @@ def test_unit_gives_the_role_of_an_unknown_name():
     assert candidates(["A", "B"], ["s", "kN"]).roles == {"time": [0], "force": [1]}
 
 
+def test_a_count_is_the_cycle_counter_only_by_its_unit():
+    # a DIC rig's frame index "Count" beside the load; an MTS station's counter in segments
+    found = candidates(["Count", "Load", "Extension", "1000 kN Count", "Count"],
+                       [None, "N", "mm", "segments", "cycles"])
+    assert found.roles == {"force": [1], "gauge": [2], "cycle_count": [3, 4]}
+
+
 def test_the_parts_of_a_clock_reading_take_no_role_from_their_units():
     # a LabVIEW logger's columns: "Minute" in m is minutes, no displacement
     found = candidates(["Time", "Voltage", "Hour", "Minute", "Second"], ["s", "V", "h", "m", "sec"])

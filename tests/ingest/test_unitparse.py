@@ -58,7 +58,10 @@ def test_wrong_dimension():
 @pytest.mark.parametrize(
     ("unit", "role"),
     [("kN", "force"), ("mm", "gauge"), ("s", "time"), ("deg", "angle"), ("%", None),
-     ("mm/s", None), ("", None), (None, None), ("hello world", None)],
+     ("mm/s", None), ("", None), (None, None), ("hello world", None),
+     # a counter's cycles, not revolutions as pint reads them; an MTS station's segments
+     ("cycles", "cycle_count"), ("Cycles", "cycle_count"), ("segments", "cycle_count"),
+     ("rev", "angle"), ("counts", None)],
 )
 def test_unit_role(unit, role):
     assert unit_role(unit) == role
