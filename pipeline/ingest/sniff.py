@@ -852,9 +852,9 @@ def find_table(
             for cell in row[len(names):columns]):
         notes += (f"the names row (line {above + 1}) has {len(names)} names over data rows "
                   f"of {columns} fields: the names are set over the columns from the left, "
-                  f"and {columns - len(names)} column(s) on the right go without one; check that each "
-                  "name stands over its own data (a delimiter missing between two names "
-                  "shifts the names after it)",)
+                  f"and {columns - len(names)} column(s) on the right go without one; check "
+                  "that each name stands over its own data (a delimiter missing between two "
+                  "names shifts the names after it)",)
     names = names + [""] * (columns - len(names))
     labels_over = -1
     if len(labels) < 2 and above >= 1:  # labels over the names (Shimadzu Trapezium)
