@@ -123,7 +123,8 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None,
     part = range(start, head.size)
     if tests:
         data, blocks, part, first_line = _one_test(head, marked, blocks, tests, start,
-                                                   first_line, specimen, header.metadata)
+                                                   first_line, specimen, header.metadata,
+                                                   timed=len(times) == 1)
     same = [block for block in blocks if not block.other]
     header.metadata.preamble["blocks"] = str(1 + sum(block.opens for block in same))
     header.metadata.warnings += [block.note for block in blocks if block.other]
@@ -215,21 +216,24 @@ def _line_before(data: bytes, offset: int) -> tuple[int, str]:
 
 def _one_test(head: Head, marked: _Marked, blocks: list[_Block], tests: list[_Block],
               start: int, first_line: int, specimen: str | int | None,
-              metadata) -> tuple[bytes, list[_Block], range, int]:
-    """Of tests one below the other (`tests`: the later blocks whose time starts again),
-    the one `specimen` names: its part of the marked data (the file from offset `start`
-    on, whose first line `first_line` is the first data row), its later blocks there, and
-    where that part lies in the file (offsets, first line number)."""
+              metadata, timed: bool) -> tuple[bytes, list[_Block], range, int]:
+    """Of tests one below the other (`tests`: the later blocks whose time starts again, or
+    that repeat the names without a time to tell, when not `timed`), the one `specimen`
+    names: its part of the marked data (the file from offset `start` on, whose first line
+    `first_line` is the first data row), its later blocks there, and where that part lies
+    in the file (offsets, first line number)."""
     lines = [test.lines.start for test in tests]
-    if not head.ascii_compatible:  # its offsets in the file are not those of the data
-        raise LayoutError(
-            f"the block of lines {lines[0]} and on starts its time again: the file holds "
-            f"{len(tests) + 1} tests (or a test's steps) one after another",
-            file=head.name, row=lines[0],
-            hint="save the file as UTF-8, or export each test to a file of its own")
+    at = f"line{'s' if len(lines) > 1 else ''} {', '.join(map(str, lines))}"
     said = (f"the file holds {len(tests) + 1} tests (specimens, or a test's steps) one below "
-            f"the other, each timed from its own start: the time starts again at line"
-            f"{'s' if len(lines) > 1 else ''} {', '.join(map(str, lines))}")
+            f"the other, each timed from its own start: the time starts again at {at}"
+            if timed else
+            f"the file holds {len(tests) + 1} tables one below the other, each under its "
+            f"own names (at {at}), and no time column tells one test's blocks from "
+            "several tests (a fibre tester's specimens)")
+    if not head.ascii_compatible:  # its offsets in the file are not those of the data
+        raise LayoutError(said, file=head.name, row=lines[0],
+                          hint="save the file as UTF-8, or export each test to a file of "
+                               "its own")
     chosen = choose([], len(tests) + 1, specimen, said, "from the top", file=head.name,
                     row=lines[0])
     metadata.specimen = str(chosen + 1)
@@ -321,7 +325,8 @@ def _block(spec: TableSpec, first: _FirstBlock, header_text: str, points: memory
             f"{where}: a block of two rows, each column's largest value then its smallest, "
             "is the test's peaks, not samples: left out"))
     time = _number(fields, first.time, spec)
-    restarts = time is not None and first.start_time is not None and time <= first.start_time
+    restarts = (time is not None and first.start_time is not None
+                and time <= first.start_time) or (first.time is None and opens)
     return _Block(start, lines, opens, False, "", restarts)
 
 

@@ -205,6 +205,29 @@ def test_a_press_series_specimens_under_their_results_lines_are_read_one_at_a_ti
     np.testing.assert_allclose(table["time"], 0.5 * np.arange(25))
 
 
+# a Dia-Stron fibre tester's report (its layout; our numbers): each specimen's table
+# under the report's two lines and the names, no time column
+FIBRES = ("Tensile Data Report Version: 1.0\nSource File: C:\\HR_Tensile.uvc\n"
+          "Record\t% Strain\tgmf\t\n{first}\n"
+          "Tensile Data Report Version: 1.0\nSource File: C:\\HR_Tensile.uvc\n"
+          "Record\t% Strain\tgmf\t\n{second}\n")
+
+
+def test_tables_one_below_the_other_without_a_time_are_not_joined(write):
+    # joined, the second fibre read as a second load cycle of the first
+    first, second = (np.arange(30) * 1.5, np.arange(20) * 2.0)
+    rows = ["\n".join(f"{record}\t{0.5 * i:.1f}\t{force:.1f}\t" for i, force in
+                      enumerate(forces)) for record, forces in ((1, first), (2, second))]
+    path = write("Tensile_Data.txt", FIBRES.format(first=rows[0], second=rows[1]))
+    with pytest.raises(SpecimensError) as caught:
+        read_table(path, kind="tensile")
+    assert caught.value.row == 34 and caught.value.message.startswith(
+        "the file holds 2 tables one below the other, each under its own names")
+    table, meta = read_table(path, kind="tensile", specimen=2)
+    np.testing.assert_allclose(table["force"], second * 9.80665e-3)
+    np.testing.assert_allclose(table["strain_1"], 0.005 * np.arange(20))
+
+
 def test_blocks_whose_time_runs_on_are_one_test(write):
     table, meta = read_table(write("blocks.csv", appended(tests=2, points=20, runs_on=True)))
     assert meta.layout == "mts" and meta.preamble["blocks"] == "2" and len(table) == 40
