@@ -561,13 +561,17 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
 
 
 #: Of several candidates for a role, the columns preferred, with why the others are not
-#: used: the testing machine's over a second instrument's; for a time or a count, the whole
-#: test's over one that starts again (a step's, a cycle's, one since a counter's reset);
+#: used: the testing machine's over a second instrument's; for a time, one named so over
+#: one of a time unit only (a thrust stand's ``ESC signal (µs)``, a pulse width); for a
+#: time or a count, the whole test's over one that starts again (a step's, a cycle's, one
+#: since a counter's reset);
 #: for a force, the measured load over one turned to a kind of test's sign, the reading
 #: over a peak held, and one in a unit of force over one without.
 _PREFERRED = (
     (None, lambda raw, at: not is_auxiliary(raw.names[at]),
      "is a second instrument's {role} beside the machine's"),
+    (frozenset({"time"}), lambda raw, at: match_role(raw.names[at]) == "time",
+     "has a unit of time but no name of one, beside a column named as the time"),
     (frozenset({"time", "cycle_count"}), lambda raw, at: says_total(raw.names[at]),
      "is named as one that starts again (a step's, a cycle's, since a reset) beside the "
      "whole test's"),

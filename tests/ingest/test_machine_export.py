@@ -382,6 +382,16 @@ def test_two_times_neither_preferred_are_left_out_of_a_tensile_run_with_a_warnin
         read_table(write("log.csv", text), kind="engagement")
 
 
+def test_a_column_named_as_the_time_is_preferred_to_one_of_a_time_unit_only(write):
+    # a thrust stand's export: the ESC's pulse width in µs is a command, not a clock
+    text = ("Time (s),ESC signal (µs),Thrust (kgf)\n0,1000,0.01\n0.25,1585,0.52\n"
+            "0.5,1650,0.61\n0.75,1065,0.05\n")
+    table, meta = read_table(write("rcb.csv", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], [0.0, 0.25, 0.5, 0.75])
+    assert any(warning.startswith("column 'ESC signal' has a unit of time but no name of "
+                                  "one") for warning in meta.warnings)
+
+
 # the names of a real Instron WaveMatrix tracking export: derived channels are named
 # after the channel they come from ("Stress(...:Load)") or a count ("Cycle Energy")
 TRACKING = ('"Total Time (s)","Total Cycles","Load(8801:Load) (kN)","Stress(8801:Load) (MPa)",'
