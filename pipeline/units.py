@@ -13,6 +13,8 @@ import pint
 ureg = pint.UnitRegistry()
 # Laboratory spellings pint does not know by default.
 ureg.define("@alias kilogram_force = kG = KG")
+# "gmf" (gram-force, as Dia-Stron's fibre testers write it).
+ureg.define("@alias gram_force = gmf")
 # "seg" (Spanish, Portuguese, Italian), "sek" (German, Polish, Scandinavian): seconds.
 ureg.define("@alias second = seg = sek")
 # "rev": revolutions of a rotary stage (a tribometer's Rotary.Position (rev)).

@@ -106,9 +106,13 @@ UNITS_ROW_KEYS = frozenset({"engineering unit", "engineering units", "unit", "un
 #: (not ``s``, which a German export gives a displacement, nor ``min``, a minimum, nor
 #: ``ms``, which a KEYENCE logger gives the milliseconds of its date-time column).
 TIME_UNIT_NAMES = frozenset({"sec", "secs", "seconds", "minutes", "mins", "hours", "hrs"})
+#: Column names of a microcontroller's clock call, folded, and the unit it counts in:
+#: Arduino's ``millis()`` and ``micros()``, an HX711 logger's first column.
+CLOCK_CALL_UNITS = {"millis": "ms", "micros": "µs"}
 #: Column names that are a unit of force, folded: the column holds the force in that unit (a
 #: pull tester's ``Distance, Newtons``). Not ``N`` alone, which may number the samples.
-FORCE_UNIT_NAMES = frozenset({"newton", "newtons", "kilonewton", "kilonewtons", "lbf", "kgf"})
+FORCE_UNIT_NAMES = frozenset({"newton", "newtons", "kilonewton", "kilonewtons", "lbf", "kgf",
+                              "gf", "gmf"})
 #: Units of time a name gives beside ``elapsed`` only (``elapsed_ms``, ``s_elapsed``).
 ELAPSED_UNITS = frozenset({"ms", "s", "min", "h"})
 #: The warning of a file whose decimal comma is also its delimiter.
@@ -214,12 +218,17 @@ def time_unit_named(name: str) -> str | None:
 
     A name that is a unit of time (:data:`TIME_UNIT_NAMES`), alone or beside
     ``elapsed`` (a phone logger's ``seconds_elapsed``; beside ``elapsed``, ``ms``,
-    ``s``, ``min`` and ``h`` are units too): the column holds the time in it.
+    ``s``, ``min`` and ``h`` are units too): the column holds the time in it. So does
+    a microcontroller's clock call (:data:`CLOCK_CALL_UNITS`), in its unit.
 
     >>> time_unit_named("seconds_elapsed"), time_unit_named("elapsed_ms"), time_unit_named("ms")
     ('seconds', 'ms', None)
+    >>> time_unit_named("millis()")
+    'ms'
     """
     words = re.findall(r"[^\W_]+", name)
+    if len(words) == 1 and fold(words[0]) in CLOCK_CALL_UNITS:
+        return CLOCK_CALL_UNITS[fold(words[0])]
     unit = [word for word in words if fold(word) != "elapsed"]
     units = TIME_UNIT_NAMES | (ELAPSED_UNITS if len(unit) < len(words) else frozenset())
     if len(unit) == 1 and fold(unit[0]) in units and len(words) <= 2:

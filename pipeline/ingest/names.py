@@ -18,8 +18,8 @@ from pipeline.ingest.unitparse import spellings
 COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
     "en": {
         "time": ("time", "elapsed time", "test time", "hours", "operating hours", "timestamp",
-                 "time stamp", "seconds", "minutes"),
-        "force": ("force", "load", "tension"),
+                 "time stamp", "seconds", "minutes", "duration"),
+        "force": ("force", "load", "tension", "thrust"),
         "gauge": (
             "extension", "displacement", "disp", "gauge", "elongation", "extensometer", "ext",
             "deflection", "position", "stroke", "crosshead", "lvdt", "dial", "strain",
@@ -184,18 +184,23 @@ TRANSVERSE_NAMES = (
 )
 #: Words of a channel that holds what the controller asked for (a setpoint, a command),
 #: not what a sensor measured: ``"Ch 1 Kraft Sollwert"``, ``"Load Command"``,
-#: ``"Valeur de consigne"``, a controller's ``"a1 torque cmd"``. Such a column takes no role,
-#: wherever the word stands.
+#: ``"Valeur de consigne"``, a controller's ``"a1 torque cmd"``; or a setting of the
+#: amplifier (a DAQ table's ``"gain load"``, a sensitivity, a calibration factor). Such a
+#: column takes no role, wherever the word stands.
 COMMAND_NAMES = ("sollwert", "soll", "setpoint", "set point", "command", "cmd", "demand",
-                 "target", "consigne", "commande", "consigna", "zadana")
+                 "target", "consigne", "commande", "consigna", "zadana", "gain",
+                 "sensitivity", "calibration", "verstärkung", "empfindlichkeit")
 #: Words of a channel the machine's software worked out from others, not one a sensor
 #: measured: WaveMatrix's ``"Elastic Strain(Static Plastic & Elastic Strain
 #: Calculation)"``, a strain split into its elastic part (the stress over an assumed
-#: modulus) and its plastic rest. Such a column takes no role: a stiffness fitted to it
+#: modulus) and its plastic rest; a true (logarithmic) strain, ln(1 + e), 30 % below the
+#: engineering strain at 100 %. Such a column takes no role: a stiffness fitted to it
 #: returns the modulus it was computed with.
 DERIVED_NAMES = ("calculation", "berechnung", "calcul", "cálculo", "calcolo", "obliczenia",
                  "elastic strain", "plastic strain", "elastische dehnung",
-                 "plastische dehnung", "déformation élastique", "déformation plastique")
+                 "plastische dehnung", "déformation élastique", "déformation plastique",
+                 "true strain", "log strain", "logarithmic strain", "hencky strain",
+                 "wahre dehnung", "logarithmische dehnung", "déformation vraie")
 #: Names of an air's humidity, logged in % beside the channels (a climate chamber's ``RH``):
 #: no strain, whatever its unit says.
 HUMIDITY_NAMES = ("rh", "humidity", "relative humidity", "feuchte", "luftfeuchte",
@@ -250,7 +255,8 @@ OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points 
                         "acceleration", "accel", "beschleunigung", "accélération",
                         "aceleración", "aceleração", "accelerazione", "mises strain",
                         "von mises strain", "equivalent strain", "effective strain",
-                        "shear strain", "vergleichsdehnung", "torque", "drehmoment",
+                        "shear strain", "vergleichsdehnung", "cop", "center of pressure",
+                        "centre of pressure", "torque", "drehmoment",
                         "moment obrotowy", "momento torsor", "couple moteur", "扭矩", "トルク",
                         "토크", "крутящий момент")
 #: The labels of :data:`TRANSVERSE_NAMES` and :data:`OTHER_QUANTITY_NAMES` among the role
@@ -264,6 +270,8 @@ _BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^(
 #: A sensor's serial number in brackets after a name and its unit (HOBOware's
 #: ``Temp, °C (LGR S/N: 10694967)``): no unit.
 _SERIAL = re.compile(r"\b(?:S/N|SN|serial)\b", re.IGNORECASE)
+#: A percent sign before a name (a fibre tester's ``% Strain``, ``% Elongation``): its unit.
+_PERCENT_FIRST = re.compile(r"%\s*(?P<name>[^\W\d_].*)")
 #: A unit after a comma (``Temp, °C``, ``Нагрузка, кН``): one word, no number.
 _COMMA_UNIT = re.compile(r"(?P<name>.*\S),\s+(?P<unit>[^\s\d]\S*)")
 #: The run label PASCO Capstone writes after a column's unit (``Force (N) Run #1``,
@@ -313,7 +321,8 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
         A names-row cell, e.g. ``"force [kN]"``, ``"Load (N)"``, ``"KRAFT <N>"``,
         ``"Kraft / kN"`` (ISO 80000 quantity / unit), ``"Нагрузка, кН"`` (after a comma),
         ``"荷重【kN】"``, ``"Force (N) Run #1"`` (the run label kept in the name),
-        ``"Temp, °C (LGR S/N: 1069)"`` (a serial number kept in the name) or ``"Time"``.
+        ``"Temp, °C (LGR S/N: 1069)"`` (a serial number kept in the name), ``"% Strain"``
+        or ``"Time"``.
 
     Returns
     -------
@@ -322,7 +331,7 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
     unit : str or None
         The text inside trailing ``[...]``, ``(...)``, ``<...>``, ``【...】`` or full-width
         parentheses ``（...）``, or after `` / `` (or a single ``/``) or a comma when pint
-        reads it as a unit; None when there is none.
+        reads it as a unit, or a percent sign before the name; None when there is none.
     """
     text = header_text(header)
     label = _RUN_LABEL.search(text)
@@ -347,6 +356,9 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
     match = _COMMA_UNIT.fullmatch(text)
     if match is not None and spellings(match["unit"]):
         return match["name"], match["unit"]
+    match = _PERCENT_FIRST.fullmatch(text)
+    if match is not None:
+        return match["name"], "%"
     return text, None
 
 

@@ -34,6 +34,10 @@ from pipeline.ingest.names import (
         ("Machine_N_cycles", "cycle_count"), ("Segment Count", "cycle_count"),
         # a bare count may count anything (a DIC rig's camera frames): its unit decides
         ("Count", None), ("1000 kN Count", None),
+        # a true strain is worked out (ln(1 + e)); a DAQ table's amplifier gains, a force
+        # plate's centre of pressure are no measurements
+        ("True Strain", None), ("Engineering Strain", "gauge"), ("gain load", None),
+        ("Sensitivity", None), ("FP1_COP_X", None), ("Thrust", "force"), ("Duration", "time"),
         # a salt-consolidation rig's logger writes its names in camel case
         ("Längung", "gauge"), ("Längenänderung", "gauge"),  # a German wear rig's elongation
         ("SmallLVDT", "gauge"), ("LargeLVDT", "gauge"), ("DilaFBK", None), ("ConfP", None),
@@ -124,6 +128,8 @@ def test_every_listed_name_matches_its_own_role():
         ("Host Connected (LGR S/N: 10694967)", ("Host Connected (LGR S/N: 10694967)", None)),
         ("Date Time, GMT-06:00", ("Date Time, GMT-06:00", None)),
         ("Force, total", ("Force, total", None)), ("Channel, 1", ("Channel, 1", None)),
+        # a fibre tester writes the percent sign first
+        ("% Strain", ("Strain", "%")), ("%Elongation", ("Elongation", "%")), ("%", ("%", None)),
     ],
 )
 def test_split_name_unit(cell, expected):

@@ -172,6 +172,14 @@ def test_a_column_named_by_a_unit_of_time_holds_the_time_in_it(write):
     assert not any("from its name" in w for w in other.warnings)  # "s": a German travel
 
 
+def test_an_arduino_clock_call_names_the_time_and_its_unit(write):
+    # an HX711 thrust stand's serial log: millis() beside the thrust in grams (its weight)
+    text = "millis,Thrust (g)\n1278,-0.1\n1373,12.4\n1468,25.0\n"
+    table, meta = read_table(write("thrust.csv", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], [1.278, 1.373, 1.468])
+    np.testing.assert_allclose(table["force"], np.array([-0.1, 12.4, 25.0]) * 9.80665e-3)
+    assert "column 'millis': unit 'ms' from its name" in meta.warnings
+
 
 def test_a_unit_of_time_beside_elapsed_in_a_name(write):
     # a real phone-logger export (Sensor Logger): epoch nanoseconds beside seconds elapsed

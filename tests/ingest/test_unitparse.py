@@ -38,6 +38,8 @@ def factor(text, role):
         # Chinese unit names
         ("秒", "time", 1.0), ("毫秒", "time", 1e-3), ("千牛", "force", 1e3), ("牛", "force", 1.0),
         ("毫米", "gauge", 1e-3), ("微米", "gauge", 1e-6),
+        # a fibre tester's gram-force
+        ("gmf", "force", 1e-3 * STANDARD_GRAVITY), ("gf", "force", 1e-3 * STANDARD_GRAVITY),
     ],
 )
 def test_si_factor(unit, role, expected):
