@@ -326,7 +326,7 @@ def _block(spec: TableSpec, first: _FirstBlock, header_text: str, points: memory
             "is the test's peaks, not samples: left out"))
     time = _number(fields, first.time, spec)
     restarts = (time is not None and first.start_time is not None
-                and time <= first.start_time) or (first.time is None and opens)
+                and time <= first.start_time) or (first.time is None and opens and bool(rows))
     return _Block(start, lines, opens, False, "", restarts)
 
 

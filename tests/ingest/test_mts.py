@@ -226,6 +226,10 @@ def test_tables_one_below_the_other_without_a_time_are_not_joined(write):
     table, meta = read_table(path, kind="tensile", specimen=2)
     np.testing.assert_allclose(table["force"], second * 9.80665e-3)
     np.testing.assert_allclose(table["strain_1"], 0.005 * np.arange(20))
+    # a logger that writes its names again as the last line, no rows under them: one table
+    once = FIBRES.split("Tensile Data Report")[0] + FIBRES.format(first=rows[0], second="")
+    table, _ = read_table(write("once.txt", once.rstrip("\n") + "\n"), kind="tensile")
+    np.testing.assert_allclose(table["force"], first * 9.80665e-3)
 
 
 def test_blocks_whose_time_runs_on_are_one_test(write):
