@@ -768,7 +768,8 @@ def find_table(
                               hint="check the file's delimiter and decimal mark")
         limit *= 4
     while (data > 0 and kinds[data - 1] in _DATA_KINDS
-           and _units_beside_numbers(rows[data - 1], decimal) is None):
+           and _units_beside_numbers(rows[data - 1], decimal) is None
+           and not _names_with_numbers(rows[data - 1], kinds[data - 1], decimal, width)):
         data -= 1
     above = _above(kinds, data)
     labels = _specimen_labels(rows, kinds, above)
@@ -801,7 +802,11 @@ def find_table(
     if units_index is None and above >= 1 and all(
             _SETTING.match(lines[index]) for index in (above - 1, above)):
         preamble_end, above = data, -1  # the last of a block of settings: no names row
-    if above >= 0 and kinds[above] != "text" and units_index is None:
+    if above >= 0 and _names_with_numbers(rows[above], kinds[above], decimal, width):
+        notes += (f"line {above + 1}: the names row holds numbers among its names ("
+                  + ", ".join(repr(cell.strip()) for cell in rows[above]
+                              if is_number(cell, decimal)) + "): read as names",)
+    elif above >= 0 and kinds[above] != "text" and units_index is None:
         raise _no_names_row(name, data, delimiter)
     names_line = lines[above] if above >= 0 else ""
     if names_line.startswith(COMMENT_MARK):  # a names row written as a comment
@@ -878,6 +883,9 @@ def find_table(
     if specimens:  # names and units written over the first specimen's columns only
         names, units = _each_specimen(names, specimens), _each_specimen(units, specimens)
     notes += _settings_beside(rows[data:], decimal, columns, data)
+    texts = frozenset() if pairs else _text_columns(rows[data:], kinds[data:], columns, decimal)
+    if not clocks and not any(match_role(name) == "time" for name in names):
+        notes += _labels_of_rows(rows[data:], kinds[data:], texts, names)
     return TableSpec(
         delimiter=delimiter,
         decimal="," if pairs else decimal,
@@ -894,8 +902,7 @@ def find_table(
         pairs=pairs,
         clocks=clocks,
         results=results,
-        texts=frozenset() if pairs else _text_columns(rows[data:], kinds[data:], columns,
-                                                      decimal),
+        texts=texts,
         notes=notes,
         specimens=specimens,
     )
@@ -955,6 +962,36 @@ def _text_columns(rows: list[list[str]], kinds: list[str], columns: int, decimal
             is_number(row[index], decimal) or is_missing(row[index])
             or clock_kind(row[index]) is not None)}
     return frozenset(texts) if len(data) >= 2 else frozenset()  # one bad row is a bad cell
+
+
+def _names_with_numbers(row: list[str], kind: str, decimal: str, width: int) -> bool:
+    """Whether `row`, of `kind` ``"partial"`` (numbers among text), is a names row with
+    numbers among its names (a logger's column named ``0``): more names than numbers,
+    two names at least, and no wider than the data's `width`."""
+    if kind != "partial" or len(row) > width:
+        return False
+    numbers = sum(is_number(cell, decimal) for cell in row)
+    names = sum(not (is_number(cell, decimal) or is_missing(cell)) for cell in row)
+    return names >= 2 and names > numbers
+
+
+def _labels_of_rows(rows: list[list[str]], kinds: list[str], texts: frozenset[int],
+                    names: list[str]) -> tuple[str, ...]:
+    """The warning of a text column (of `texts`) that gives each of the head's first data
+    `rows`, three at least, a label of its own, in a table without a time: such rows are
+    likely specimens (a table of results or settings, a DAQ's gains per specimen), not
+    the samples of one test."""
+    data = [row for row, kind in zip(rows, kinds, strict=False) if kind == "numeric"
+            ][:TEXT_ROWS]
+    for index in sorted(texts):
+        cells = [row[index].strip() for row in data]
+        if len(cells) >= 3 and len(set(cells)) == len(cells):
+            name = names[index].strip() or f"column {index + 1}"
+            shown = ", ".join(map(repr, cells[:3]))
+            return (f"column {name!r} gives each row a label of its own ({shown}...) and no "
+                    "column is a time: the rows may be specimens (a table of results or "
+                    "settings), not the samples of one test",)
+    return ()
 
 
 def _past_results(rows: list[list[str]], kinds: list[str], width: int, data: int,

@@ -172,6 +172,22 @@ def test_a_column_named_by_a_unit_of_time_holds_the_time_in_it(write):
     assert not any("from its name" in w for w in other.warnings)  # "s": a German travel
 
 
+def test_rows_labelled_one_by_one_without_a_time_are_told_as_specimens(write):
+    # a lab's table of specimens (a DAQ's settings or a batch's results), not one test
+    text = ("name,Peak load (N),Displacement at peak (mm)\n"
+            "H1167L,400,0.3\nH1168R,420,0.35\nH1260R,500,2\n")
+    _, meta = read_table(write("specimens.csv", text), kind="tensile")
+    assert meta.warnings[0].startswith(
+        "column 'name' gives each row a label of its own ('H1167L', 'H1168R', 'H1260R'...) "
+        "and no column is a time")
+    # a status that repeats, or labels beside a time, are a log's
+    status = "state,Load (N),Extension (mm)\nRUN,1,0.1\nRUN,2,0.2\nHOLD,2,0.2\n"
+    tagged = "tag,Time (s),Load (N),Extension (mm)\na,0,1,0.1\nb,1,2,0.2\nc,2,3,0.3\n"
+    for text in (status, tagged):
+        _, meta = read_table(write("log.csv", text), kind="tensile")
+        assert not any("label of its own" in warning for warning in meta.warnings)
+
+
 def test_an_arduino_clock_call_names_the_time_and_its_unit(write):
     # an HX711 thrust stand's serial log: millis() beside the thrust in grams (its weight)
     text = "millis,Thrust (g)\n1278,-0.1\n1373,12.4\n1468,25.0\n"

@@ -178,6 +178,19 @@ def test_trailing_delimiter_pads_names(tmp_path):
     assert not spec.notes  # the column on the right is empty
 
 
+@pytest.mark.parametrize("lines", [
+    ["time [s],force [N],0,angle [rad]", "0.000,1.0,0,0.1", "0.001,1.1,0,0.2"],
+    ["# Test started", "time [s],force [N],0,angle [rad]", "0.000,1.0,0,0.1", "0.001,1.1,0,0.2"],
+])
+def test_a_number_among_the_names_leaves_them_the_names_row(tmp_path, lines):
+    # a rig's logger named one column "0": its names row is no data row with a bad cell
+    spec = find_table(lines, tmp_path, ",", ".", 4)
+    assert spec.names == ["time [s]", "force [N]", "0", "angle [rad]"]
+    assert spec.data_index == len(lines) - 2
+    assert (f"line {len(lines) - 2}: the names row holds numbers among its names ('0'): "
+            "read as names") in spec.notes
+
+
 def test_data_wider_than_its_names_is_told(tmp_path):
     # a rig's log whose names row lost a delimiter: names and data may not line up
     spec = find_table(["t [s],f [N],angle [rad]", "0.0,1.0,10.0,0.1", "0.1,1.1,10.1,0.2"],
