@@ -31,7 +31,14 @@ from pipeline.ingest import (
     xlsx,
 )
 from pipeline.ingest.raw import RawTable
-from pipeline.ingest.sniff import Head, TableSpec, detect_dialect, find_table, read_head
+from pipeline.ingest.sniff import (
+    Head,
+    TableSpec,
+    detect_dialect,
+    find_table,
+    read_head,
+    refuse_document,
+)
 from pipeline.ingest.source import Source
 
 #: Text layouts, in the order they are tried on a file (an Instron Merlin export, a LabVIEW
@@ -106,6 +113,7 @@ def sniff(source: Source, format: str = "auto") -> Sniffed:
     for known in (lvm, catman, rigol, tektronix, gwinstek):  # known by their first lines
         if layout == known.LAYOUT or (layout == "csv" and known.matches(head)):
             return Sniffed(known.LAYOUT, head, known.table_spec(head))
+    refuse_document(head.lines, source.name)
     delimiter, decimal, width = detect_dialect(head.lines, source.name)
     spec = find_table(head.lines, source.name, delimiter, decimal, width)
     if layout == "csv":

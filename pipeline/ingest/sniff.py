@@ -518,6 +518,30 @@ def read_head(source: Source, size: int = HEAD_BYTES) -> Head:
     return Head(source, encoding, codec, lines, offsets, complete)
 
 
+#: The start of a structured document that is no table: a JSON object or array of
+#: records (a screwdriver's curve export), an XML document.
+_DOCUMENTS = {"JSON": re.compile(r'\s*(?:\{\s*"|\[\s*[{\["])'),
+              "XML": re.compile(r"\s*<\?xml\b")}
+
+
+def refuse_document(lines: list[str], name: str) -> None:
+    """Refuse a text file that is a structured document (:data:`_DOCUMENTS`), not a table,
+    before its braces or tags are taken for a table's rows.
+
+    Raises
+    ------
+    LayoutError
+        If the head's `lines` open a JSON or XML document.
+    """
+    text = "\n".join(lines[:5])
+    kind = next((kind for kind, start in _DOCUMENTS.items() if start.match(text)), None)
+    if kind is not None:
+        raise LayoutError(
+            f"the file is a {kind} document, not a table of columns", file=name, row=1,
+            hint="export the test's channels as a CSV or text table (time, force, "
+                 "displacement side by side)")
+
+
 def detect_dialect(
     lines: list[str], name: str, delimiters: tuple[str, ...] = DELIMITERS
 ) -> tuple[str, str, int]:

@@ -5,6 +5,7 @@ import codecs
 import pytest
 
 from pipeline.errors import EmptyFileError, EncodingError, LayoutError
+from pipeline.ingest import read_table
 from pipeline.ingest.sniff import (
     HEAD_BYTES,
     detect_dialect,
@@ -130,6 +131,18 @@ def test_empty(write, content, message):
 )
 def test_dialect(lines, dialect, tmp_path):
     assert detect_dialect(lines, tmp_path) == dialect
+
+
+@pytest.mark.parametrize(("text", "kind"), [
+    ('{"format":"channel","nr":1,"tightening steps":[{"graph":{"time values":[0.0,0.001]}}]}',
+     "JSON"),
+    ('[\n  {\n    "time": 0.0,\n    "torque": 1.5\n  },\n  {"time": 0.001}\n]\n', "JSON"),
+    ('<?xml version="1.0"?>\n<test><point t="0.0" f="1,5"/></test>\n', "XML"),
+])
+def test_a_structured_document_is_refused_as_such(write, text, kind):
+    # a screwdriver's curve export: its braces and commas are no table's rows
+    with pytest.raises(LayoutError, match=f"the file is a {kind} document, not a table"):
+        read_table(write("curve.txt", text))
 
 
 def test_header_only_is_empty(tmp_path):
