@@ -256,7 +256,8 @@ def settle(
     if kind == "tensile":
         _warn_unnamed_strains(raw, empty)
     if kind in ("tensile", "wear"):  # the runs whose gauges are measured
-        _warn_gauges_by_unit_alone(raw, assigned.get("gauge", []))
+        _warn_by_unit_alone(raw, "gauge", assigned.get("gauge", []))
+    _warn_by_unit_alone(raw, "force", assigned.get("force", []))
     canonical = _canonical_names(assigned, strains)
     columns = tuple((index, canonical[index], factors[index]) for role in ROLES
                     for index in assigned.get(role, []) if index in factors)
@@ -298,20 +299,32 @@ def _warn_unnamed_strains(raw: RawColumns, empty: set[int]) -> None:
                 f"run sheet, columns = {{gauges = [\"{shown}\"]}}{given})")
 
 
-def _warn_gauges_by_unit_alone(raw: RawColumns, gauges: list[int]) -> None:
-    """Warn of each gauge column taken as one by its unit alone, its name not one the readers
-    know (a logger's ``Ch 2 (mm)``, but also a force plate's centre of pressure ``Ax (m)``,
-    a rig's ``DilaFBK (in)``): unless the run sheet names the gauges."""
-    if "gauge" in raw.candidates.explicit:
+#: What a column taken for `role` by its unit alone may be instead, and the run-sheet key
+#: that names the right one (:func:`_warn_by_unit_alone`).
+_BY_UNIT_ALONE = {
+    "gauge": ("a gauge", "no length along the specimen (a position, a level, a feedback)",
+              "gauges = [...]"),
+    "force": ("the force", "not the load on the specimen (a reaction, a second load cell)",
+              'force = "..."'),
+}
+
+
+def _warn_by_unit_alone(raw: RawColumns, role: str, columns: list[int]) -> None:
+    """Warn of each of `columns` taken for `role` (a gauge, the force) by its unit alone,
+    its name not one the readers know (a logger's ``Ch 2 (mm)``, but also a force plate's
+    centre of pressure ``Ax (m)``, a rig's ``DilaFBK (in)``; a nanoindenter's ``Zzz
+    (µN)``): unless the run sheet names the role's columns."""
+    if role in raw.candidates.explicit:
         return
-    for index in gauges:
+    taken, instead, key = _BY_UNIT_ALONE[role]
+    for index in columns:
         if match_role(raw.names[index]) is None:
             shown = display_name(raw.names, index)
             raw.metadata.warnings.append(
-                f"column {shown!r} is read as a gauge by its unit {raw.units[index]!r} alone, "
-                "its name not one the readers know: if it is no length along the specimen "
-                "(a position, a level, a feedback), name the gauges in the run sheet, "
-                "columns = {gauges = [...]}")
+                f"column {shown!r} is read as {taken} by its unit {raw.units[index]!r} alone, "
+                f"its name not one the readers know: if it is {instead}, name "
+                f"{'the gauges' if role == 'gauge' else 'the force'} in the run sheet, "
+                f"columns = {{{key}}}")
 
 
 def _refuse_a_table_of_peaks(raw: RawColumns) -> None:

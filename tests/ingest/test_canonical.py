@@ -321,4 +321,17 @@ def test_a_gauge_taken_by_its_unit_alone_is_warned_of(write, kind):
     assert not any("'Extension' is read as a gauge" in warning for warning in meta.warnings)
     _, named = read_table(write("named.csv", text), kind=kind,
                           columns={"gauges": ["Ax", "Extension"]})
+    assert not any("read as a gauge by its unit" in warning for warning in named.warnings)
+
+
+@pytest.mark.parametrize("kind", ["tensile", "engagement"])
+def test_a_force_taken_by_its_unit_alone_is_warned_of(write, kind):
+    # a nanoindenter's or a force plate's channel named by a letter code, in µN or N
+    text = "time [s],Zzz [µN],Extension [mm]\n" + rows((0, 1, 2), (1, 2, 3))
+    _, meta = read_table(write("indent.csv", text), kind=kind)
+    assert ("column 'Zzz' is read as the force by its unit 'µN' alone, its name not one the "
+            "readers know: if it is not the load on the specimen (a reaction, a second load "
+            "cell), name the force in the run sheet, columns = {force = \"...\"}"
+            ) in meta.warnings
+    _, named = read_table(write("indent.csv", text), kind=kind, columns={"force": "Zzz"})
     assert not any("by its unit" in warning for warning in named.warnings)
