@@ -96,6 +96,34 @@ def sample_rate(table: pd.DataFrame) -> float | None:
     return float(1.0 / np.median(steps)) if steps.size else None
 
 
+#: How far the mean time step (gaps left out) may lie from the median one before the rate
+#: shown, the median's, is said to be one of bursts or pauses.
+UNEVEN_STEPS = 1.5
+
+
+def uneven_steps(table: pd.DataFrame) -> str | None:
+    """A warning when the log's time steps (the gaps the reader reports left out) average
+    far from their median: rows sent in bursts (a logger's three readings a millisecond
+    apart, then a pause) make the median step's rate (:func:`sample_rate`) no rate of
+    the log."""
+    from pipeline.ingest.table import GAP_FACTOR
+
+    if "time" not in table:
+        return None
+    steps = np.diff(table["time"].to_numpy(dtype=float))
+    steps = steps[steps > 0]
+    if steps.size < 2:
+        return None
+    median = float(np.median(steps))
+    mean = float(np.mean(steps[steps <= GAP_FACTOR * median]))
+    if 1 / UNEVEN_STEPS <= mean / median <= UNEVEN_STEPS:
+        return None
+    return (f"the time steps are uneven: the median step gives {1 / median:.4g} Hz, their "
+            f"mean {1 / mean:.4g} Hz (steps from {steps.min():.3g} s to {steps.max():.3g} s): "
+            "the rows come in bursts or at irregular times, and the sample rate shown is the "
+            "median step's")
+
+
 def slow_for_impacts(rate: float | None) -> str | None:
     """A warning when an engagement log's sampling rate `rate` [Hz] is below the advised
     one (:data:`~pipeline.condition.engagement.ADVISED_SAMPLE_RATE`), else None."""
@@ -128,6 +156,7 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
     duplicates, copies = derived(table, metadata)
     kinds = {column.name: column.kind for column in metadata.columns if column.role}
     rate = sample_rate(table)
+    warnings += filter(None, [uneven_steps(table)])
     sources = {name: copy.source for name, copy in copies.items()} | duplicates
     return {
         "file": metadata.file,

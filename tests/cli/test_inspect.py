@@ -54,6 +54,19 @@ def test_the_sampling_rate_is_shown_and_an_engagement_log_too_slow_for_impacts_w
     assert inspect_json("--kind", "engagement", str(fast))["warnings"] == []
 
 
+def test_rows_sent_in_bursts_are_told_beside_the_median_steps_rate(tmp_path):
+    # a logger sending three readings 1 ms apart every 10 ms: 300 Hz, not the median's 1 kHz
+    times = [10e-3 * (i // 3) + 1e-3 * (i % 3) for i in range(60)]
+    path = tmp_path / "bursts.csv"
+    path.write_text("time [s],force [kN]\n" + "".join(
+        f"{time:.4f},{load}\n" for time, load in zip(times, LOAD, strict=True)))
+    report = inspect_json("--kind", "engagement", str(path))
+    assert report["sample_rate_hz"] == pytest.approx(1000.0)
+    mean_step = (times[-1] - times[0]) / (len(times) - 1)
+    assert (f"the time steps are uneven: the median step gives 1000 Hz, their mean "
+            f"{1 / mean_step:.4g} Hz") in report["warnings"][0]
+
+
 def test_a_counter_that_skips_cycles_is_named(tmp_path):
     # a real fatigue log's counter: cycles 0 to 3 logged, then 110
     path = tmp_path / "fatigue.csv"
