@@ -715,15 +715,20 @@ def _numeric_row(row: list[str], decimal: str, blanks: bool = False) -> bool:
 
 
 def _split_at_decimal_commas(row: list[str]) -> bool:
-    """Whether `row`, split at commas, is a row of a table aligned by blanks with decimal
-    commas (``0,133656  -0,004617`` -> ``0``, ``133656  -0``, ``004617``): a cell holds
-    two numbers apart by blanks, not one grouped in thousands (``1 234``)."""
+    """Whether `row`, split at commas, is a row of a table with decimal commas whose
+    delimiter is another: a cell holds two whole numbers apart by blanks, not one grouped
+    in thousands (``1 234``), as a table aligned by blanks gives (``0,133656  -0,004617``
+    -> ``0``, ``133656  -0``, ``004617``), or joined by a semicolon, tab or bar (a
+    spreadsheet's ``0,0;1.017,11`` -> ``0``, ``0;1.017``, ``11``)."""
     return any((match := _NUMBERS_APART.fullmatch(cell)) and (
-        len(match["blanks"]) > 1 or match["sign"] or len(match["last"]) != 3) for cell in row)
+        match["blanks"] is None or len(match["blanks"]) > 1 or match["sign"]
+        or len(match["last"]) != 3) for cell in row)
 
 
-#: Two whole numbers apart by blanks, the second perhaps signed.
-_NUMBERS_APART = re.compile(r" *[-+]?\d+(?P<blanks> +)(?P<sign>[-+]?)(?P<last>\d+) *")
+#: Two whole numbers (the second perhaps with a decimal point) apart by blanks, the second
+#: perhaps signed, or joined by another delimiter.
+_NUMBERS_APART = re.compile(r" *[-+]?\d+(?:(?P<blanks> +)(?P<sign>[-+]?)(?P<last>\d+)"
+                            r"|[;\t|] *[-+]?\d+(?:\.\d+)?) *")
 
 #: A delimiter inside a cell: a clock reading there is part of a row split at the wrong
 #: delimiter (``38354132;11:02:46;2`` of ``38354132;11:02:46;2,8;0,0`` split at its commas).

@@ -49,12 +49,21 @@ POOL = pa.system_memory_pool()
 _INVALID = re.compile(r"column #(\d+).*invalid value '(.*)'", re.DOTALL)
 _WRONG_WIDTH = re.compile(r"Expected \d+ columns, got \d+: (.*)", re.DOTALL)
 #: A number with thousands separators, by decimal mark: ``1,004.80328`` (Bluehill's quoted
-#: forces); with decimal commas, a whole number only (``1.056`` ms: a spreadsheet's in a
-#: German locale), read so only in a column without decimals (:func:`_with_thousands`).
+#: forces), ``1'017.11`` (a Swiss locale's); with decimal commas, grouped by points before
+#: its decimals (``1.017,11``: a spreadsheet's in a German locale) or by blanks (``1 017,11``,
+#: a French one's, with a no-break space), and a whole number grouped by points (``1.056``
+#: ms), read so only in a column where a cell shows the points to group
+#: (:func:`_with_thousands`). Python's and RE2's regular expressions alike.
+_BLANKS_GROUPING = "[ \u00a0\u202f]"
 _THOUSANDS = {
-    ".": re.compile(r"[+-]?\d{1,3}(?:,\d{3})+(?:\.\d*)?(?:[eE][+-]?\d+)?"),
-    ",": re.compile(r"[+-]?\d{1,3}(?:\.\d{3})+"),
+    ".": re.compile(r"[+-]?\d{1,3}(?:(?:,\d{3})+|(?:'\d{3})+)(?:\.\d*)?(?:[eE][+-]?\d+)?"),
+    ",": re.compile(r"[+-]?\d{1,3}(?:(?:\.\d{3})+|(?:" + _BLANKS_GROUPING + r"\d{3})+)(?:,\d*)?"),
 }
+#: The thousands separators removed, by decimal mark.
+_GROUPING = {".": (",", "'"), ",": (".", " ", "\u00a0", "\u202f")}
+#: A cell of points grouping thousands before a decimal comma: the points are no decimal
+#: marks in its column (``1.017,11``).
+_GROUPED_DECIMALS = r"\d\.\d{3}(?:\.\d{3})*,"
 #: A run of blanks between the fields of a table aligned by blanks, and blanks around a line.
 _BLANK_RUN = re.compile(rb"[ \t]+")
 _BLANKS_AROUND_A_LINE = re.compile(rb"(?m)^[ \t]+|[ \t]+(?=\r?$)")
@@ -505,7 +514,6 @@ def _with_thousands(body: pa.NativeFile, read_options: pacsv.ReadOptions,
         (with decimal commas) a column with grouped cells holds decimals: ``1.784`` beside
         ``0,012`` is a decimal point among commas, not a thousand.
     """
-    separator = "," if decimal == "." else "."
     convert_options.column_types = (dict(convert_options.column_types)
                                     | dict.fromkeys(labels, pa.string()))
     with body as source:
@@ -514,15 +522,19 @@ def _with_thousands(body: pa.NativeFile, read_options: pacsv.ReadOptions,
     for label in labels:
         position = table.schema.get_field_index(label)
         text = table.column(position)
-        grouped = pc.match_substring(text, separator)
+        grouped = pc.match_substring_regex(
+            text, "[" + "".join(re.escape(mark) for mark in _GROUPING[decimal]) + "]")
         if pc.any(pc.and_kleene(grouped, pc.invert(pc.match_substring_regex(
                 text, f"^{_THOUSANDS[decimal].pattern}$")))).as_py():
-            raise pa.ArrowInvalid(f"column {label}: a {separator!r} in a number that is not a "
+            raise pa.ArrowInvalid(f"column {label}: a separator in a number that is not a "
                                   "thousands separator")
-        if decimal != "." and pc.any(grouped).as_py() and pc.any(
-                pc.match_substring(text, decimal)).as_py():
+        if decimal != "." and pc.any(pc.match_substring(text, ".")).as_py() and pc.any(
+                pc.match_substring(text, decimal)).as_py() and not pc.any(
+                pc.match_substring_regex(text, _GROUPED_DECIMALS)).as_py():
             raise pa.ArrowInvalid(f"column {label}: grouped whole numbers beside decimals")
-        ungrouped = pc.replace_substring(text, separator, "")
+        ungrouped = text
+        for mark in _GROUPING[decimal]:
+            ungrouped = pc.replace_substring(ungrouped, mark, "")
         if decimal != ".":
             ungrouped = pc.replace_substring(ungrouped, decimal, ".")
         numbers = pc.cast(ungrouped, pa.float64())
@@ -600,6 +612,9 @@ def _bad_cell(
         f"the file's decimal mark is {decimal!r} but this cell uses {other!r}: "
         "re-export with one decimal mark"
         if is_number(cell, other)
+        else "the number is grouped in thousands in a form not read here (a no-break space "
+             "is read in a file saved as UTF-8 only): save the file as UTF-8, or its numbers "
+             "without grouping" if _THOUSANDS[decimal].fullmatch(cell.strip())
         else cell_hint(cell, "fix or delete the cell (missing values may be left empty or "
                              "written NaN)")
     )

@@ -130,9 +130,8 @@ def test_thousands_separated_by_points_in_a_file_of_decimal_commas(write, reader
     np.testing.assert_allclose(table["force"], -3.5 - 0.001 * np.arange(60), rtol=1e-12)
 
 
-@pytest.mark.parametrize("cell", ["1.05", "1.001,5", "1.0045"])
+@pytest.mark.parametrize("cell", ["1.05", "1.0045"])
 def test_a_point_that_is_no_thousands_separator_is_still_refused(write, cell):
-    # "1.001,5": a thousand with decimals in a column of whole numbers is not guessed
     text = excel_german(60).replace("\n1.001;", f"\n{cell};")
     with pytest.raises(ValueParseError, match=f"'{cell}' is not a number"):
         read_table(write("loadcell.csv", text), kind="engagement")

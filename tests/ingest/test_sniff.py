@@ -2,9 +2,10 @@
 
 import codecs
 
+import numpy as np
 import pytest
 
-from pipeline.errors import EmptyFileError, EncodingError, LayoutError
+from pipeline.errors import EmptyFileError, EncodingError, LayoutError, ValueParseError
 from pipeline.ingest import read_table
 from pipeline.ingest.sniff import (
     HEAD_BYTES,
@@ -127,6 +128,10 @@ def test_empty(write, content, message):
         # a row would leave "133656  -0" in a cell)
         (["Sectionlength deltaL", "0,000000  -0,004665", "0,133656  -0,004617",
           "2,398251  0,000270"], (" ", ",", 2)),
+        # a spreadsheet's semicolons and decimal commas, a force grouped in thousands once:
+        # split at the commas, every row would read "0;97" in a cell
+        (["Ecrasement (mm);Forcestandard (N)", "0,0;97,52", "-0,0000378;96,24",
+          "1,35376588733876;1.017,11"], (";", ",", 2)),
     ],
 )
 def test_dialect(lines, dialect, tmp_path):
@@ -143,6 +148,31 @@ def test_a_structured_document_is_refused_as_such(write, text, kind):
     # a screwdriver's curve export: its braces and commas are no table's rows
     with pytest.raises(LayoutError, match=f"the file is a {kind} document, not a table"):
         read_table(write("curve.txt", text))
+
+
+@pytest.mark.parametrize("cell", ["1.017,11", "1 017,11", "1\u00a0017,11", "1\u202f017,11",
+                                  "1.001,5"])
+def test_a_force_grouped_in_thousands_before_its_decimal_comma_is_read(write, cell):
+    # a spreadsheet in a German or French locale formats the loads from 1,000 N on so
+    text = f"Weg (mm);Kraft (N)\n0,0;97,52\n0,1;485,27\n0,2;{cell}\n"
+    table, _ = read_table(write("excel.csv", text), kind="tensile")
+    expected = float(cell.replace(".", "").replace(",", ".").replace("\u00a0", "")
+                     .replace("\u202f", "").replace(" ", ""))
+    np.testing.assert_allclose(table["force"], [97.52, 485.27, expected])
+
+
+def test_a_swiss_apostrophe_grouping_thousands_is_read(write):
+    text = "Weg (mm);Kraft (N)\n0.0;97.52\n0.1;485.27\n0.2;1'017.11\n"
+    table, _ = read_table(write("excel.csv", text), kind="tensile")
+    np.testing.assert_allclose(table["force"], [97.52, 485.27, 1017.11])
+
+
+def test_a_grouping_no_break_space_not_in_utf8_is_named_with_its_cause(write):
+    text = "Weg (mm);Kraft (N)\n0,0;97,52\n0,1;485,27\n0,2;1\u00a0017,11\n"
+    with pytest.raises(ValueParseError, match="is not a number") as caught:
+        read_table(write("excel.csv", text, encoding="cp1252"), kind="tensile")
+    assert caught.value.row == 4 and caught.value.hint.startswith(
+        "the number is grouped in thousands in a form not read here")
 
 
 def test_header_only_is_empty(tmp_path):
