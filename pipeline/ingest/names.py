@@ -267,9 +267,10 @@ _NO_ROLE_LABELS = (_TRANSVERSE, _OTHER_QUANTITY)
 
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^()]*)\)"
                         r"|<(?P<ang>[^<>]*)>|【(?P<jis>[^【】]*)】|（(?P<wide>[^（）]*)）)\s*$")
-#: A sensor's serial number in brackets after a name and its unit (HOBOware's
-#: ``Temp, °C (LGR S/N: 10694967)``): no unit.
-_SERIAL = re.compile(r"\b(?:S/N|SN|serial)\b", re.IGNORECASE)
+#: A sensor's serial number (or number alone) in brackets after a name and its unit
+#: (HOBOware's ``Temp, °C (LGR S/N: 10694967)``, a Loadstar logger's ``Reading (lbf)
+#: (88)``): no unit.
+_SERIAL = re.compile(r"\b(?:S/N|SN|serial)\b|^\s*\d+\s*$", re.IGNORECASE)
 #: A percent sign before a name (a fibre tester's ``% Strain``, ``% Elongation``): its unit.
 _PERCENT_FIRST = re.compile(r"%\s*(?P<name>[^\W\d_].*)")
 #: A unit after a comma (``Temp, °C``, ``Нагрузка, кН``): one word, no number.
