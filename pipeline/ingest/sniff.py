@@ -800,6 +800,12 @@ def find_table(
            and _units_beside_numbers(rows[data - 1], decimal) is None
            and not _names_with_numbers(rows[data - 1], kinds[data - 1], decimal, width)):
         data -= 1
+    numbered = ()
+    if _numbers_over_texts(rows[data:], kinds[data:], width, decimal):
+        numbered = (f"line {data + 1}: a row of channel numbers over columns of text is read "
+                    "as the names row",)
+        kinds[data] = "text"
+        data += 1
     above = _above(kinds, data)
     labels = _specimen_labels(rows, kinds, above)
     if labels:  # the specimens' labels between the header and the data
@@ -808,7 +814,7 @@ def find_table(
         above = _above(kinds, above)
     elif _section_mark(rows, kinds, above, width):  # "***end of header***" under the names
         above = _above(kinds, above)
-    units_index, units_cells, notes = None, [], ()
+    units_index, units_cells, notes = None, [], numbered
     if above >= 1 and kinds[above] == "partial":  # numbers typed beside the units
         units_cells = _units_beside_numbers(rows[above], decimal) or []
     elif above >= 1 and kinds[above] == "text":
@@ -991,6 +997,21 @@ def _text_columns(rows: list[list[str]], kinds: list[str], columns: int, decimal
             is_number(row[index], decimal) or is_missing(row[index])
             or clock_kind(row[index]) is not None)}
     return frozenset(texts) if len(data) >= 2 else frozenset()  # one bad row is a bad cell
+
+
+def _numbers_over_texts(rows: list[list[str]], kinds: list[str], width: int, decimal: str
+                        ) -> bool:
+    """Whether the first of `rows`, a row of small whole numbers, stands over columns the
+    rows below hold text in (a rig's logger names its channels by number: ``1;7;8;2`` over
+    ``1657711476152;30.19;...;F;T``): no data row, but the names row."""
+    if len(rows) < 3 or len(rows[0]) != width or not all(
+            _CHANNEL_NUMBER.fullmatch(cell.strip()) for cell in rows[0]):
+        return False
+    return bool(_text_columns(rows[1:], kinds[1:], width, decimal))
+
+
+#: A channel's number.
+_CHANNEL_NUMBER = re.compile(r"\d{1,4}")
 
 
 def _names_with_numbers(row: list[str], kind: str, decimal: str, width: int) -> bool:

@@ -234,6 +234,19 @@ def test_a_number_among_the_names_leaves_them_the_names_row(tmp_path, lines):
             "read as names") in spec.notes
 
 
+def test_a_row_of_channel_numbers_over_columns_of_text_is_the_names_row(write):
+    # an endurance rig's log names its channels by number; its rows hold flags F and T
+    text = "1;7;8;2\n" + "".join(f"{1657711476152 + 100 * i};30.19;{i}.5;{'FT'[i % 2]}\n"
+                                  for i in range(6))
+    table, meta = read_table(write("Log_ecos.csv", text), kind="tensile", strict=False,
+                             columns={"force": "8", "gauges": "7"}, units={"force": "N",
+                                                                       "gauges": "mm"})
+    assert meta.rows == 6 and meta.header_line == 1
+    np.testing.assert_allclose(table["force"], np.arange(6) + 0.5)
+    assert ("line 1: a row of channel numbers over columns of text is read as the names row"
+            in meta.warnings)
+
+
 def test_data_wider_than_its_names_is_told(tmp_path):
     # a rig's log whose names row lost a delimiter: names and data may not line up
     spec = find_table(["t [s],f [N],angle [rad]", "0.0,1.0,10.0,0.1", "0.1,1.1,10.1,0.2"],
