@@ -575,7 +575,8 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
 
 #: Of several candidates for a role, the columns preferred, with why the others are not
 #: used: the testing machine's over a second instrument's; for a time, one named so over
-#: one of a time unit only (a thrust stand's ``ESC signal (µs)``, a pulse width); for a
+#: one of a time unit only (a thrust stand's ``ESC signal (µs)``, a pulse width), and a
+#: time counted over clock readings (PASCO's ``Date and Time``, to the second); for a
 #: time or a count, the whole test's over one that starts again (a step's, a cycle's, one
 #: since a counter's reset);
 #: for a force, the measured load over one turned to a kind of test's sign, the reading
@@ -585,6 +586,8 @@ _PREFERRED = (
      "is a second instrument's {role} beside the machine's"),
     (frozenset({"time"}), lambda raw, at: match_role(raw.names[at]) == "time",
      "has a unit of time but no name of one, beside a column named as the time"),
+    (frozenset({"time"}), lambda raw, at: at not in raw.clocks,
+     "holds clock readings beside a time counted in seconds"),
     (frozenset({"time", "cycle_count"}), lambda raw, at: says_total(raw.names[at]),
      "is named as one that starts again (a step's, a cycle's, since a reset) beside the "
      "whole test's"),

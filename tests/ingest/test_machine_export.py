@@ -392,6 +392,16 @@ def test_a_column_named_as_the_time_is_preferred_to_one_of_a_time_unit_only(writ
                                   "one") for warning in meta.warnings)
 
 
+def test_a_time_counted_in_seconds_is_preferred_to_clock_readings(write):
+    # PASCO Capstone: a date and time to the second beside the time of a 40 Hz run
+    text = '"Date and Time Run 5","Time (s) Run 5","Force (N) Run 5"\n' + "".join(
+        f"01/09/2024 11:12:5{6 + i // 40} am,{i / 40:.3f},{0.1 * i:.2f}\n" for i in range(60))
+    table, meta = read_table(write("spring.csv", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], np.arange(60) / 40)
+    assert ("column 'Date and Time Run 5' holds clock readings beside a time counted in "
+            "seconds ('Time Run 5'): not used") in " ".join(meta.warnings)
+
+
 # the names of a real Instron WaveMatrix tracking export: derived channels are named
 # after the channel they come from ("Stress(...:Load)") or a count ("Cycle Energy")
 TRACKING = ('"Total Time (s)","Total Cycles","Load(8801:Load) (kN)","Stress(8801:Load) (MPa)",'
