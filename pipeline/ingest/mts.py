@@ -82,14 +82,35 @@ def _is_data(line: str) -> bool:
 
 
 def matches(head: Head, spec: TableSpec) -> bool:
-    """True for an ``MTS`` first line, or a names row or a line that opens a block (MTS
-    TestStar: ``Axial Counts<TAB>0`` above the names) repeated below the first block."""
+    """True for an ``MTS`` first line, or a names row (perhaps with another specimen's
+    number in front: :func:`_unlabelled`) or a line that opens a block (MTS TestStar:
+    ``Axial Counts<TAB>0`` above the names) repeated below the first block."""
     if spec.header_index is None:
         return False
     later = head.lines[spec.data_index:]
     openers = _block_openers(head, spec)
-    return (head.lines[0].lstrip().startswith("MTS") or head.lines[spec.header_index] in later
+    names = _unlabelled(head.lines[spec.header_index], spec.delimiter)
+    return (head.lines[0].lstrip().startswith("MTS")
+            or any(_unlabelled(line, spec.delimiter) == names for line in later)
             or any(line.strip() in openers for line in later))
+
+
+#: A field that starts as a number does.
+_NUMBER_START = re.compile(r"\s*[-+]?\.?\d")
+#: A specimen's number as a names row's first field (Bluehill's sample export: ``1,Time,
+#: Displacement,...`` over the first specimen's rows, ``2,Time,...`` over the second's).
+_LABEL = re.compile(r"[ \t]*\d+[ \t]*")
+
+
+def _unlabelled(line: str, delimiter: str) -> str:
+    """`line` stripped, without the specimen's number in its first field
+    (:data:`_LABEL`) when the fields after it hold no number: the names the blocks of a
+    sample's specimens share."""
+    fields = split_fields(line.strip(), delimiter)
+    if len(fields) > 2 and _LABEL.fullmatch(fields[0]) and not any(
+            _NUMBER_START.match(field) for field in fields[1:]):
+        return line.strip().lstrip("0123456789 \t")
+    return line.strip()
 
 
 def _block_openers(head: Head, spec: TableSpec) -> set[str]:
@@ -177,12 +198,18 @@ def _marked_headers(head: Head, spec: TableSpec, data: bytes, first_line: int) -
     belong to a later block's header though they read as data marked as header lines
     (:data:`HEADER_MARK` before them): the units row repeated when its first field is
     empty (``;;;s;kN;mm``), and a line of another width than the table's just above a
-    repeated names row (a press's results of the next specimen)."""
-    names = head.lines[spec.header_index].strip().encode()
+    repeated names row (a press's results of the next specimen); and a names row with the
+    next specimen's number in front (:func:`_unlabelled`), which reads as data too."""
+    names = head.lines[spec.header_index].strip()
+    unlabelled = _unlabelled(names, spec.delimiter)
     units = (head.lines[spec.units_index].strip()
              if spec.units_index is not None else "")
     cuts = set()
-    for found in re.finditer(rb"(?m)^[ \t]*" + re.escape(names) + rb"[ \t]*\r?$", data):
+    label = rb"\d+[ \t]*" if unlabelled != names else b""
+    for found in re.finditer(rb"(?m)^[ \t]*" + label + re.escape(unlabelled.encode())
+                             + rb"[ \t]*\r?$", data):
+        if label:
+            cuts.add(found.start())
         line_start, line = _line_before(data, found.start())
         if line and _DATA_LINE.match(line) and len(split_fields(line, spec.delimiter)) != (
                 spec.width):
@@ -307,9 +334,11 @@ def _block(spec: TableSpec, first: _FirstBlock, header_text: str, points: memory
     rows = [row.group().decode("latin-1") for row in islice(_ROW.finditer(points), 3)]
     fields = split_fields(rows[0], spec.delimiter) if rows else []
     width = len(fields) if rows else spec.width
-    renamed = [line for line in header if widths[line] == spec.width
-               and line not in openers and line not in (first.names, first.units)]
-    opens = any(line == first.names or line in openers for line in header)
+    names = _unlabelled(first.names, spec.delimiter)
+    renamed = [line for line in header if widths[line] == spec.width and line not in openers
+               and _unlabelled(line, spec.delimiter) != names and line != first.units]
+    opens = any(_unlabelled(line, spec.delimiter) == names or line in openers
+                for line in header)
     where = f"lines {lines.start} to {lines.stop - 1}"
     if renamed or width != spec.width:
         names = next((line for line in header if widths[line] == width and line not in openers),

@@ -232,6 +232,30 @@ def test_tables_one_below_the_other_without_a_time_are_not_joined(write):
     np.testing.assert_allclose(table["force"], first * 9.80665e-3)
 
 
+def bluehill_sample(specimens: int, points: int) -> str:
+    """A Bluehill Universal sample export (its layout; our numbers): the results of each
+    specimen, then each specimen's rows under a names row led by its number."""
+    lines = ["Results Table 1,,", ",Maximum Force,Rate 1", ",(N),(mm/min)",
+             *(f"{n},{1000 * n},50" for n in range(1, specimens + 1)), ",,",
+             "Results Table 2,,", ",,"]
+    for n in range(1, specimens + 1):
+        lines += [f"{n},Time,Displacement,Force", ",(s),(mm),(N)"]
+        lines += [f",{0.02 * i:.2f},{0.01 * i:.2f},{n * 10.0 * i:.1f}" for i in range(points)]
+    return "\n".join(lines) + "\n"
+
+
+def test_a_bluehill_samples_specimens_led_by_their_numbers_are_read_one_at_a_time(write):
+    path = write("Sample.csv", bluehill_sample(specimens=3, points=12))
+    with pytest.raises(SpecimensError, match="the file holds 3 tests") as caught:
+        read_table(path, kind="tensile")
+    assert caught.value.row == 24  # the second specimen's names row
+    for n in (1, 2, 3):
+        table, meta = read_table(path, kind="tensile", specimen=n)
+        np.testing.assert_allclose(table["force"], n * 10.0 * np.arange(12))
+        np.testing.assert_allclose(table["gauge_1"], 1e-5 * np.arange(12))
+        assert meta.first_data_line == 12 + 14 * (n - 1)
+
+
 def test_blocks_whose_time_runs_on_are_one_test(write):
     table, meta = read_table(write("blocks.csv", appended(tests=2, points=20, runs_on=True)))
     assert meta.layout == "mts" and meta.preamble["blocks"] == "2" and len(table) == 40
