@@ -66,8 +66,10 @@ from pipeline.ingest.textbody import (
 
 LAYOUT = "mts"
 
-# A data line starts with a number, a missing-value token or an empty first field.
-_DATA_START = r"[ \t]*(?:[-+.\d]|(?i:nan|n/a|na|null) *(?=[\t;,|\r\n]|$)|(?=[\t;,|\r\n]|$))"
+# A data line starts with a number, a missing-value token or an empty first field (not a
+# rule of dashes under a title: a BAM export's ``-----``, which opens the next export).
+_DATA_START = (r"[ \t]*(?:[-+]?\.?\d|[-+.] *(?=[\t;,|\r\n]|$)"
+               r"|(?i:nan|n/a|na|null) *(?=[\t;,|\r\n]|$)|(?=[\t;,|\r\n]|$))")
 _HEADER_LINE = re.compile(rb"(?m)^(?!" + _DATA_START.encode() + rb")[^\r\n]*(?:\r\n|\r|\n|\Z)")
 _DATA_LINE = re.compile(_DATA_START)
 #: Put before a line that reads as data but belongs to a block's header.

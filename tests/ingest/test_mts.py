@@ -256,6 +256,21 @@ def test_a_bluehill_samples_specimens_led_by_their_numbers_are_read_one_at_a_tim
         assert meta.first_data_line == 12 + 14 * (n - 1)
 
 
+def test_exports_appended_under_a_rule_of_dashes_are_read_one_at_a_time(write):
+    # a BAM creep rig's export: a title, a rule of dashes, a [data] line over the names;
+    # two exports appended to one file
+    def export(force: float) -> str:
+        return ("BAM 5.2 Loading.LIS\t\t\n------------------\t\t\n[data]\t\t\n"
+                "Time\tForce\tExtension\ns\tkN\t%\n" + "".join(
+                    f"{0.5 * i:.1f}\t{force * i:.3f}\t{0.01 * i:.4f}\n" for i in range(10)))
+    path = write("Loading.LIS", export(0.1) + export(0.2))
+    with pytest.raises(SpecimensError, match="the file holds 2 tests"):
+        read_table(path, kind="tensile")
+    for specimen, force in ((1, 0.1), (2, 0.2)):
+        table, _ = read_table(path, kind="tensile", specimen=specimen)
+        np.testing.assert_allclose(table["force"], 1e3 * force * np.arange(10))
+
+
 def test_blocks_whose_time_runs_on_are_one_test(write):
     table, meta = read_table(write("blocks.csv", appended(tests=2, points=20, runs_on=True)))
     assert meta.layout == "mts" and meta.preamble["blocks"] == "2" and len(table) == 40
