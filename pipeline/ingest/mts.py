@@ -257,7 +257,7 @@ def _one_test(head: Head, marked: _Marked, blocks: list[_Block], tests: list[_Bl
             f"the other, each timed from its own start: the time starts again at {at}"
             if timed else
             f"the file holds {len(tests) + 1} tables one below the other, each under its "
-            f"own names (at {at}), and no time column tells one test's blocks from "
+            f"own names (at {at}), and without one time column to tell one test's blocks from "
             "several tests (a fibre tester's specimens)")
     if not head.ascii_compatible:  # its offsets in the file are not those of the data
         raise LayoutError(said, file=head.name, row=lines[0],

@@ -37,7 +37,7 @@ from pipeline.ingest.names import (
         # a true strain is worked out (ln(1 + e)); a DAQ table's amplifier gains, a force
         # plate's centre of pressure are no measurements
         ("True Strain", None), ("Engineering Strain", "gauge"), ("gain load", None),
-        ("Sensitivity", None), ("FP1_COP_X", None), ("Thrust", "force"), ("Duration", "time"),
+        ("Sensitivity", None), ("FP1_COP_X", None), ("Thrust", "force"),
         # a salt-consolidation rig's logger writes its names in camel case
         ("Längung", "gauge"), ("Längenänderung", "gauge"),  # a German wear rig's elongation
         ("SmallLVDT", "gauge"), ("LargeLVDT", "gauge"), ("DilaFBK", None), ("ConfP", None),

@@ -183,7 +183,9 @@ def test_rows_labelled_one_by_one_without_a_time_are_told_as_specimens(write):
     # a status that repeats, or labels beside a time, are a log's
     status = "state,Load (N),Extension (mm)\nRUN,1,0.1\nRUN,2,0.2\nHOLD,2,0.2\n"
     tagged = "tag,Time (s),Load (N),Extension (mm)\na,0,1,0.1\nb,1,2,0.2\nc,2,3,0.3\n"
-    for text in (status, tagged):
+    frames = ("Filename_0,Load (N),Extension (mm)\n" + "".join(
+        f"D:/CT/S1-{i:05d}_0.tif,{i},{i / 10}\n" for i in range(3)))  # a DIC export's frames
+    for text in (status, tagged, frames):
         _, meta = read_table(write("log.csv", text), kind="tensile")
         assert not any("label of its own" in warning for warning in meta.warnings)
 
