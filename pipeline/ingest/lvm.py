@@ -59,6 +59,7 @@ import numpy as np
 
 from pipeline.errors import EmptyFileError, LayoutError
 from pipeline.ingest.delimited import TextLayout, read_contiguous
+from pipeline.ingest.names import match_role, split_name_unit
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.rowindex import code_unit
 from pipeline.ingest.sniff import Head, TableSpec, read_head, split_fields
@@ -204,8 +205,14 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
     tags = _tags(spec.preamble, spec.delimiter)
     if _without_x_column(spec) and 0 in raw.arrays:
         start, step = _axis(tags, spec.decimal, head.name)
-        raw.arrays[0] = start + step * np.arange(raw.rows)
         steps = list(dict.fromkeys(value.strip() for value in tags["Delta_X"] if value.strip()))
+        timed = [name for name in spec.names[1:] if match_role(split_name_unit(name)[0]) == "time"]
+        if len(steps) > 1 and timed:
+            header.metadata.warnings.append(
+                f"no time is built from the channels' Delta_X: they differ ({', '.join(steps)}), "
+                f"and channel {timed[0]!r} holds a time")
+            return raw
+        raw.arrays[0] = start + step * np.arange(raw.rows)
         if len(steps) > 1:
             header.metadata.warnings.append(
                 f"the time is built from the first channel's Delta_X ({steps[0]}), but the "

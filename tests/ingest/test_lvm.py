@@ -86,6 +86,22 @@ def test_a_time_built_from_channels_of_other_rates_is_questioned(write):
     assert not any("Delta_X" in warning for warning in same.warnings)
 
 
+def test_no_time_is_built_beside_a_channel_that_holds_the_time(write):
+    # a rig's LabVIEW log: a channel "time" of its own, the channels' Delta_X unlike
+    # (the "time" channel's 1.0 would make a 1 Hz time of the rows)
+    text = "\n".join([
+        "LabVIEW Measurement,", "Writer_Version,2", "Reader_Version,2", "Separator,Comma",
+        "Decimal_Separator,.", "Multi_Headings,No", "X_Columns,No", "Time_Pref,Relative",
+        "***End_of_Header***,", ",", "Channels,2,,", "Samples,5,5,",
+        "Y_Unit_Label,s,N,", "X_Dimension,Time,Time,", "X0,0,0,", "Delta_X,1.000000,0.000606,",
+        "***End_of_Header***,,,", "X_Value,time,Force,Comment",
+        *(f",{0.000606 * i:.6f},{10.0 * i:.1f}" for i in range(5))]) + "\n"
+    table, meta = read_table(write("impact.lvm", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], 0.000606 * np.arange(5), atol=1e-9)
+    assert ("no time is built from the channels' Delta_X: they differ (1.000000, 0.000606), "
+            "and channel 'time' holds a time") in meta.warnings
+
+
 def test_without_unit_labels_the_run_sheet_gives_the_units(write):
     path = write("log.lvm", lvm(units=None))
     with pytest.raises(Exception, match="no unit for the force column"):
