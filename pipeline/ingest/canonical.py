@@ -529,7 +529,8 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
     warning only). Of several
     candidates matched by name, those whose unit in the file is not one of the role (a
     stress in MPa named after its load channel) are left out, with a warning, when some
-    others fit; so are those :data:`_PREFERRED` passes over (:func:`_preferred`)."""
+    others fit or the run does without the role (a drive's speeds in rpm are no chain
+    speed); so are those :data:`_PREFERRED` passes over (:func:`_preferred`)."""
     file = raw.metadata.file
     assigned: dict[str, list[int]] = {}
     for role, indexes in raw.candidates.roles.items():
@@ -537,7 +538,7 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
         if (role in _SINGLE and len(live) > 1 and role not in raw.candidates.explicit
                 and role not in sheet_units):
             misfits = [index for index in live if unit_misfits(raw.units[index], role)]
-            if len(misfits) < len(live):
+            if len(misfits) < len(live) or role in DISPENSABLE.get(kind, ()):
                 for index in misfits:
                     _warn_misfit(raw, index, role)
                 live = [index for index in live if index not in misfits]

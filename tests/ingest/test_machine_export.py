@@ -427,6 +427,16 @@ def test_candidates_none_of_which_fits_are_still_an_ambiguity(write):
         read_table(write("tracking.csv", text), kind="engagement")
 
 
+def test_speeds_none_of_which_fits_a_role_the_run_does_without_are_left_out(write):
+    # a drive bench's motor speeds in rpm: no chain speed, and no speed to choose among
+    text = ("Time (s),Thrust (N),Motor Electrical Speed (RPM),Motor Optical Speed (RPM)\n"
+            "0,1,1000,1010\n0.25,2,1500,1490\n0.5,3,1600,1610\n")
+    _, meta = read_table(write("bench.csv", text), kind="engagement")
+    assert ("column 'Motor Optical Speed': unit 'RPM' is not a unit of speed: column not "
+            "used") in meta.warnings
+    assert not any("could be the speed" in warning for warning in meta.warnings)
+
+
 # a real transient recorder's export (Hopkinson bar strain gauges): every header row ends
 # with the delimiter, the data rows do not
 RECORDER = ("Starttime;16.08.2016 15:46:25\nSamplerate;10000000 Hz\n\n"
