@@ -56,6 +56,7 @@ from pipeline.ingest.names import (
     match_role,
     peak_partner,
     repeats,
+    run_labels,
     says_sign_convention,
     says_total,
     tokens,
@@ -359,10 +360,11 @@ def _other_specimens(raw: RawColumns, specimen: str | int | None) -> set[int]:
     count = repeats(raw.names)
     if count == 1 and meta.specimen is not None:
         return set()
-    labels = meta.specimens if len(meta.specimens) == count else []
     named = len(raw.names)
     while named and not raw.names[named - 1].strip():  # trailing unnamed columns: no group's
         named -= 1
+    labels = (meta.specimens if len(meta.specimens) == count
+              else run_labels(raw.names[:named], count) if count > 1 else [])
     size = named // count
     group = raw.names[:size]
     said = (f"the columns {', '.join(name for name in group if name)} repeat {count} times "

@@ -638,6 +638,25 @@ _NUMBER_BEFORE = re.compile(
     r"(?P<base>.+)")
 
 
+#: A run's label in a name (PASCO Capstone's ``Time (s) Run 5`` after it, Vernier's
+#: ``Run 1: Force (N)`` before it).
+_RUN_IN_NAME = re.compile(r"(?:^|\s)(Run\s*#?\s*\d+)(?::|\s*$)", re.IGNORECASE)
+
+
+def run_labels(names: list[str], count: int) -> list[str]:
+    """The labels of `count` groups of columns side by side (`names`, the groups' columns
+    in order), as the runs of a logger name them (``Run 5``, ``Run 6``): the label in the
+    first name of each group, when every group's has one of its own; else none.
+
+    >>> run_labels(["Time Run 5", "Force Run 5", "Time Run 6", "Force Run 6"], 2)
+    ['Run 5', 'Run 6']
+    """
+    size = len(names) // count
+    found = [_RUN_IN_NAME.search(names[group * size]) for group in range(count)]
+    labels = [" ".join(match.group(1).split()) for match in found if match]
+    return labels if len(set(labels)) == count else []
+
+
 def _numbered(name: str) -> tuple[str, str | None]:
     """A folded name without its specimen's number, and that number (None: no number)."""
     for pattern in (_NUMBER_AFTER, _NUMBER_BEFORE):

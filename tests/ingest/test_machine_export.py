@@ -565,13 +565,15 @@ def test_runs_side_by_side_are_refused_unless_the_run_sheet_says_which(write):
     path = write("spring.csv", text)
     with pytest.raises(LayoutError, match="repeat 2 times side by side") as caught:
         read_table(path, kind="tensile")
-    assert "specimen_in_file = 1: the places 1 to 2 from the left" in caught.value.hint
-    table, meta = read_table(path, kind="tensile", specimen=2)  # unlabelled: by place
-    np.testing.assert_allclose(table["force"], [0.2, 0.3])
-    np.testing.assert_allclose(table["gauge_1"], [0.0, 0.02])
-    assert meta.specimen == "2"
-    assert [column.name for column in meta.columns] == [
-        "Time Run 6", "Force Run 6", "Position Run 6"]
+    assert ('specimen_in_file = "Run 5": the file\'s labels Run 5, Run 6, or the places 1 to '
+            '2 from the left') in caught.value.hint
+    for chosen in (2, "Run 6"):  # by place, or by the run's label
+        table, meta = read_table(path, kind="tensile", specimen=chosen)
+        np.testing.assert_allclose(table["force"], [0.2, 0.3])
+        np.testing.assert_allclose(table["gauge_1"], [0.0, 0.02])
+        assert meta.specimen == "Run 6"
+        assert [column.name for column in meta.columns] == [
+            "Time Run 6", "Force Run 6", "Position Run 6"]
 
 
 def test_vernier_runs_side_by_side_with_the_newest_unnumbered_are_refused(write):
