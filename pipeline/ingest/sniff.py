@@ -50,6 +50,7 @@ from pipeline.ingest.unitparse import (
     is_measure_unit,
     is_sample_interval,
     looks_like_unit,
+    spellings,
     unit_role,
 )
 
@@ -603,6 +604,15 @@ def detect_dialect(
                 file=name,
                 hint="export the test with its time (or its displacement) beside the force",
             )
+        marked = _numbers_with_units(sample)
+        if marked:
+            raise LayoutError(
+                "the cells hold numbers with a unit or percent sign in them ("
+                + ", ".join(map(repr, marked)) + "): the readers read bare numbers",
+                file=name,
+                hint="save the table with bare numbers (a spreadsheet's number format "
+                     "without % or a unit) and the unit in the names row, e.g. "
+                     "'Elongation [%]'")
         if not any(_has_two_numbers(line) for line in sample):
             named = _data_file_named(lines, name)
             raise EmptyFileError(
@@ -675,6 +685,24 @@ def _text_in_every_row(sample: list[str], delimiters: tuple[str, ...]) -> list[s
             return [cell.strip() for cell in rows[-1]
                     if not is_number(cell, ".") and not is_missing(cell)][:3]
     return []
+
+
+#: A number with a unit or percent sign in its cell (a spreadsheet's ``1.8%``, ``97,52 N``).
+_NUMBER_AND_UNIT = re.compile(r" *[+-]?\d+(?:[.,]\d+)?(?:[eE][+-]?\d+)? *"
+                              r"(?P<unit>%|[^\W\d_][^\s,;\t|]*) *")
+
+
+def _numbers_with_units(sample: list[str]) -> list[str]:
+    """Up to three cells of numbers with their unit (:data:`_NUMBER_AND_UNIT`, a unit pint
+    reads) when most of the `sample` lines, split at any delimiter, hold one; else none."""
+    found = []
+    for line in sample:
+        cells = [cell.strip() for delimiter in DELIMITERS if delimiter != BLANKS
+                 for cell in split_fields(line, delimiter)
+                 if (match := _NUMBER_AND_UNIT.fullmatch(cell)) and spellings(match["unit"])]
+        if cells:
+            found.append(cells[0])
+    return list(dict.fromkeys(found))[:3] if 2 * len(found) > len(sample) else []
 
 
 def _has_two_numbers(line: str) -> bool:

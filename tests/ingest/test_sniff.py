@@ -175,6 +175,18 @@ def test_a_grouping_no_break_space_not_in_utf8_is_named_with_its_cause(write):
         "the number is grouped in thousands in a form not read here")
 
 
+@pytest.mark.parametrize(("rows", "shown"), [
+    (["1,1.8%,0.4%", "2,2.5%,0.7%", "3,3.8%,1.1%"], "'1.8%', '2.5%', '3.8%'"),
+    (["0 mm;97,52 N", "0,1 mm;98,3 N", "0,2 mm;99,1 N"], "'0 mm', '0,1 mm', '0,2 mm'"),
+])
+def test_numbers_with_their_unit_in_each_cell_are_refused_as_such(write, rows, shown):
+    # a webbing maker's stretch chart saved with its percent format; a spreadsheet's units
+    with pytest.raises(LayoutError) as caught:
+        read_table(write("chart.csv", "Force,Elongation A,Elongation B\n" + "\n".join(rows)))
+    assert caught.value.message == (f"the cells hold numbers with a unit or percent sign in "
+                                    f"them ({shown}): the readers read bare numbers")
+
+
 def test_header_only_is_empty(tmp_path):
     with pytest.raises(EmptyFileError, match="no data rows"):
         detect_dialect(["Machine : Amsler", "", "time [s],force [kN]"], tmp_path)
