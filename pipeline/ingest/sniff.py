@@ -1261,7 +1261,7 @@ def _no_names_row(file: str, data: int, delimiter: str) -> LayoutError:
         "no names row above the first data row",
         file=file, row=data + 1,
         hint="add a header row naming the columns, separated as the data are, e.g. "
-             + {"\t": "<Tab>"}.get(delimiter, delimiter).join(
+             + {"\t": "<Tab>", BLANKS: "  "}.get(delimiter, delimiter).join(
                  ("'time [s]", "force [kN]", "gauge1 [mm]'"))
              + ", or name them in the run sheet by position, with their units: columns = "
                '{time = "column 1", force = "column 2"}, units = {time = "s", force = "kN"}',

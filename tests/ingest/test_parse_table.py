@@ -69,6 +69,8 @@ def test_errors_name_the_buffer():
     (b"1,139302\t305,800815\t1,883096\n1,149302\t-16,572605\t0,317137\n",
      "'time [s]<Tab>force [kN]<Tab>gauge1 [mm]'"),
     (b"1,5;2,5\n3,5;4,5\n", "'time [s];force [kN];gauge1 [mm]'"),
+    # aligned by blanks: names that hold a blank need two between them
+    (b"  1.5   2.5\n  3.5   4.5\n", "'time [s]  force [kN]  gauge1 [mm]'"),
 ])
 def test_the_header_row_suggested_is_separated_as_the_data_are(text, example):
     # a real headerless tab file with decimal commas: a comma-separated header
