@@ -418,7 +418,7 @@ def build(
     meta.time_monotonic, meta.time_gaps = conversion.checked_rows(table, raw, meta.warnings)
     meta.rows = len(table)
     meta.columns = list(conversion.infos)
-    meta.warnings += short_of_stated(meta.preamble, meta.rows)
+    meta.warnings += unlike_stated(meta.preamble, meta.rows)
     return table, meta
 
 
@@ -428,14 +428,19 @@ STATED_ROWS_KEYS = frozenset({"data quantity", "data count", "record length",
                               "number of points", "number of samples", "number of rows"})
 
 
-def short_of_stated(preamble: Mapping[str, str], rows: int) -> list[str]:
-    """A warning when the header states more rows (:data:`STATED_ROWS_KEYS`) than the `rows`
-    read: a file cut short at a line end shows no other sign."""
+def unlike_stated(preamble: Mapping[str, str], rows: int) -> list[str]:
+    """A warning when the header states (:data:`STATED_ROWS_KEYS`) more rows than the
+    `rows` read (a file cut short at a line end shows no other sign), or fewer (a row
+    past them is read as a sample: a Deben tester's end mark ``0,0,0,0,1,0,"0"``)."""
     for key, value in preamble.items():
         text = value.strip().rstrip(",").strip()
-        if fold(key.strip()) in STATED_ROWS_KEYS and text.isdigit() and int(text) > rows:
-            return [f"the header says {key.strip()} = {int(text)}, the file holds {rows} "
-                    "rows: it may be cut short (copy it again from the machine)"]
+        if fold(key.strip()) not in STATED_ROWS_KEYS or not text.isdigit() or int(text) == rows:
+            continue
+        said = f"the header says {key.strip()} = {int(text)}, the file holds {rows} rows"
+        if int(text) > rows:
+            return [f"{said}: it may be cut short (copy it again from the machine)"]
+        return [f"{said}: the rows past the stated ones are read as samples (an end mark, "
+                "or another test's rows): check the last rows"]
     return []
 
 

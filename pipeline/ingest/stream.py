@@ -51,7 +51,7 @@ from pipeline.ingest.canonical import (
     convert_rows,
     empty_warning,
     settle,
-    short_of_stated,
+    unlike_stated,
 )
 from pipeline.ingest.formats import TEXT_LAYOUTS, Sniffed, check_options, read_raw, sniff
 from pipeline.ingest.raw import RawColumns, RawTable
@@ -351,7 +351,7 @@ def open_log(
     conversion = settle(rows.header, empty, kind=kind, units=units, specimen=specimen)
     meta.rows = rows.rows
     meta.columns = list(conversion.infos)
-    meta.warnings += short_of_stated(meta.preamble, meta.rows)
+    meta.warnings += unlike_stated(meta.preamble, meta.rows)
     reader = LogReader(str(path), rows.rows, meta, conversion, rows, stamp)
     continuation.note_unread_parts(path, meta, reader.last_time,
                                      {"kind": kind, "columns": columns, "units": units,

@@ -289,6 +289,18 @@ def test_a_file_holding_fewer_rows_than_its_header_states_is_warned_of(write, st
         assert (message in meta.warnings) is warned
 
 
+@pytest.mark.parametrize("stated, warned", [(2, True), (3, False)])
+def test_a_file_holding_more_rows_than_its_header_states_is_warned_of(write, stated, warned):
+    # a Deben tester's export states its points, then writes an end mark as one more row
+    text = f"Number of points,{stated},,\n" + HEADER + rows((0, 1, 2), (1, 2, 3), (0, 0, 0))
+    path = write("NANO_K_1.csv", text)
+    message = (f"the header says Number of points = {stated}, the file holds 3 rows: the rows "
+               "past the stated ones are read as samples (an end mark, or another test's "
+               "rows): check the last rows")
+    for meta in (read_table(path)[1], open_log(path).metadata):
+        assert (message in meta.warnings) is warned
+
+
 def test_of_several_columns_for_one_role_none_is_taken_when_not_strict(write):
     # a results block left of the reading: the first was shown as the force, and drafted
     text = "Max force (N),Min force (N),Force (N),gauge [mm]\n" + rows(
