@@ -271,6 +271,8 @@ _BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^(
 #: (HOBOware's ``Temp, °C (LGR S/N: 10694967)``, a Loadstar logger's ``Reading (lbf)
 #: (88)``): no unit.
 _SERIAL = re.compile(r"\b(?:S/N|SN|serial)\b|^\s*\d+\s*$", re.IGNORECASE)
+#: The suffix pandas gives a repeated name, after a unit in brackets (``Force (N).1``).
+_PANDAS_COPY = re.compile(r"(?P<head>.*\S\s*[\])>])(?P<suffix>\.\d+)")
 #: A percent sign before a name (a fibre tester's ``% Strain``, ``% Elongation``): its unit.
 _PERCENT_FIRST = re.compile(r"%\s*(?P<name>[^\W\d_].*)")
 #: A unit after a comma (``Temp, °C``, ``Нагрузка, кН``): one word, no number.
@@ -322,8 +324,8 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
         A names-row cell, e.g. ``"force [kN]"``, ``"Load (N)"``, ``"KRAFT <N>"``,
         ``"Kraft / kN"`` (ISO 80000 quantity / unit), ``"Нагрузка, кН"`` (after a comma),
         ``"荷重【kN】"``, ``"Force (N) Run #1"`` (the run label kept in the name),
-        ``"Temp, °C (LGR S/N: 1069)"`` (a serial number kept in the name), ``"% Strain"``
-        or ``"Time"``.
+        ``"Temp, °C (LGR S/N: 1069)"`` (a serial number kept in the name), ``"% Strain"``,
+        pandas' ``"Force (N).1"`` (its suffix kept in the name) or ``"Time"``.
 
     Returns
     -------
@@ -335,6 +337,10 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
         reads it as a unit, or a percent sign before the name; None when there is none.
     """
     text = header_text(header)
+    copy = _PANDAS_COPY.fullmatch(text)
+    if copy is not None:  # pandas' "Displacement (mm).1": the unit before its suffix
+        name, unit = split_name_unit(copy["head"])
+        return name + copy["suffix"], unit
     label = _RUN_LABEL.search(text)
     if label is not None and label.start() > 0:  # PASCO Capstone: "Force (N) Run #1"
         name, unit = split_name_unit(text[: label.start()])
@@ -615,6 +621,8 @@ def repeats(names: list[str]) -> int:
     2
     >>> repeats(["Latest: Time", "Latest: Force", "Run 1: Time", "Run 1: Force"])  # Vernier
     2
+    >>> repeats(["Force", "Disp 1", "Force.1", "Disp 1.1"])  # pandas, a name ending in 1
+    2
     """
     folded = [fold(_RUN_LABEL.sub("", name.strip())) for name in names]
     while folded and not folded[-1]:
@@ -622,6 +630,10 @@ def repeats(names: list[str]) -> int:
     for size in range(2, len(folded) // 2 + 1):
         if len(folded) % size == 0 and any(folded[:size]) and all(
                 name == folded[index % size] for index, name in enumerate(folded)):
+            return len(folded) // size
+        if len(folded) % size == 0 and any(folded[:size]) and all(  # pandas: "Force.1"
+                name == f"{folded[index % size]}.{index // size}"
+                for index, name in enumerate(folded[size:], start=size)):
             return len(folded) // size
     return _numbered_repeats(folded)
 

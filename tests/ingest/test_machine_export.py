@@ -591,6 +591,21 @@ def test_vernier_runs_side_by_side_with_the_newest_unnumbered_are_refused(write)
         "Run 1: Time", "Run 1: Force", "Run 1: Position"]
 
 
+def test_pandas_copies_of_names_ending_in_a_number_are_specimens_side_by_side(write):
+    # Bluehill's columns written side by side by pandas: "Corrected displacement 1" of the
+    # first specimen is no first specimen's number; read as one, the force of one specimen
+    # was paired with another's gauges
+    group = ["Time (s)", "Force (N)", "Corrected displacement 1 (mm)"]
+    names = group + [f"{name}.{copy}" for copy in (1, 2) for name in group]
+    rows = [",".join(f"{t},{10 * s * t},{0.01 * s * t}" for s in (1, 2, 3)) for t in range(4)]
+    path = write("wide.csv", ",".join(names) + "\n" + "\n".join(rows) + "\n")
+    with pytest.raises(LayoutError, match="repeat 3 times side by side"):
+        read_table(path, kind="tensile")
+    table, _ = read_table(path, kind="tensile", specimen=3)
+    np.testing.assert_allclose(table["force"], 30.0 * np.arange(4))
+    np.testing.assert_allclose(table["gauge_1"], 3e-5 * np.arange(4))
+
+
 def test_specimens_numbered_in_the_names_are_read_one_a_run(write):
     """``Force 1 [kN], Disp 1 [mm], Force 2 [kN], Disp 2 [mm]``: read as one specimen, the
     first force would pair with both displacements."""

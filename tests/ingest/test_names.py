@@ -127,6 +127,7 @@ def test_every_listed_name_matches_its_own_role():
          ("Force (LGR S/N: 10694967, SEN S/N: 10694967)", "N")),
         ("Host Connected (LGR S/N: 10694967)", ("Host Connected (LGR S/N: 10694967)", None)),
         ("Reading (lbf) (88)", ("Reading (88)", "lbf")),  # a Loadstar sensor's number
+        ("Displacement (mm).1", ("Displacement.1", "mm")),  # pandas' second copy
         ("Date Time, GMT-06:00", ("Date Time, GMT-06:00", None)),
         ("Force, total", ("Force, total", None)), ("Channel, 1", ("Channel, 1", None)),
         # a fibre tester writes the percent sign first
