@@ -601,7 +601,8 @@ def _names_row(fields: list[str], decimal: str) -> str:
     numbers = sum(is_number(cell, decimal) for cell in fields)
     if len(texts) < 2 or numbers >= len(texts):
         return ""
-    return ", ".join(repr(text[:30]) for text in texts[:4]) + (", ..." if len(texts) > 4 else "")
+    return ", ".join(repr(text if len(text) <= 30 else text[:29] + "…") for text in texts[:4]
+                     ) + (", ..." if len(texts) > 4 else "")
 
 
 def _bad_cell(

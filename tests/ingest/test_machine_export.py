@@ -126,6 +126,14 @@ def test_a_results_table_above_the_raw_data_is_named_as_a_second_table(write):
     assert "one table per file" in error.value.hint
 
 
+def test_a_long_name_of_a_second_table_is_cut_with_an_ellipsis(write):
+    text = (",Gauge length,Maximum Force\n,(mm),(N)\n1,9.59,3196.2\n2,9.75,3051.7\n,,\n"
+            "1,Time,Tensile strain (Digital Strain 1),Force\n,(s),(%),(N)\n,0,0.01,-0.7\n")
+    with pytest.raises(LayoutError, match="second table starts here") as error:
+        read_table(write("results.csv", text))
+    assert "'Tensile strain (Digital Strai…'" in str(error.value)
+
+
 def bluehill_batch(raw_rows: int, results_rows: int = 4) -> str:
     """A Bluehill export of a batch's results table (one row per specimen) above one
     specimen's raw data, as a real one lays them out: the raw names row begins with the
