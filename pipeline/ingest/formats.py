@@ -22,6 +22,7 @@ from pipeline.ingest import (
     catman,
     delimited,
     gwinstek,
+    isomme,
     lvm,
     merlin,
     mts,
@@ -46,6 +47,7 @@ from pipeline.ingest.source import Source
 #: export are known by their first lines, before a table is looked for).
 TEXT_LAYOUTS = {lvm.LAYOUT: lvm, catman.LAYOUT: catman.TEXT, rigol.LAYOUT: rigol,
                 tektronix.LAYOUT: tektronix.TEXT, gwinstek.LAYOUT: gwinstek.TEXT,
+                isomme.LAYOUT: isomme,
                 merlin.LAYOUT: merlin, mts.LAYOUT: mts,
                 **{layout.name: layout for layout in delimited.LAYOUTS}}
 
@@ -110,7 +112,7 @@ def sniff(source: Source, format: str = "auto") -> Sniffed:
     head = read_head(source)
     if layout == merlin.LAYOUT or (layout == "csv" and merlin.matches(head)):
         return Sniffed(merlin.LAYOUT, head)  # its table is found per specimen when read
-    for known in (lvm, catman, rigol, tektronix, gwinstek):  # known by their first lines
+    for known in (lvm, catman, rigol, tektronix, gwinstek, isomme):  # known by their headers
         if layout == known.LAYOUT or (layout == "csv" and known.matches(head)):
             return Sniffed(known.LAYOUT, head, known.table_spec(head))
     refuse_document(head.lines, source.name)
