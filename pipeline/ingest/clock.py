@@ -75,7 +75,7 @@ _FORMS = {
         r"|(?:0?[1-9]|1[0-2]):\d{2}:\d{2}(?:[.,]\d+)? *[AaPp]\.?[Mm]\.?) *"),
     "date and time": re.compile(
         r" *(?:\d{4}(?P<sep>[-/])\d{2}(?P=sep)\d{2}|\d{2}\.\d{2}\.\d{4})"
-        r"[T _-]\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)?(?:Z|[+-]\d{2}:?\d{2})? *"),
+        r"[T _-]\d{1,2}:\d{2}:\d{2}(?:[.,]\d+)?(?:Z|[+-]\d{2}:?\d{2}| ?UTC)? *"),
     "minutes and seconds": re.compile(r" *(?:\d+:)?\d+:\d{2}[.,]\d+ *"),
 }
 #: The parts of an elapsed time (RE2, for pyarrow), its decimal comma made a point.
@@ -102,8 +102,11 @@ _ARROW_FORMS = {
 #: hour (a regular expression and its replacement, RE2 reading ``\10`` as group 1, "0").
 _PLAIN_REWRITES = (("/", "-"), (",", "."))
 _ONE_DIGIT_HOUR = (r"([T ])(\d):", r"\10\2:")
-#: A date and time's offset from UTC (ISO 8601: ``Z``, ``+01:00``, ``-0500``).
-_UTC_OFFSET = re.compile(r"(?:Z|[+-]\d{2}:?\d{2}) *$")
+#: A date and time's offset from UTC (ISO 8601: ``Z``, ``+01:00``, ``-0500``; a cloud
+#: logger's ``UTC``, as ThingSpeak writes ``2021-03-04 10:15:02 UTC``).
+_UTC_OFFSET = re.compile(r"(?:Z|[+-]\d{2}:?\d{2}| ?UTC) *$")
+#: ``UTC`` after a date and time, rewritten as ISO 8601's ``Z`` (RE2).
+_UTC_WORD = (r" ?UTC$", "Z")
 #: Milliseconds after a colon (a press's ``09:39:48:776``), rewritten after a point.
 _COLON_MILLISECONDS = (r"^(.*\d:\d{2}:\d{2}):(\d{3})$", r"\1.\2")
 #: A date joined to its time by "-" or "_" (a load-cell logger's ``2018-11-15-09:30:25.349``),
@@ -115,7 +118,7 @@ _DAY_FIRST_DATE = (r"^(\d{2})\.(\d{2})\.(\d{4})", r"\3-\2-\1")
 _CLOCK_LIKE = re.compile(r"\d{1,2}:\d{2}")
 #: The hint for a clock reading in a form that is not read.
 READ_FORMS = ("H:MM:SS.fff (or H:MM:SS:fff), YYYY-MM-DD H:MM:SS.fff (also with a UTC "
-              "offset), YYYY/MM/DD H:MM:SS.fff, DD.MM.YYYY H:MM:SS.fff, D/M/YYYY or "
+              "offset or UTC), YYYY/MM/DD H:MM:SS.fff, DD.MM.YYYY H:MM:SS.fff, D/M/YYYY or "
               "M/D/YYYY (or YY) H:MM:SS.fff, each also with AM or PM, and M:SS.fff, with "
               "'.' or ',' before the fraction")
 UNREAD_FORM_HINT = (
@@ -332,6 +335,7 @@ class ClockColumn:
                 column = pc.replace_substring(column, old, new)
             column = pc.replace_substring_regex(column, *_DATE_TIME_JOINT)
             column = pc.replace_substring_regex(column, *_ONE_DIGIT_HOUR)
+            column = pc.replace_substring_regex(column, *_UTC_WORD)
         if self.unpadded is not None:
             for pattern, padded in _PAD_MILLISECONDS:
                 column = pc.replace_substring_regex(column, pattern, padded)

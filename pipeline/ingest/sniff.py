@@ -1053,16 +1053,17 @@ def _names_with_numbers(row: list[str], kind: str, decimal: str, width: int) -> 
     return names >= 2 and names > numbers
 
 
-#: A file's name or path: a DIC export names each frame's image in a column of its own
-#: (``S1-00001_0.tif``), one row a frame.
-_FILE_NAME = re.compile(r"[\\/]|\.\w{2,4}$")
+#: An image's file name: a DIC export names each frame's image in a column of its own
+#: (``S1-00001_0.tif``), one row a frame (a nanoindenter's results name each indent's
+#: file, ``0000 LC.hys``, one row a test).
+_FILE_NAME = re.compile(r"\.(?:tiff?|png|jpe?g|bmp|raw|dng)$", re.IGNORECASE)
 
 
 def _labels_of_rows(rows: list[list[str]], kinds: list[str], texts: frozenset[int],
                     names: list[str]) -> tuple[str, ...]:
     """The warning of a text column (of `texts`) that gives each of the head's first data
-    `rows`, three at least, a label of its own (not a file's name, as a DIC export's
-    frames have), in a table without a time: such rows are likely specimens (a table of
+    `rows`, three at least, a label of its own (not an image's file name, as a DIC
+    export's frames have), in a table without a time: such rows are likely specimens (a table of
     results or settings, a DAQ's gains per specimen), not the samples of one test."""
     data = [row for row, kind in zip(rows, kinds, strict=False) if kind == "numeric"
             ][:TEXT_ROWS]

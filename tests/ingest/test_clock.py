@@ -206,6 +206,15 @@ def test_date_times_at_their_offset_from_utc_count_on_as_utc(write):
     np.testing.assert_allclose(rows["time"], [1.0, 1.5], rtol=0, atol=1e-9)
 
 
+def test_date_times_marked_utc_are_read(write):
+    # ThingSpeak's created_at: "2021-03-04 10:15:02 UTC"
+    cells = ["2021-03-04 10:15:02 UTC", "2021-03-04 10:15:17 UTC", "2021-03-04 10:15:32 UTC"]
+    text = "Time,Load (kN)\n" + "".join(f"{cell},{i}\n" for i, cell in enumerate(cells))
+    table, meta = read_table(write("feed.csv", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], [0.0, 15.0, 30.0])
+    assert meta.warnings[0].endswith("each at its offset from UTC")
+
+
 def test_a_reading_not_in_the_first_rows_arrow_form_is_named(write):
     # the first reading in pyarrow's own form: the column is parsed as such, and a
     # reading written otherwise further down is named, not misread
