@@ -247,7 +247,8 @@ SIGN_CONVENTION_WORDS = frozenset({"compressive", "tensile"})
 #: acceleration (a drop tower's ``Deformation Acceleration (m/s^2)``, no deformation), a
 #: strain of a DIC field other than along the specimen (``mises_strain``, an equivalent
 #: strain; a shear strain) and a
-#: torque (a drive rig's ``torque (nm)``, newton metres in lower case, no nanometres). Such
+#: torque (a drive rig's ``torque (nm)``, newton metres in lower case, no nanometres), a
+#: logger's stamps of a state's last change (``last_changed``, no German load). Such
 #: a column takes no role, not even from its unit.
 OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points count",
                         "reading count", "readings count", "scan count", "pip count", "temp",
@@ -256,6 +257,7 @@ OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points 
                         "aceleración", "aceleração", "accelerazione", "mises strain",
                         "von mises strain", "equivalent strain", "effective strain",
                         "shear strain", "vergleichsdehnung", "cop", "center of pressure",
+                        "last changed", "last updated", "last reset", "last seen",
                         "centre of pressure", "torque", "drehmoment",
                         "moment obrotowy", "momento torsor", "couple moteur", "扭矩", "トルク",
                         "토크", "крутящий момент")

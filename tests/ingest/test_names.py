@@ -38,6 +38,7 @@ from pipeline.ingest.names import (
         # plate's centre of pressure are no measurements
         ("True Strain", None), ("Engineering Strain", "gauge"), ("gain load", None),
         ("Sensitivity", None), ("FP1_COP_X", None), ("Thrust", "force"),
+        ("last_changed", None), ("last_reset_ts", None), ("Last", "force"),
         # a salt-consolidation rig's logger writes its names in camel case
         ("Längung", "gauge"), ("Längenänderung", "gauge"),  # a German wear rig's elongation
         ("SmallLVDT", "gauge"), ("LargeLVDT", "gauge"), ("DilaFBK", None), ("ConfP", None),
