@@ -106,6 +106,9 @@ class _Sheet:
     ("Axial Segment Count", "counts segments"),  # MTS: two a cycle, kept as counted
     ("Count (segments)", "counts segments"),
     ("Count (kcycles)", "cannot scale"),
+    # a counter in thousands by its name: read as cycles, a wear rate 1000 times too high
+    ("Cycles x1000", "cannot scale"), ("Zyklen in Tsd", "cannot scale"),
+    ("Thousand cycles", "cannot scale"),
 ])
 def test_a_wear_logs_counter_of_segments_or_of_scaled_cycles_is_refused(
         tmp_path, header, refused):

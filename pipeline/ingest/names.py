@@ -275,8 +275,15 @@ _BRACKETED = re.compile(r"^(?P<name>.*?)\s*(?:\[(?P<sq>[^\[\]]*)\]|\((?P<par>[^(
 _SERIAL = re.compile(r"\b(?:S/N|SN|serial)\b|^\s*\d+\s*$", re.IGNORECASE)
 #: The suffix pandas gives a repeated name, after a unit in brackets (``Force (N).1``).
 _PANDAS_COPY = re.compile(r"(?P<head>.*\S\s*[\])>])(?P<suffix>\.\d+)")
-#: A percent sign before a name (a fibre tester's ``% Strain``, ``% Elongation``): its unit.
-_PERCENT_FIRST = re.compile(r"%\s*(?P<name>[^\W\d_].*)")
+#: A count in thousands said by its name (``Cycles x1000``, ``Zyklen in Tsd``, ``Thousand
+#: cycles``, ``kCycles``): its unit, ``x1000``, which no counter is read in.
+_THOUSANDS_COUNT = re.compile(
+    r"(?P<name>.*?\S)\s*(?:[x×*]\s*1[ ,.']?000|/\s*1[ ,.']?000|\(\s*[x×*]\s*1[ ,.']?000\s*\)"
+    r"|in\s+(?:thousands?|tsd\.?))|(?:thousands?\s+(?:of\s+)?|tsd\.?\s+|k)(?P<counted>"
+    r"cycles?|zyklen|lastwechsel)", re.IGNORECASE)
+#: A percent sign and a blank before a gauge's name (a fibre tester's ``% Strain``,
+#: ``% Elongation``): its unit.
+_PERCENT_FIRST = re.compile(r"%\s+(?P<name>[^\W\d_][^_]*)")
 #: A unit after a comma (``Temp, °C``, ``Нагрузка, кН``): one word, no number.
 _COMMA_UNIT = re.compile(r"(?P<name>.*\S),\s+(?P<unit>[^\s\d]\S*)")
 #: The run label PASCO Capstone writes after a column's unit (``Force (N) Run #1``,
@@ -365,8 +372,11 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
     match = _COMMA_UNIT.fullmatch(text)
     if match is not None and spellings(match["unit"]):
         return match["name"], match["unit"]
-    match = _PERCENT_FIRST.fullmatch(text)
+    match = _THOUSANDS_COUNT.fullmatch(text)
     if match is not None:
+        return match["name"] or match["counted"], "x1000"
+    match = _PERCENT_FIRST.fullmatch(text)
+    if match is not None and match_role(match["name"]) == "gauge":  # not MATLAB's "% time_s"
         return match["name"], "%"
     return text, None
 

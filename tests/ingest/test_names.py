@@ -132,7 +132,11 @@ def test_every_listed_name_matches_its_own_role():
         ("Date Time, GMT-06:00", ("Date Time, GMT-06:00", None)),
         ("Force, total", ("Force, total", None)), ("Channel, 1", ("Channel, 1", None)),
         # a fibre tester writes the percent sign first
-        ("% Strain", ("Strain", "%")), ("%Elongation", ("Elongation", "%")), ("%", ("%", None)),
+        ("% Strain", ("Strain", "%")), ("% Elongation", ("Elongation", "%")), ("%", ("%", None)),
+        ("%time_s", ("%time_s", None)), ("% time_s", ("% time_s", None)),  # MATLAB's comment
+        # a counter in thousands by its name
+        ("Cycles x1000", ("Cycles", "x1000")), ("Zyklen in Tsd", ("Zyklen", "x1000")),
+        ("Thousand cycles", ("cycles", "x1000")), ("kCycles", ("Cycles", "x1000")),
     ],
 )
 def test_split_name_unit(cell, expected):
