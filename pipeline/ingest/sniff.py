@@ -929,7 +929,7 @@ def find_table(
         labels = _labels_over(rows[_above(kinds, above)], names)
         labels_over = _above(kinds, above) if len(labels) > 1 else -1
         if labels_over < 0 and kinds[_above(kinds, above)] == "text":
-            names, named = _named_over(names, rows[_above(kinds, above)])
+            names, named = _named_over(names, _text_rows_over(rows, kinds, above))
             names, united = _units_under_names(names, rows[_above(kinds, above)])
             notes += named + united
     units: list[str | None] = [None] * columns
@@ -1185,21 +1185,35 @@ def _settings_beside(rows: list[list[str]], decimal: str, columns: int,
             "waveform's start and step), not samples: check them",)
 
 
-def _named_over(names: list[str], over: list[str]) -> tuple[list[str], tuple[str, ...]]:
+def _text_rows_over(rows: list[list[str]], kinds: list[str], index: int,
+                    most: int = 4) -> list[list[str]]:
+    """The rows of text over row `index`, nearest first, up to `most` of them."""
+    over = []
+    while len(over) < most and (index := _above(kinds, index)) >= 0 and kinds[index] == "text":
+        over.append(rows[index])
+    return over
+
+
+def _named_over(names: list[str], overs: list[list[str]]) -> tuple[list[str], tuple[str, ...]]:
     """`names` with a word they repeat that names no role (an Elsys recorder's
-    ``Zeit;Signal;Signal;Signal`` under ``Kanal;DMS1A (0.A1);DMS1B (0.A2);...``) replaced
-    by the cells of `over`, the row over them, when those name each such column apart; and
-    a note saying so (else `names` and no note)."""
+    ``Zeit;Signal;Signal;Signal`` under ``Kanal;DMS1A (0.A1);DMS1B (0.A2);...``; a Visual3D
+    export's components ``X;X;X`` under rows of types, under ``FZsum;FZsum_1Hz;...``)
+    replaced by the cells of the nearest row of `overs` (the rows of text over them,
+    nearest first) that names each such column apart; and a note saying so (else `names`
+    and no note)."""
     counts = Counter(name.strip() for name in names if name.strip())
     repeated = [index for index, name in enumerate(names) if counts[name.strip()] > 1
                 and not match_role(name) and split_name_unit(name)[1] is None]
-    cells = [over[index].strip() if index < len(over) else "" for index in repeated]
-    if not repeated or not all(cells) or len(set(cells)) < len(cells):
-        return names, ()
-    renamed = dict(zip(repeated, cells, strict=True))
-    return ([renamed.get(index, name) for index, name in enumerate(names)],
-            (f"the columns named {names[repeated[0]].strip()!r} alike are named by the row "
-             f"over them: {', '.join(map(repr, cells))}",))
+    for nearest, over in enumerate(overs if repeated else ()):
+        cells = [over[index].strip() if index < len(over) else "" for index in repeated]
+        if all(cells) and len(set(cells)) == len(cells):
+            renamed = dict(zip(repeated, cells, strict=True))
+            row = "the row over them" if nearest == 0 else "a row higher up"
+            return ([renamed.get(index, name) for index, name in enumerate(names)],
+                    (f"the columns named {names[repeated[0]].strip()!r} alike are named by "
+                     f"{row}: {', '.join(map(repr, cells[:6]))}"
+                     + (", ..." if len(cells) > 6 else ""),))
+    return names, ()
 
 
 def _units_under_names(names: list[str], over: list[str]) -> tuple[list[str], tuple[str, ...]]:

@@ -906,6 +906,18 @@ def test_a_unit_column_of_two_units_gives_none(write):
         "its unit" in said
 
 
+def test_components_named_alike_are_named_by_a_row_higher_up(write):
+    # a Visual3D export: the signals' names, their types, then a components row "X X X"
+    text = ("\tC:\\F02.txt\tC:\\F02.txt\tC:\\F02.txt\n\tFZsum\tFZsum_1Hz\tFZsum_2Hz\n"
+            "\tDERIVED\tDERIVED\tDERIVED\n\tPROCESSED\tFILTER\tFILTER\nITEM\tX\tX\tX\n"
+            "1\t723.38\t723.42\t722.12\n2\t724.60\t723.42\t722.12\n")
+    _, meta = read_table(write("F02_CTRL2.txt", text), kind="tensile", strict=False)
+    assert [column.name for column in meta.columns] == [
+        "ITEM", "FZsum", "FZsum_1Hz", "FZsum_2Hz"]
+    assert ("the columns named 'X' alike are named by a row higher up: 'FZsum', 'FZsum_1Hz', "
+            "'FZsum_2Hz'" in meta.warnings)
+
+
 def test_columns_named_alike_are_named_by_the_row_over_them(write):
     # they could not be told apart: naming one in the run sheet was refused
     table, meta = read_table(write("shot.asd", RECORDER), kind="engagement",
