@@ -66,6 +66,17 @@ def test_none_marks_a_missing_value(write):
     assert table["gauge_1"].isna().tolist() == [False, True]
 
 
+def test_infinite_values_are_told_with_their_first_line(write):
+    # a script's log: numpy writes an overflow or a division by zero as inf, -inf
+    text = HEADER + rows((0, -1, 0.1), (1, "inf", 0.2), (2, "", "-inf"), (3, "-inf", 0.4))
+    table, meta = read_table(write("script.csv", text))
+    assert np.isinf(table["force"]).sum() == 2 and np.isinf(table["gauge_1"]).sum() == 1
+    assert ("force: 2 infinite values (Inf or -Inf, a script's overflow or division by "
+            "zero), the first at line 3") in meta.warnings
+    assert ("gauge_1: 1 infinite values (Inf or -Inf, a script's overflow or division by "
+            "zero), the first at line 4") in meta.warnings
+
+
 @pytest.mark.parametrize("error", ["#VALUE!", "#DIV/0!", "#REF!", "#NUM!", "#NAME?", "#NULL!"])
 def test_a_spreadsheet_formulas_error_value_marks_a_missing_value(write, error):
     # a structures lab's record worked over in Excel: a failed formula in the first row was
