@@ -24,7 +24,7 @@ import csv
 import re
 import unicodedata
 from collections import Counter
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from itertools import islice
 from pathlib import PureWindowsPath
@@ -604,6 +604,12 @@ def detect_dialect(
                 file=name,
                 hint="export the test with its time (or its displacement) beside the force",
             )
+        complex_cells = _cells_like(sample, _COMPLEX)
+        if complex_cells:
+            raise LayoutError(
+                "the cells hold complex numbers (" + ", ".join(map(repr, complex_cells))
+                + "): the readers read real numbers", file=name,
+                hint="save the real parts (MATLAB's real(x), numpy's x.real)")
         marked = _numbers_with_units(sample)
         if marked:
             raise LayoutError(
@@ -692,14 +698,26 @@ _NUMBER_AND_UNIT = re.compile(r" *[+-]?\d+(?:[.,]\d+)?(?:[eE][+-]?\d+)? *"
                               r"(?P<unit>%|[^\W\d_][^\s,;\t|]*) *")
 
 
+#: A complex number, as MATLAB or numpy writes it (``839.890+0i``, ``(1.5-2j)``).
+_COMPLEX = re.compile(r" *\(?[-+]?\d+(?:\.\d*)?(?:[eE][-+]?\d+)?[-+]\d+(?:\.\d*)?"
+                      r"(?:[eE][-+]?\d+)?[ij]\)? *")
+
+
 def _numbers_with_units(sample: list[str]) -> list[str]:
     """Up to three cells of numbers with their unit (:data:`_NUMBER_AND_UNIT`, a unit pint
     reads) when most of the `sample` lines, split at any delimiter, hold one; else none."""
+    return _cells_like(sample, _NUMBER_AND_UNIT, lambda match: bool(spellings(match["unit"])))
+
+
+def _cells_like(sample: list[str], form: re.Pattern,
+                accept: Callable[[re.Match], bool] = bool) -> list[str]:
+    """Up to three cells of `form` (that `accept` accepts) when most of the `sample` lines,
+    split at any delimiter, hold one; else none."""
     found = []
     for line in sample:
         cells = [cell.strip() for delimiter in DELIMITERS if delimiter != BLANKS
                  for cell in split_fields(line, delimiter)
-                 if (match := _NUMBER_AND_UNIT.fullmatch(cell)) and spellings(match["unit"])]
+                 if (match := form.fullmatch(cell)) and accept(match)]
         if cells:
             found.append(cells[0])
     return list(dict.fromkeys(found))[:3] if 2 * len(found) > len(sample) else []

@@ -187,6 +187,15 @@ def test_numbers_with_their_unit_in_each_cell_are_refused_as_such(write, rows, s
                                     f"them ({shown}): the readers read bare numbers")
 
 
+def test_complex_numbers_are_refused_as_such(write):
+    # a MATLAB script wrote its force through a complex intermediate
+    text = "time_s,force_N\n" + "".join(f"{i}+0i,{839.9 + i:.3f}+0i\n" for i in range(5))
+    with pytest.raises(LayoutError) as caught:
+        read_table(write("rig.csv", text))
+    assert caught.value.message == ("the cells hold complex numbers ('0+0i', '1+0i', '2+0i'): "
+                                    "the readers read real numbers")
+
+
 def test_header_only_is_empty(tmp_path):
     with pytest.raises(EmptyFileError, match="no data rows"):
         detect_dialect(["Machine : Amsler", "", "time [s],force [kN]"], tmp_path)
