@@ -35,10 +35,11 @@ _DIMENSION = {**_ROLE_DIMENSION, "length": ureg.meter.dimensionality,
 
 #: The range of SI factors a unit of each role may have. Pint reads ``"a"`` as a year,
 #: ``"pcs"`` as parsecs, ``"Min"`` as mega-inches and ``"Ms"`` as megaseconds, which no
-#: testing machine logs in (a day is the longest time unit read):
+#: testing machine logs in (a day is the longest time unit read; a length in kilometres is
+#: a distance run, an odometer's, no gauge nor chain length):
 #: without this, ``"A"`` (amperes, in lower case) would make a current a time.
 _SI_FACTOR_RANGE = {
-    "time": (1e-9, 1e5), "gauge": (1e-9, 1e3), "length": (1e-9, 1e3), "speed": (1e-9, 1e3),
+    "time": (1e-9, 1e5), "gauge": (1e-9, 1e2), "length": (1e-9, 1e2), "speed": (1e-9, 1e3),
     **dict.fromkeys(("force", "segment_force_1", "segment_force_2", "side_force"), (1e-6, 1e9)),
 }
 

@@ -81,6 +81,7 @@ def test_unit_role(unit, role):
         "rpm", "lx",  # a rotation speed or an illuminance is not an angle
         "Mm", "Ms",  # megametres and megaseconds: refused rather than read a million-fold
         "g", "kg", "lb",  # a mass makes a force only in a column named as one
+        "km", "mi",  # a distance run (a wear rig's odometer) is no gauge
     ],
 )
 def test_units_a_lab_means_otherwise_give_no_role(unit):
