@@ -24,6 +24,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
             "extension", "displacement", "disp", "gauge", "elongation", "extensometer", "ext",
             "deflection", "position", "stroke", "crosshead", "lvdt", "dial", "strain",
             "actuator", "piston", "clip gauge", "ave", "video extensometer", "travel",
+            "stretch", "chain stretch",
         ),
         "angle": ("angle", "encoder", "rotation"),
         "cycle_count": ("cycle", "cycles", "cycle count", "segment count"),
