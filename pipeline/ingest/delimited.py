@@ -106,6 +106,9 @@ UNITS_ROW_KEYS = frozenset({"engineering unit", "engineering units", "unit", "un
 #: (not ``s``, which a German export gives a displacement, nor ``min``, a minimum, nor
 #: ``ms``, which a KEYENCE logger gives the milliseconds of its date-time column).
 TIME_UNIT_NAMES = frozenset({"sec", "secs", "seconds", "minutes", "mins", "hours", "hrs"})
+#: Words before a unit of time that name a machine's running time (``Operating hours``,
+#: ``Run hours``): the column holds that time in the unit.
+RUNNING_WORDS = frozenset({"operating", "run", "running", "test"})
 #: Column names of a microcontroller's clock call, folded, and the unit it counts in:
 #: Arduino's ``millis()`` and ``micros()``, an HX711 logger's first column.
 CLOCK_CALL_UNITS = {"millis": "ms", "micros": "µs"}
@@ -219,10 +222,13 @@ def time_unit_named(name: str) -> str | None:
     A name that is a unit of time (:data:`TIME_UNIT_NAMES`), alone or beside
     ``elapsed`` (a phone logger's ``seconds_elapsed``; beside ``elapsed``, ``ms``,
     ``s``, ``min`` and ``h`` are units too): the column holds the time in it. So does
-    a microcontroller's clock call (:data:`CLOCK_CALL_UNITS`), in its unit.
+    a microcontroller's clock call (:data:`CLOCK_CALL_UNITS`), in its unit, and a
+    machine's running time in a unit of time (:data:`RUNNING_WORDS`).
 
     >>> time_unit_named("seconds_elapsed"), time_unit_named("elapsed_ms"), time_unit_named("ms")
     ('seconds', 'ms', None)
+    >>> time_unit_named("Operating hours"), time_unit_named("Cycle hours")
+    ('hours', None)
     >>> time_unit_named("millis()")
     'ms'
     """
@@ -233,6 +239,9 @@ def time_unit_named(name: str) -> str | None:
     units = TIME_UNIT_NAMES | (ELAPSED_UNITS if len(unit) < len(words) else frozenset())
     if len(unit) == 1 and fold(unit[0]) in units and len(words) <= 2:
         return unit[0]
+    if (len(words) == 2 and fold(words[0]) in RUNNING_WORDS
+            and fold(words[1]) in TIME_UNIT_NAMES):  # a wear rig's "Operating hours"
+        return words[1]
     return None
 
 

@@ -18,7 +18,7 @@ from pipeline.ingest.unitparse import spellings
 COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
     "en": {
         "time": ("time", "elapsed time", "test time", "hours", "operating hours", "timestamp",
-                 "time stamp", "seconds", "minutes"),
+                 "time stamp", "seconds", "minutes", "elapsed", "run hours", "running hours"),
         "force": ("force", "load", "tension", "thrust"),
         "gauge": (
             "extension", "displacement", "disp", "gauge", "elongation", "extensometer", "ext",

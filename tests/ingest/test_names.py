@@ -40,6 +40,7 @@ from pipeline.ingest.names import (
         ("Sensitivity", None), ("FP1_COP_X", None), ("Thrust", "force"),
         ("last_changed", None), ("last_reset_ts", None), ("Last", "force"),
         ("Chain stretch", "gauge"),  # a wear log's elongation
+        ("Elapsed", "time"), ("Run hours", "time"), ("Elapsed Cycles", "cycle_count"),
         # a salt-consolidation rig's logger writes its names in camel case
         ("Längung", "gauge"), ("Längenänderung", "gauge"),  # a German wear rig's elongation
         ("SmallLVDT", "gauge"), ("LargeLVDT", "gauge"), ("DilaFBK", None), ("ConfP", None),

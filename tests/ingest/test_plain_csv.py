@@ -199,6 +199,14 @@ def test_an_arduino_clock_call_names_the_time_and_its_unit(write):
     assert "column 'millis': unit 'ms' from its name" in meta.warnings
 
 
+def test_a_machines_running_hours_hold_the_time_in_hours(write):
+    # a chain wear rig's log: the elongation read at the running hours
+    text = "Operating hours,Elongation (%)\n0,0.00\n50,0.12\n100,0.21\n"
+    table, meta = read_table(write("wear.csv", text), kind="wear")
+    np.testing.assert_allclose(table["time"], [0.0, 180_000.0, 360_000.0])
+    assert "column 'Operating hours': unit 'hours' from its name" in meta.warnings
+
+
 def test_a_unit_of_time_beside_elapsed_in_a_name(write):
     # a real phone-logger export (Sensor Logger): epoch nanoseconds beside seconds elapsed
     text = ("time,seconds_elapsed,z,y,x\n"
