@@ -883,12 +883,12 @@ def find_table(
     if units_index is None and above >= 1 and all(
             _SETTING.match(lines[index]) for index in (above - 1, above)):
         preamble_end, above = data, -1  # the last of a block of settings: no names row
-    if above >= 0 and _names_with_numbers(rows[above], kinds[above], decimal, width):
+    if above >= 0 and kinds[above] != "text" and units_index is None:
+        if not _names_with_numbers(rows[above], kinds[above], decimal, width):
+            raise _no_names_row(name, data, delimiter)
         notes += (f"line {above + 1}: the names row holds numbers among its names ("
                   + ", ".join(repr(cell.strip()) for cell in rows[above]
                               if is_number(cell, decimal)) + "): read as names",)
-    elif above >= 0 and kinds[above] != "text" and units_index is None:
-        raise _no_names_row(name, data, delimiter)
     names_line = lines[above] if above >= 0 else ""
     if names_line.startswith(COMMENT_MARK):  # a names row written as a comment
         names_line = names_line[len(COMMENT_MARK):]
@@ -1081,8 +1081,9 @@ def _labels_of_rows(rows: list[list[str]], kinds: list[str], texts: frozenset[in
                     names: list[str]) -> tuple[str, ...]:
     """The warning of a text column (of `texts`) that gives each of the head's first data
     `rows`, three at least, a label of its own (not an image's file name, as a DIC
-    export's frames have), in a table without a time: such rows are likely specimens (a table of
-    results or settings, a DAQ's gains per specimen), not the samples of one test."""
+    export's frames have), in a table without a time: such rows are likely specimens (a
+    table of results or settings, a DAQ's gains per specimen), not the samples of one
+    test."""
     data = [row for row, kind in zip(rows, kinds, strict=False) if kind == "numeric"
             ][:TEXT_ROWS]
     for index in sorted(texts):
