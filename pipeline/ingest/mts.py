@@ -254,7 +254,8 @@ def _one_test(head: Head, marked: _Marked, blocks: list[_Block], tests: list[_Bl
     lines = [test.lines.start for test in tests]
     at = f"line{'s' if len(lines) > 1 else ''} {', '.join(map(str, lines))}"
     said = (f"the file holds {len(tests) + 1} tests (specimens, or a test's steps) one below "
-            f"the other, each timed from its own start: the time starts again at {at}"
+            f"the other, each timed from its own start: the time starts again in the "
+            f"block{'s' if len(lines) > 1 else ''} from {at}"
             if timed else
             f"the file holds {len(tests) + 1} tables one below the other, each under its "
             f"own names (at {at}), and without one time column to tell one test's blocks from "

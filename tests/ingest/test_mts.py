@@ -173,7 +173,7 @@ def test_tests_one_after_another_are_read_one_at_a_time_not_joined(write):
     assert caught.value.row == 24  # "Specimen 2": 2 lines, 20 samples and a blank line above
     assert caught.value.message.startswith(
         "the file holds 3 tests (specimens, or a test's steps) one below the other, each "
-        "timed from its own start: the time starts again at lines 24, 47")
+        "timed from its own start: the time starts again in the blocks from lines 24, 47")
     assert "a file of its own" in caught.value.hint
     for test in (1, 2, 3):
         table, meta = read_table(path, specimen=test)
