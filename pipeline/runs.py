@@ -48,7 +48,7 @@ from pipeline.fit.wear import (
 )
 from pipeline.ingest import TableMetadata, open_log, read_table
 from pipeline.ingest.names import tokens
-from pipeline.ingest.unitparse import COUNTER_UNITS
+from pipeline.ingest.unitparse import is_counter_unit
 from pipeline.results import EngagementResult, TensileResult, WearResult
 from pipeline.results.engagement import MAX_STORED_SAMPLES
 from pipeline.results.roller_engagement import RollerEngagementResult
@@ -492,7 +492,7 @@ def _check_counter(sheet: RunSheet, run: RunDef, metadata: TableMetadata) -> Non
         unit = (column.unit or "").strip().strip("()[]").strip()
         if column.role != "cycle_count":
             continue
-        if unit.lower() not in COUNTER_UNITS:
+        if not is_counter_unit(unit):
             raise UnitError(
                 f"the cycle counter has the unit {column.unit!r}, which chainbench cannot "
                 "scale: counts are kept as counted", file=sheet.run_file(run),

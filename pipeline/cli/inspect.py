@@ -139,6 +139,7 @@ def slow_for_impacts(rate: float | None) -> str | None:
 def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
     """What ``inspect`` prints, as a JSON-ready mapping."""
     from pipeline.condition.segmentation import count_cycles
+    from pipeline.ingest.unitparse import is_counter_unit
 
     cycles = count_cycles(table["force"].to_numpy()) if "force" in table else None
     held = counted_cycles(table, metadata)
@@ -149,6 +150,10 @@ def summary(table: pd.DataFrame, metadata: TableMetadata) -> dict:
             f"the machine's counter runs from {held[0]:g} to {held[-1]:g}, and the file "
             f"holds {held.size} of those cycles: the machine logged some cycles only"
         )
+    warnings += [f"the cycle counter {column.name!r} has the unit {column.unit!r}, which "
+                 "chainbench cannot scale: a run refuses it (log the cycles as a plain count)"
+                 for column in metadata.columns
+                 if column.role == "cycle_count" and not is_counter_unit(column.unit)]
     if cycles is not None and counted is not None and cycles != counted:
         warnings.append(
             f"the force signal shows {cycles} load cycle(s), the machine's counter {counted}"

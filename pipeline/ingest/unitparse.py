@@ -55,6 +55,16 @@ _COUNTED_CYCLES = re.compile(r"(?:k|m|kilo|mega)?(?:" + "|".join(sorted(CYCLE_UN
 #: Units a machine's own counter may carry; the counter is kept as counted.
 COUNTER_UNITS = CYCLE_UNITS | {"", "1", "-", "#", "n", "count", "counts"}
 
+def is_counter_unit(text: str | None) -> bool:
+    """Whether `text` (bracketed or not) is a unit a counter is kept in as counted
+    (:data:`COUNTER_UNITS`); ``kcycles`` or a name's ``x1000`` would scale it.
+
+    >>> is_counter_unit("(cycles)"), is_counter_unit(None), is_counter_unit("x1000")
+    (True, True, False)
+    """
+    return (text or "").strip().strip("()[]").strip().lower() in COUNTER_UNITS
+
+
 #: Units-row cells that stand for no unit: Siglent oscilloscopes write ``Value`` over each
 #: channel beside ``Second`` over the time; a Campbell Scientific TOA5 file ``TS`` over its
 #: time stamp and ``RN`` over its record number; a Graphtec logger ``NO.`` over its sample

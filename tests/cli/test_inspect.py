@@ -67,6 +67,17 @@ def test_rows_sent_in_bursts_are_told_beside_the_median_steps_rate(tmp_path):
             f"{1 / mean_step:.4g} Hz") in report["warnings"][0]
 
 
+@pytest.mark.parametrize("header", ["Cycles (kcycles)", "Cycles x1000"])
+def test_a_counter_in_a_unit_that_scales_it_is_told_as_a_run_would_refuse_it(tmp_path,
+                                                                            header):
+    path = tmp_path / "wear.csv"
+    path.write_text(f"Time (h),{header},Length (mm)\n0,0,500\n1,1,500.1\n2,2,500.2\n")
+    unit = "kcycles" if "kcycles" in header else "x1000"
+    assert (f"the cycle counter 'Cycles' has the unit {unit!r}, which chainbench cannot "
+            "scale: a run refuses it (log the cycles as a plain count)"
+            ) in inspect_json("--kind", "wear", str(path))["warnings"]
+
+
 def test_a_counter_that_skips_cycles_is_named(tmp_path):
     # a real fatigue log's counter: cycles 0 to 3 logged, then 110
     path = tmp_path / "fatigue.csv"
