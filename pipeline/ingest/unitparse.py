@@ -101,8 +101,9 @@ def is_micro_alone(text: str | None) -> bool:
 
 
 #: What to tell a user whose unit is not understood.
-ACCEPTED_UNITS = ("N, kN, daN, kgf (kG), tf, lbf, g (in a force column); mm, µm (um), m, in; "
-                  "%, mm/mm, µε (microstrain) for a strain; s, ms, min, h; deg, rad; m/s")
+ACCEPTED_UNITS = ("N, kN, daN, mN, µN (uN), kgf (kG), tf, lbf, gf, g (in a force column); "
+                  "mm, µm (um), nm, m, in; %, mm/mm, µε (microstrain) for a strain; s, ms, "
+                  "min, h; deg, rad; m/s")
 
 
 def spellings(text: str) -> list[str]:
