@@ -492,7 +492,7 @@ def _check_counter(sheet: RunSheet, run: RunDef, metadata: TableMetadata) -> Non
         unit = (column.unit or "").strip().strip("()[]").strip()
         if column.role != "cycle_count":
             continue
-        if not is_counter_unit(unit):
+        if not is_counter_unit(column.unit):
             raise UnitError(
                 f"the cycle counter has the unit {column.unit!r}, which chainbench cannot "
                 "scale: counts are kept as counted", file=sheet.run_file(run),

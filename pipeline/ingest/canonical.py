@@ -739,13 +739,14 @@ def _settle_units(
 def _report_missing(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> None:
     for name in table.columns:
         values = table[name].to_numpy()
-        if values.size and (np.isinf(np.fmax.reduce(values))  # fmax, fmin: NaN passed over
-                            or np.isinf(np.fmin.reduce(values))):
-            infinite = np.flatnonzero(np.isinf(values))
+        if not values.size or np.isfinite(np.add.reduce(values)):  # no NaN nor Inf: one pass
+            continue
+        infinite = np.flatnonzero(np.isinf(values))
+        if infinite.size:
             warnings.append(f"{name}: {infinite.size} infinite values (Inf or -Inf, a script's "
                             f"overflow or division by zero), the first at "
                             f"{raw.where(int(infinite[0]))}")
-        if not (values.size and np.isnan(values.min())):  # the minimum is NaN if any value is
+        if not np.isnan(values.min()):  # the minimum is NaN if any value is
             continue
         missing = np.isnan(values)
         count = int(np.count_nonzero(missing))

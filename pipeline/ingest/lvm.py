@@ -59,7 +59,7 @@ import numpy as np
 
 from pipeline.errors import EmptyFileError, LayoutError
 from pipeline.ingest.delimited import TextLayout, read_contiguous
-from pipeline.ingest.names import match_role, split_name_unit
+from pipeline.ingest.names import match_role
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.rowindex import code_unit
 from pipeline.ingest.sniff import Head, TableSpec, read_head, split_fields
@@ -206,7 +206,7 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
     if _without_x_column(spec) and 0 in raw.arrays:
         start, step = _axis(tags, spec.decimal, head.name)
         steps = list(dict.fromkeys(value.strip() for value in tags["Delta_X"] if value.strip()))
-        timed = [name for name in spec.names[1:] if match_role(split_name_unit(name)[0]) == "time"]
+        timed = [name for name in header.names[1:] if match_role(name) == "time"]
         if len(steps) > 1 and timed:
             header.metadata.warnings.append(
                 f"no time is built from the channels' Delta_X: they differ ({', '.join(steps)}), "

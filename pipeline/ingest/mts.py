@@ -93,7 +93,8 @@ def matches(head: Head, spec: TableSpec) -> bool:
     openers = _block_openers(head, spec)
     names = _unlabelled(head.lines[spec.header_index], spec.delimiter)
     return (head.lines[0].lstrip().startswith("MTS")
-            or any(_unlabelled(line, spec.delimiter) == names for line in later)
+            or any(names in line and _unlabelled(line, spec.delimiter) == names
+                   for line in later)
             or any(line.strip() in openers for line in later))
 
 

@@ -258,8 +258,8 @@ OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points 
                         "aceleración", "aceleração", "accelerazione", "mises strain",
                         "von mises strain", "equivalent strain", "effective strain",
                         "shear strain", "vergleichsdehnung", "cop", "center of pressure",
-                        "last changed", "last updated", "last reset", "last seen",
-                        "centre of pressure", "torque", "drehmoment",
+                        "centre of pressure", "last changed", "last updated", "last reset",
+                        "last seen", "torque", "drehmoment",
                         "moment obrotowy", "momento torsor", "couple moteur", "扭矩", "トルク",
                         "토크", "крутящий момент")
 #: The labels of :data:`TRANSVERSE_NAMES` and :data:`OTHER_QUANTITY_NAMES` among the role

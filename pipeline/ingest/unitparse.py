@@ -55,6 +55,7 @@ _COUNTED_CYCLES = re.compile(r"(?:k|m|kilo|mega)?(?:" + "|".join(sorted(CYCLE_UN
 #: Units a machine's own counter may carry; the counter is kept as counted.
 COUNTER_UNITS = CYCLE_UNITS | {"", "1", "-", "#", "n", "count", "counts"}
 
+
 def is_counter_unit(text: str | None) -> bool:
     """Whether `text` (bracketed or not) is a unit a counter is kept in as counted
     (:data:`COUNTER_UNITS`); ``kcycles`` or a name's ``x1000`` would scale it.
