@@ -597,6 +597,9 @@ def detect_dialect(
             if score > best[0]:
                 best = (score, delimiter, decimal, width)
     if best[0][0] == 0:
+        steady = steady_text_columns(lines, delimiters)
+        if steady is not None:
+            return steady[:3]
         if _one_column_of_numbers(sample):
             raise LayoutError(
                 "the file holds one column of numbers: a run needs its channels side by "
@@ -681,6 +684,51 @@ def _data_file_named(lines: list[str], name: str) -> str | None:
     return found[-1] if found else None
 
 
+def steady_text_columns(
+    lines: list[str], delimiters: tuple[str, ...] = DELIMITERS
+) -> tuple[str, str, int, frozenset[int]] | None:
+    """The dialect of a table whose rows hold more texts than numbers, and its columns of
+    text: a rig's log of states beside its readings (``...,S1,RUNNING,25.420,24.819,RUN,
+    RUN,SLEEP,Test started (S1).``), a database's rows of labels beside the measurements.
+
+    Most of the head's last lines, split at a delimiter, are rows of one width with two
+    numbers (or clock readings) at least, whose cells are text or missing in the same
+    columns in every row, and numbers outnumber texts in the other columns. None when no
+    delimiter gives such rows.
+
+    Returns
+    -------
+    delimiter, decimal : str
+        The dialect.
+    width : int
+        The number of fields of the rows.
+    texts : frozenset of int
+        The columns of text, left out when rows are told numeric (:func:`row_kind`).
+    """
+    sample = [line for line in lines if line.strip()][-DIALECT_LINES:]
+    best: tuple[int, tuple[str, str, int, frozenset[int]] | None] = (0, None)
+    for delimiter in delimiters:
+        if delimiter == BLANKS:
+            continue  # a sentence splits at its blanks into words and numbers
+        rows = [split_fields(line, delimiter) for line in sample]
+        for decimal in ".,":
+            numbered = [row for row in rows if sum(
+                is_number(cell, decimal) or looks_like_clock(cell) for cell in row) >= 2]
+            if not numbered:
+                continue
+            width = Counter(len(row) for row in numbered).most_common(1)[0][0]
+            fitting = [row for row in numbered if len(row) == width]
+            if len(fitting) < 3 or 2 * len(fitting) <= len(sample) or len(fitting) <= best[0]:
+                continue
+            texts = frozenset(index for index in range(width) if all(
+                is_missing(row[index]) or not (is_number(row[index], decimal)
+                                               or looks_like_clock(row[index]))
+                for row in fitting) and not all(is_missing(row[index]) for row in fitting))
+            if texts and all(_numeric_row(row, decimal, skip=texts) for row in fitting):
+                best = (len(fitting), (delimiter, decimal, width, texts))
+    return best[1]
+
+
 def _text_in_every_row(sample: list[str], delimiters: tuple[str, ...]) -> list[str]:
     """The text cells of the last row, when a delimiter splits every row of `sample`
     into as many fields, with numbers in each (a table with columns of text); else []."""
@@ -736,8 +784,10 @@ def _balance(row: list[str], decimal: str) -> int:
     return sum(1 if is_number(cell, decimal) else 0 if is_missing(cell) else -1 for cell in row)
 
 
-def _numeric_row(row: list[str], decimal: str, blanks: bool = False) -> bool:
-    """At least two fields, and more numbers (or clock readings, read or not) than texts.
+def _numeric_row(row: list[str], decimal: str, blanks: bool = False,
+                 skip: frozenset[int] = frozenset()) -> bool:
+    """At least two fields, and more numbers (or clock readings, read or not) than texts,
+    the columns `skip` (of text in every row, :func:`steady_text_columns`) left out.
 
     A text cell is allowed so that a table with a text column (a date, a
     status) is still found; its text column takes no role. A clock reading counts only
@@ -749,7 +799,9 @@ def _numeric_row(row: list[str], decimal: str, blanks: bool = False) -> bool:
     """
     numbers = texts = 0
     after_number = False
-    for cell in row:
+    for index, cell in enumerate(row):
+        if index in skip:
+            continue
         if is_number(cell, decimal) or (looks_like_clock(cell) and not _OTHER_FIELDS.search(cell)):
             numbers += 1
             after_number = True
@@ -781,14 +833,15 @@ _NUMBERS_APART = re.compile(r" *[-+]?\d+(?:(?P<blanks> +)(?P<sign>[-+]?)(?P<last
 _OTHER_FIELDS = re.compile(r"[;\t|]")
 
 
-def row_kind(row: list[str], line: str, decimal: str, blanks: bool = False) -> str:
+def row_kind(row: list[str], line: str, decimal: str, blanks: bool = False,
+             skip: frozenset[int] = frozenset()) -> str:
     """``"blank"``, ``"numeric"``, ``"missing"`` (only missing values), ``"partial"``
     (numbers and text: a data row with a bad cell) or ``"text"``. A line of
     delimiters only (``"\t\t"``) is a row of missing values, not a blank line.
     `blanks`: the row is of a table aligned by blanks (:data:`BLANKS`)."""
     if not line.strip(" "):
         return "blank"
-    if _numeric_row(row, decimal, blanks):
+    if _numeric_row(row, decimal, blanks, skip):
         return "numeric"
     if len(row) >= 2 and all(is_missing(cell) for cell in row):
         return "missing"
@@ -825,11 +878,11 @@ def find_table(
     """
     # Rows are classified from the top, as far as it takes to find the table (the head
     # holds thousands of lines; the table usually starts within the first few).
-    limit = FIND_LINES
+    limit, skip = FIND_LINES, frozenset()
     while True:
         rows = [split_fields(line, delimiter) for line in lines[:limit]]
         kinds = ["blank" if is_comment(line, delimiter, width) else
-                 row_kind(row, line, decimal, delimiter == BLANKS)
+                 row_kind(row, line, decimal, delimiter == BLANKS, skip)
                  for row, line in zip(rows, lines, strict=False)]
         complete = limit >= len(lines)
         data = _first_data_row(rows, kinds, width, complete=complete)
@@ -838,6 +891,10 @@ def find_table(
         if found is not None:
             data, results = found
             break
+        steady = None if skip or not complete else steady_text_columns(lines, (delimiter,))
+        if steady is not None and steady[1:3] == (decimal, width):
+            skip = steady[3]  # more texts than numbers in each row: columns of text
+            continue
         if complete:  # the dialect is chosen on rows of numbers: some are of this width
             raise LayoutError("no data rows of the table's width", file=name,
                               hint="check the file's delimiter and decimal mark")

@@ -80,15 +80,25 @@ def test_the_header_row_suggested_is_separated_as_the_data_are(text, example):
     assert f"e.g. {example}, or name them in the run sheet by position" in caught.value.hint
 
 
-def test_columns_of_text_in_every_row_are_named_as_the_reason():
-    # a real fatigue-database export: text columns beside the numbers in every row
+def test_columns_of_text_in_every_row_are_passed_over():
+    # a real fatigue-database export: more text columns than numbers in every row
     text = (b'"Cycle Label","Data State","Elapsed Time Sec","Qual State","Strain","Stress Mpa",'
             b'"Count","Sample","Alloy","Material_Form","Heat"\n' + b"".join(
                 b'"Cycle %d","CapPass",%.2f,"Qualified",0.00002,6.47,%d,"43-13","Alloy 617",'
                 b'"Plate",314626\n' % (1 + row // 2, row * 0.02, row + 1) for row in range(4)))
-    with pytest.raises(LayoutError, match=r"every row holds text beside its numbers "
-                                          r"\('Cycle 2', 'CapPass', 'Qualified'\)") as caught:
-        parse_table(text, name="cycles.csv")
+    table, meta = parse_table(text, name="cycles.csv", kind="wear",
+                              columns={"length": "Strain"}, units={"length": "mm"})
+    assert table["time"].tolist() == pytest.approx([0.0, 0.02, 0.04, 0.06])
+    assert table["length"].tolist() == pytest.approx([2e-8] * 4)
+    assert {info.name: info.role for info in meta.columns}["Data State"] is None
+
+
+def test_columns_of_text_that_vary_by_row_are_named_as_the_reason():
+    # the text stands in other columns from row to row: no columns of text to pass over
+    text = b"a,b,c,d\n" + b"".join(b"1,x,y,2\n" if row % 2 else b"x,1,2,y\n"
+                                   for row in range(4))
+    with pytest.raises(LayoutError, match=r"every row holds text beside its numbers ") as caught:
+        parse_table(text, name="mixed.csv")
     assert "columns of text" in caught.value.hint
 
 

@@ -216,6 +216,18 @@ def test_a_header_file_naming_its_data_file_points_to_it(tmp_path):
     assert own.value.hint == "the machine wrote no measurements: export the test again"
 
 
+def test_a_log_of_states_beside_its_readings_is_a_table(tmp_path):
+    # a real hip-wear rig's log: six columns of text, four of numbers and clock readings
+    names = ("wall_time_iso,elapsed_s,elapsed_hhmmss,mode,run_state,temp_s1_c,temp_s2_c,"
+             "side_motor,top_motor_s1,top_motor_s2,message")
+    lines = [names] + [f"2026-03-09T00:19:4{row},{row + 0.19:.2f},00:00:0{row},S1,RUNNING,"
+                       f"25.{row}20,24.819,RUN,RUN,SLEEP,Test started (S1)." for row in range(5)]
+    assert detect_dialect(lines, tmp_path) == (",", ".", 11)
+    spec = find_table(lines, tmp_path, ",", ".", 11)
+    assert (spec.header_index, spec.data_index) == (0, 1)
+    assert spec.texts == frozenset({3, 4, 7, 8, 9, 10})
+
+
 def test_no_numbers_is_layout_error(tmp_path):
     with pytest.raises(LayoutError, match="no table of numbers"):
         detect_dialect(["a,b,c,1,2", "d,e,f,3,4"], tmp_path)
