@@ -770,6 +770,39 @@ def _report_decimal_shifts(table: pd.DataFrame, raw: RawTable, warnings: list[st
             )
 
 
+#: Steps a gauge may take over half its range before its jumps are no longer told (a
+#: fatigue log of peaks and valleys takes one each row).
+JUMPS_TOLD = 3
+
+
+def _report_jump(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> None:
+    """Tell a gauge or length (of a table without time) that crosses over half its range
+    in one step, no more than :data:`JUMPS_TOLD` times, while its median step is under a
+    hundredth of it: a second test appended below the first (the displacement back at its
+    start after the fracture), or a gauge taken off or reset, that no time shows."""
+    for name in table.columns:
+        if not name.startswith(("gauge_", "strain_", "length")):
+            continue
+        values = table[name].to_numpy()
+        steps = np.abs(np.diff(values))
+        finite = steps[np.isfinite(steps)]
+        if finite.size < 10:
+            continue
+        span = float(np.nanmax(values) - np.nanmin(values))
+        jumps = steps > span / 2
+        if not (1 <= np.count_nonzero(jumps) <= JUMPS_TOLD and np.median(finite) < span / 100):
+            continue
+        at = int(np.argmax(jumps)) + 1
+        unit = "" if _si_unit(name) == "1" else " " + _si_unit(name)
+        warnings.append(
+            f"{name}: crosses {steps[at - 1] / span:.0%} of its range in one step, from "
+            f"{values[at - 1]:.4g}{unit} to {values[at]:.4g}{unit} at {raw.where(at)}, where its "
+            f"median step is {np.median(finite) / span:.2%} of it: a second test appended "
+            "below the first, or a gauge taken off or reset? The file has no time to tell; "
+            "give each test its own file")
+        return
+
+
 def _step_extremes(time: np.ndarray, block: int = 1 << 16) -> tuple[float, float]:
     """Smallest and largest step of `time` (NaN when a step is NaN), a block at a time, so
     that no array of every step is made for a log whose steps are all in order."""
@@ -819,6 +852,7 @@ def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tupl
     _report_missing(table, raw, warnings)
     _report_decimal_shifts(table, raw, warnings)
     if "time" not in table or len(table) < 2:
+        _report_jump(table, raw, warnings)
         return None, 0
     time = table["time"].to_numpy()
     smallest, largest = _step_extremes(time)

@@ -37,6 +37,27 @@ def test_nan_stretch_is_reported_with_count_and_longest_run(write):
     ]
 
 
+def test_a_second_pull_appended_without_time_is_told(write):
+    # a real UTM's headerless force,displacement export: the next specimen's curve follows
+    # the fracture, its displacement back at zero in one row
+    first = [(20 * step, round(0.05 * step, 2)) for step in range(180)]
+    second = [(5 * step, round(0.05 * step, 2)) for step in range(20)]
+    text = "Force (N),Displacement (mm)\n" + rows(*first, *second)
+    _, meta = read_table(write("spliced.csv", text))
+    assert meta.warnings == [
+        "gauge_1: crosses 100% of its range in one step, from 0.00895 m to 0 m at line 182, "
+        "where its median step is 0.56% of it: a second test appended below the first, or a "
+        "gauge taken off or reset? The file has no time to tell; give each test its own file"]
+
+
+def test_a_gauge_of_peaks_and_valleys_jumps_without_a_word(write):
+    # a fatigue log of the peak and valley of each cycle: every step crosses the range
+    text = "Force (kN),Displacement (mm)\n" + rows(*[(10 * (row % 2), 2.0 * (row % 2))
+                                                     for row in range(40)])
+    _, meta = read_table(write("peaks.csv", text))
+    assert not any("of its range in one step" in warning for warning in meta.warnings)
+
+
 def test_time_backwards_and_gaps_are_warnings(write):
     text = HEADER + rows(*[(t, 1, 0) for t in (0.0, 0.1, 0.2, 0.15, 0.3, 0.4, 9.0, 9.1)])
     _, meta = read_table(write("t.csv", text))
