@@ -770,20 +770,53 @@ def _report_decimal_shifts(table: pd.DataFrame, raw: RawTable, warnings: list[st
             )
 
 
+#: Rows below the first that tell what the first should look like.
+FIRST_ROW_PEERS = 50
+
+
+def _report_first_row(raw: RawTable, warnings: list[str]) -> bool:
+    """Tell (and return whether there is) a first data row whose values lie outside the
+    range of the next :data:`FIRST_ROW_PEERS` rows, by over ten times that range, in most
+    of the columns (two at least): a row of settings written above the samples (a
+    script's ``150,75,500`` of sampling rate, samples per channel and timer over forces
+    of a few newtons)."""
+    if raw.first_row or raw.rows <= FIRST_ROW_PEERS // 5:
+        return False
+    told = unlike = 0
+    for values in raw.arrays.values():
+        first, peers = values[0], values[1:FIRST_ROW_PEERS + 1]
+        peers = peers[np.isfinite(peers)]
+        if not np.isfinite(first) or peers.size < FIRST_ROW_PEERS // 5:
+            continue
+        told += 1
+        low, high = float(peers.min()), float(peers.max())
+        unlike += bool(min(abs(first - low), abs(first - high)) > 10 * (high - low))
+    if not (told >= 2 and 2 * unlike > told):
+        return False
+    warnings.append(
+        f"{raw.where(0)}, the first data row, is unlike the rows below it: in {unlike} of "
+        f"{told} columns its value lies outside their range by over ten times it. A row "
+        "of settings (a rate, a count) written above the samples? It is read as the first "
+        "sample: delete it from a copy of the file if it is none")
+    return True
+
+
 #: Steps a gauge may take over half its range before its jumps are no longer told (a
 #: fatigue log of peaks and valleys takes one each row).
 JUMPS_TOLD = 3
 
 
-def _report_jump(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> None:
+def _report_jump(table: pd.DataFrame, raw: RawTable, warnings: list[str], start: int = 0
+                 ) -> None:
     """Tell a gauge or length (of a table without time) that crosses over half its range
     in one step, no more than :data:`JUMPS_TOLD` times, while its median step is under a
     hundredth of it: a second test appended below the first (the displacement back at its
-    start after the fracture), or a gauge taken off or reset, that no time shows."""
+    start after the fracture), or a gauge taken off or reset, that no time shows. The rows
+    before `start` are left out (a first row told unlike the others)."""
     for name in table.columns:
         if not name.startswith(("gauge_", "strain_", "length")):
             continue
-        values = table[name].to_numpy()
+        values = table[name].to_numpy()[start:]
         steps = np.abs(np.diff(values))
         finite = steps[np.isfinite(steps)]
         if finite.size < 10:
@@ -793,10 +826,11 @@ def _report_jump(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> Non
         if not (1 <= np.count_nonzero(jumps) <= JUMPS_TOLD and np.median(finite) < span / 100):
             continue
         at = int(np.argmax(jumps)) + 1
+        line = raw.where(start + at)
         unit = "" if _si_unit(name) == "1" else " " + _si_unit(name)
         warnings.append(
             f"{name}: crosses {steps[at - 1] / span:.0%} of its range in one step, from "
-            f"{values[at - 1]:.4g}{unit} to {values[at]:.4g}{unit} at {raw.where(at)}, where its "
+            f"{values[at - 1]:.4g}{unit} to {values[at]:.4g}{unit} at {line}, where its "
             f"median step is {np.median(finite) / span:.2%} of it: a second test appended "
             "below the first, or a gauge taken off or reset? The file has no time to tell; "
             "give each test its own file")
@@ -851,8 +885,9 @@ def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tupl
     """
     _report_missing(table, raw, warnings)
     _report_decimal_shifts(table, raw, warnings)
+    unlike_first = _report_first_row(raw, warnings)
     if "time" not in table or len(table) < 2:
-        _report_jump(table, raw, warnings)
+        _report_jump(table, raw, warnings, start=int(unlike_first))
         return None, 0
     time = table["time"].to_numpy()
     smallest, largest = _step_extremes(time)

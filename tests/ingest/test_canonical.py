@@ -58,6 +58,27 @@ def test_a_gauge_of_peaks_and_valleys_jumps_without_a_word(write):
     assert not any("of its range in one step" in warning for warning in meta.warnings)
 
 
+def test_a_row_of_settings_over_the_samples_is_told(write):
+    # a real F/T sensor's script log: rate, samples per channel and timer over the forces
+    text = "Fx [mm],Fz [N]\n150,500\n" + rows(*[(0.01 * (row % 7), 0.2 + 0.01 * row)
+                                                for row in range(30)])
+    table, meta = read_table(write("ft.csv", text), columns={"force": "Fz", "gauges": ["Fx"]})
+    assert table["force"].iloc[0] == 500.0  # read, and told
+    assert meta.warnings == [
+        "line 2, the first data row, is unlike the rows below it: in 2 of 2 columns its value "
+        "lies outside their range by over ten times it. A row of settings (a rate, a count) "
+        "written above the samples? It is read as the first sample: delete it from a copy of "
+        "the file if it is none"]
+
+
+def test_a_pull_that_starts_with_a_jump_in_force_alone_is_no_settings_row(write):
+    # the load cell tared at zero, the specimen preloaded from the second sample
+    text = HEADER + rows(*[(0.1 * row, 0.0 if row == 0 else 10 + 0.001 * row, 0.01 * row)
+                           for row in range(40)])
+    _, meta = read_table(write("preload.csv", text))
+    assert meta.warnings == []
+
+
 def test_time_backwards_and_gaps_are_warnings(write):
     text = HEADER + rows(*[(t, 1, 0) for t in (0.0, 0.1, 0.2, 0.15, 0.3, 0.4, 9.0, 9.1)])
     _, meta = read_table(write("t.csv", text))
