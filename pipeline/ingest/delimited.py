@@ -63,7 +63,7 @@ from dataclasses import dataclass
 
 import pyarrow as pa
 
-from pipeline.errors import EmptyFileError, LayoutError
+from pipeline.errors import EmptyFileError, IngestError, LayoutError
 from pipeline.ingest import waveforms
 from pipeline.ingest.clock import (
     MINUTE_READINGS,
@@ -89,6 +89,7 @@ from pipeline.ingest.textbody import (
     trim_trailer,
     trim_truncated_tail,
     truncated_warning,
+    without_events,
 )
 from pipeline.ingest.unitparse import is_micro_alone, is_strain_unit, spellings, unit_fits
 
@@ -503,10 +504,11 @@ def body(head: Head, spec: TableSpec, warnings: list[str]) -> Region:
 
 
 def parse_rows(
-    region: Region, spec: TableSpec, header: RawColumns
+    region: Region, spec: TableSpec, header: RawColumns, body: Region | None = None
 ) -> tuple[tuple[dict[int, pa.ChunkedArray], int, set[int]], int]:
     """Parse the rows of `region` with pyarrow (values split by a decimal comma rejoined,
-    clock readings turned into seconds, comment lines passed over).
+    clock readings turned into seconds, comment lines passed over); of `body` if given
+    (the rows of `region` without the lines it leaves out).
 
     Returns
     -------
@@ -518,7 +520,7 @@ def parse_rows(
     names, found = header.names, header.candidates
     try:
         table, comments = parse_body(
-            region,
+            body or region,
             region,
             names=names,
             width=spec.width,
@@ -550,7 +552,18 @@ def read_contiguous(head: Head, spec: TableSpec, header: RawColumns) -> RawTable
     """
     whole = body(head, spec, header.metadata.warnings)
     region, truncated = trim_truncated_tail(whole, spec.width, spec.delimiter, spec.decimal)
-    parsed, comments = parse_rows(region, spec, header)
+    try:
+        parsed, comments = parse_rows(region, spec, header)
+    except IngestError as error:
+        found = without_events(region, spec.delimiter, spec.decimal)
+        if found is None or error.row not in {number for number, _ in found[2]}:
+            raise
+        rows, region, events = found
+        parsed, comments = parse_rows(region, spec, header, rows)
+        header.metadata.warnings.append(
+            f"{len(events)} line(s) among the data rows hold a text, not readings (events "
+            f"the machine logged), left out; the first at line {events[0][0]}: "
+            f"{events[0][1][:60]!r}")
     if comments:
         header.metadata.warnings.append(comment_warning(region, comments))
     if spec.pairs:

@@ -8,6 +8,7 @@ wrong) and to turn a row number into a line number for a warning.
 
 from __future__ import annotations
 
+import math
 import re
 import threading
 from collections.abc import Callable, Iterator, Mapping
@@ -34,7 +35,7 @@ from pipeline.ingest.sniff import (
     row_kind,
     split_fields,
 )
-from pipeline.ingest.source import Source, contains, text_lines
+from pipeline.ingest.source import BufferSource, Source, contains, text_lines
 
 #: Bytes of the file's end searched for a truncated last line.
 TAIL_BYTES = 1 << 16
@@ -591,6 +592,73 @@ def locate_defect(
         file=region.name, row=region.first_line,
         hint="check the export; give columns and units in the run sheet if detection failed",
     )
+
+
+#: A line with its end, in bytes of an ASCII-compatible codec.
+_LINE = re.compile(rb"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+")
+#: The share of a body's lines that may be event lines (:func:`without_events`).
+EVENTS_SHARE = 0.1
+
+
+def without_events(region: Region, delimiter: str, decimal: str
+                   ) -> tuple[Region, Region, list[tuple[int, str]]] | None:
+    """The rows of `region` without the lines a rig writes among its readings to log an
+    event (``6724,Switched from 1 to 2,,,``): its first cell a number (the time) between
+    those of the rows around it, one text beside it, the other cells empty. A line of text
+    alone (``Second test``) is none: it may open another table.
+
+    Returns
+    -------
+    body : Region
+        The rows without the event lines (in memory), to parse.
+    region : Region
+        `region` with the event lines left out, for line numbers.
+    events : list of (int, str)
+        Line number and text of each event line.
+
+    None when `region` holds no event line, or more than :data:`EVENTS_SHARE` of its lines
+    (two at least) are (another layout), or its codec is not ASCII-compatible.
+    """
+    if region.codec.startswith("utf-16"):
+        return None
+    kept, events, starts = [], [], []
+    previous = -math.inf
+    lines = _LINE.findall(region.read(region.start, region.end))
+    for number, line in enumerate(lines, start=region.first_line):
+        fields = split_fields(line.decode(region.codec, errors="replace"), delimiter)
+        first = _number(fields[0], decimal)
+        if _is_event(fields, decimal) and first >= previous:
+            events.append((number, line.decode(region.codec, errors="replace").strip()))
+            starts.append((first, len(kept)))
+            continue
+        kept.append(line)
+        previous = previous if math.isnan(first) else first
+    following = [_number(split_fields(line.decode(region.codec, errors="replace"),
+                                      delimiter)[0], decimal) for line in kept]
+    if not events or len(events) > max(2, EVENTS_SHARE * len(lines)) or any(
+            at < len(following) and not first <= following[at] for first, at in starts):
+        return None
+    data = b"".join(kept)
+    body = Region(BufferSource(data, region.name), 0, len(data), region.first_line,
+                  region.codec)
+    return body, replace(region, left_out=region.left_out | {n for n, _ in events}), events
+
+
+def _number(cell: str, decimal: str) -> float:
+    """The number of `cell`, NaN if it holds none."""
+    return float(cell.strip().replace(decimal, ".")) if is_number(cell, decimal) else math.nan
+
+
+def _is_event(fields: list[str], decimal: str) -> bool:
+    """Whether `fields` are of an event line (:func:`without_events`): a number first, one
+    text of a word after it, the other cells missing."""
+    rest = [cell for cell in fields[1:] if not is_missing(cell)]
+    return (is_number(fields[0], decimal) and len(rest) == 1
+            and not is_number(rest[0], decimal) and _WORD.search(rest[0]) is not None)
+
+
+#: Two letters: a word, not a unit's letter or a stray mark.
+_WORD = re.compile(r"[^\W\d_]{2}")
 
 
 def _names_row(fields: list[str], decimal: str) -> str:

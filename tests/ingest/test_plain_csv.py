@@ -75,6 +75,24 @@ def test_a_loggers_comment_lines_are_passed_over_with_a_warning(write):
     assert (caught.value.row, caught.value.column) == (9, "force")
 
 
+def test_a_rigs_event_lines_among_its_readings_are_left_out_with_a_warning(write):
+    # a real shock dyno's log: the rig notes a change of speed between two readings
+    text = ("Millis,Load_Cell [lbf],Linear_Pot [in]\n6714,-6.36,2.6\n6724,-6.31,2.448\n"
+            "6724,Switched from 1 to 2,\n6735,-6.09,2.469\n6740,,Test paused\n6746,-6.02,2.419\n")
+    table, meta = read_table(write("dyno.csv", text))
+    np.testing.assert_allclose(table["force"] / 4.4482216152605, [-6.36, -6.31, -6.09, -6.02])
+    assert ("2 line(s) among the data rows hold a text, not readings (events the machine "
+            "logged), left out; the first at line 4: '6724,Switched from 1 to 2,'"
+            in meta.warnings)
+    with pytest.raises(ValueParseError) as caught:  # line numbers count the event lines
+        read_table(write("dyno.csv", text.replace("-6.02", "x")))
+    assert (caught.value.row, caught.value.column) == (7, "Load_Cell")
+    with pytest.raises(LayoutError):  # a line of text alone may open another test
+        read_table(write("dyno.csv", text.replace("6740,,Test paused", "Test 2")))
+    with pytest.raises(ValueParseError):  # an event at a time the rows do not pass
+        read_table(write("dyno.csv", text.replace("6740,,", "9999,,")))
+
+
 def test_a_names_row_written_as_a_comment_is_the_names_row(write):
     table, meta = read_table(write("t.csv", "#time [s],force [kN],gauge [mm]\n0.0,1,0\n0.1,2,0\n"))
     np.testing.assert_allclose(table["force"], [1e3, 2e3])
