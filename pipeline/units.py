@@ -23,8 +23,9 @@ ureg.define("@alias turn = rev")
 # lower case, as nanoseconds, which would make an impulse a time.
 ureg.define("newton_second = newton * second = Ns")
 # Microstrain, as strain-gauge amplifiers and Japanese loggers write it (µε, με with the
-# micro sign or the Greek mu; Kyowa's µST): a ratio of 1e-6.
-ureg.define("microstrain = 1e-6 = µε = με = µST = μST")
+# micro sign or the Greek mu; Kyowa's µST), and in plain letters (ue, uE, µe: pint alone
+# reads a micro elementary charge): a ratio of 1e-6.
+ureg.define("microstrain = 1e-6 = µε = με = µST = μST = ue = uE = µe = μe")
 # Keysight data loggers' volts of a direct or alternating voltage (BenchLink's VDC, VAC).
 ureg.define("@alias volt = VDC = VAC")
 # Russian (Cyrillic) unit symbols, as Russian testing-machine software writes them.

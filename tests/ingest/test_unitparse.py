@@ -128,6 +128,15 @@ def test_an_angle_is_no_strain(unit):
     assert not is_strain_unit(unit) and is_strain_unit("%")
 
 
+@pytest.mark.parametrize("unit", ["ue", "uE", "µe", "(με)", "µε"])
+def test_microstrain_in_plain_letters_is_a_strain_of_a_millionth(unit):
+    from pipeline.ingest.unitparse import is_strain_unit, si_factor
+
+    # strain-gauge amplifiers write microstrain so; pint alone reads a micro elementary charge
+    assert is_strain_unit(unit) and si_factor(
+        unit, "strain", file="f.csv", row=1, column="SG1", source="file") == pytest.approx(1e-6)
+
+
 @pytest.mark.parametrize("unit", ["mV/V", "µV/V", "V/V", "[mV/V]"])
 def test_a_bridge_output_is_no_strain(unit):
     from pipeline.ingest.unitparse import is_strain_unit
