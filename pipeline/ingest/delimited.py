@@ -318,9 +318,10 @@ def _unit_after_its_name(name: str, unit: str, separator: str) -> bool:
     ``表-縦 με``, ``表-横 μ``: such a column is warned of), or a unit of force of two
     letters or more after an underscore (a load logger's ``current_kN``, ``peak_kN``), or
     of length (a nanoindenter's ``depth_nm``; not ``in``): ``N`` alone may be a number's
-    mark (``Sample_N``), ``m`` a minute's."""
-    if not (name and unit) or unit.isdigit():  # a number ends a name (Weg 1, gauge_1)
-        return False
+    mark (``Sample_N``), ``m`` a minute's. A word that names a role is part of the name
+    (``Ext Strain``: a strain, its unit unknown, not a ratio)."""
+    if not (name and unit) or unit.isdigit() or match_role(unit) is not None:
+        return False  # a number ends a name (Weg 1, gauge_1); a role word names
     role = match_role(name)
     if role is not None:
         return unit_fits(unit, role) or (role == "gauge" and is_strain_unit(unit))

@@ -483,6 +483,18 @@ def test_microstrain_is_a_strain(write):
     assert meta.columns[4].unit == "με"
 
 
+def test_a_role_word_ending_a_name_is_no_unit(write):
+    # a real logger's tab file: 'Ext Strain' in microstrain, no unit anywhere; 'Strain'
+    # read as its unit (a ratio) made -46.5 µε a strain of -46.5
+    text = "Time\tForce\tExt Strain\n0.0\t0.026\t-46.527\n1.0\t2.996\t-47.500\n"
+    _, meta = read_table(write("log.txt", text), kind="tensile", strict=False)
+    column = next(info for info in meta.columns if info.name == "Ext Strain")
+    assert (column.role, column.unit) == ("gauge_1", None)
+    table, _ = read_table(write("log.txt", text), kind="tensile",
+                          units={"time": "s", "force": "N", "gauges": "µε"})
+    np.testing.assert_allclose(table["strain_1"], [-46.527e-6, -47.5e-6])
+
+
 def test_a_prefix_written_out_before_a_unit_is_part_of_it(write):
     # a real nanoindenter's export: micronewtons as load_micro_N, nanometres as depth_nm
     text = "depth_nm,load_micro_N,time_s\n0.5,1.0,0.0\n12.0,2.0,0.1\n25.0,3.0,0.2\n"
