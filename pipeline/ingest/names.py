@@ -27,7 +27,8 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
             "stretch", "chain stretch",
         ),
         "angle": ("angle", "encoder", "rotation"),
-        "cycle_count": ("cycle", "cycles", "cycle count", "segment count"),
+        "cycle_count": ("cycle", "cycles", "cycle count", "segment count", "stroke count",
+                        "strokes"),
         "length": ("length", "section length", "measured length", "chain length"),
         "speed": ("speed", "velocity", "chain speed"),
         "segment_force_1": ("segment force 1", "segment 1", "f k1", "fk 1"),
@@ -249,8 +250,9 @@ SIGN_CONVENTION_WORDS = frozenset({"compressive", "tensile"})
 #: strain of a DIC field other than along the specimen (``mises_strain``, an equivalent
 #: strain; a shear strain) and a
 #: torque (a drive rig's ``torque (nm)``, newton metres in lower case, no nanometres), a
-#: logger's stamps of a state's last change (``last_changed``, no German load). Such
-#: a column takes no role, not even from its unit.
+#: logger's stamps of a state's last change (``last_changed``, no German load), a rate or
+#: a pace of a quantity (a rowing machine's ``Stroke Rate (SPM)``, ``Stroke500mPace``; a
+#: ``Load rate``, no load). Such a column takes no role, not even from its unit.
 OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points count",
                         "reading count", "readings count", "scan count", "pip count", "temp",
                         "temperature", "temperatur", "température", "temperatura", "温度",
@@ -259,7 +261,7 @@ OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points 
                         "von mises strain", "equivalent strain", "effective strain",
                         "shear strain", "vergleichsdehnung", "cop", "center of pressure",
                         "centre of pressure", "last changed", "last updated", "last reset",
-                        "last seen", "torque", "drehmoment",
+                        "last seen", "torque", "drehmoment", "rate", "pace",
                         "moment obrotowy", "momento torsor", "couple moteur", "扭矩", "トルク",
                         "토크", "крутящий момент")
 #: The labels of :data:`TRANSVERSE_NAMES` and :data:`OTHER_QUANTITY_NAMES` among the role

@@ -172,6 +172,20 @@ def test_a_count_of_samples_a_temperature_or_an_acceleration_takes_no_role(name)
     assert match_role(name) is None and is_unmeasured(name)
 
 
+@pytest.mark.parametrize("name", ["Stroke Rate", "StrokeRate", "Load rate", "Strain rate",
+                                  "Pace"])
+def test_a_rate_or_a_pace_takes_no_role(name):
+    # a rowing machine's 'Stroke Rate (SPM)' was a gauge by its first word, in a unit the
+    # run sheet could have set to millimetres; a load rate is no load, a strain rate no strain
+    assert match_role(name) is None and is_unmeasured(name)
+
+
+@pytest.mark.parametrize("name", ["Stroke Count", "StrokeCount", "Strokes"])
+def test_a_count_of_strokes_is_a_cycle_count(name):
+    # a fatigue rig's or a rowing machine's strokes: no crosshead travel
+    assert match_role(name) == "cycle_count"
+
+
 @pytest.mark.parametrize("name", ["Ch 1 Kraft Sollwert", "Sollwert Kraft", "Load Command",
                                   "Force setpoint", "Valeur de consigne", "Siła zadana",
                                   "a1 position cmd", "force_cmd",  # a motor controller's
