@@ -128,11 +128,16 @@ def spellings(text: str) -> list[str]:
     text = text.strip().strip("()[]{}").strip()
     since = _SINCE.fullmatch(text)  # a clock's count from an epoch: its unit
     text = since["unit"] if since else text
+    if not _parses(text):  # a product written with hyphens (a rheometer's Pa-s, N-m)
+        text = _HYPHEN.sub("*", text)
     candidates = [text]
     if not _parses(text) or _case_says_nothing(text):
         candidates += [text.lower(), text[:1].lower() + text[1:]]
     return [spelling for spelling in dict.fromkeys(candidates) if spelling and _parses(spelling)]
 
+
+#: A hyphen between letters: a product of units (``Pa-s``, ``N-m``, ``lbf-in``).
+_HYPHEN = re.compile(r"(?<=[^\W\d_])-(?=[^\W\d_])")
 
 #: A time counted from an epoch, as a logger writes its stamps' unit (TelemetryViewer's
 #: ``Milliseconds since 1970-01-01``).

@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 from pipeline.errors import UnitError
-from pipeline.ingest.unitparse import looks_like_unit, si_factor, unit_role
-from pipeline.units import STANDARD_GRAVITY
+from pipeline.ingest.unitparse import looks_like_unit, si_factor, spellings, unit_role
+from pipeline.units import STANDARD_GRAVITY, ureg
 
 
 def factor(text, role):
@@ -126,6 +126,14 @@ def test_an_angle_is_no_strain(unit):
 
     # pint's angles are dimensionless, as ratios are: a rotary position is not a strain
     assert not is_strain_unit(unit) and is_strain_unit("%")
+
+
+@pytest.mark.parametrize(("unit", "newton_metres"), [("N-m", 1.0), ("lbf-in", 0.112984829)])
+def test_a_product_of_units_written_with_a_hyphen_is_read(unit, newton_metres):
+    # a rheometer's units row (Pa-s, N-m) was taken for the names, pint reading none of it
+    assert ureg.Quantity(1, spellings(unit)[0]).to("N*m").magnitude == pytest.approx(
+        newton_metres)
+    assert spellings("Load-cell") == []
 
 
 @pytest.mark.parametrize("unit", ["ue", "uE", "µe", "(με)", "µε"])
