@@ -12,7 +12,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from pipeline.ingest.unitparse import spellings
+from pipeline.ingest.unitparse import spellings, unit_fits
 
 #: Names (whole words or word sequences) that give a column its role, per language.
 COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
@@ -386,9 +386,15 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
 
 def _ends_in_unit_over(name: str, unit: str) -> bool:
     """Whether `name` ends in a word that makes a unit over `unit`: the ``/`` is then inside
-    a compound unit (a dyno's ``TCP RX kB/s``, ``Drehzahl U/min``), not after a name."""
+    a compound unit (a dyno's ``TCP RX kB/s``, ``Drehzahl U/min``), not after a name; or
+    is a unit of length, or of three letters or more, that names no role (a rheometer's
+    ``rad/s`` taken for the names: no ``rad`` in seconds, a time; ``mm/s``; a quantity's
+    symbol is shorter and no length, ``t/s``, ``F/kN``)."""
     words = name.split()
-    return (len(words) > 1 and words[-1][0].isalpha()
+    if len(words) == 1 and not ((len(words[0]) >= 3 or unit_fits(words[0], "length"))
+                                and spellings(words[0]) and match_role(words[0]) is None):
+        return False
+    return (bool(words) and words[-1][0].isalpha()
             and bool(spellings(f"{words[-1]}/{unit.strip()}")))
 
 

@@ -118,6 +118,10 @@ def test_every_listed_name_matches_its_own_role():
         # name-unit separator: "TCP RX kB" in s would be a time
         ("(DWRT CPU) TCP RX kB/s", ("(DWRT CPU) TCP RX kB/s", None)),
         ("Drehzahl U/min", ("Drehzahl U/min", None)), ("Weg 1/mm", ("Weg 1", "mm")),
+        # a unit over a unit, its first no quantity's symbol (a rheometer's units row
+        # read as the names): "rad" in s would be a time
+        ("rad/s", ("rad/s", None)), ("mm/s", ("mm/s", None)), ("t/s", ("t", "s")),
+        ("s/mm", ("s", "mm")),
         # a word in parentheses that says how the values were worked is no unit
         ("(DWRT CPU) Power (uncorrected)", ("(DWRT CPU) Power (uncorrected)", None)),
         ("Chain force (filtered)", ("Chain force (filtered)", None)),
