@@ -296,19 +296,25 @@ def is_missing(text: str) -> bool:
 
 #: Cells a logger writes for a reading outside the channel's range: Graphtec's
 #: ``+++++++`` and ``-------``, a meter's ``OL``, ``OVER``, ``Overflow``, ``BURNOUT``
-#: (an open thermocouple).
+#: (an open thermocouple); dashes stand for no reading too (a rowing monitor's ``---``).
 _OUT_OF_RANGE = re.compile(r"\+{3,}|-{3,}|[+-]?(?:OL|OVER(?:RANGE|FLOW)?|BURNOUT)", re.IGNORECASE)
 #: The hint for such a cell.
 OUT_OF_RANGE_HINT = (
-    "the logger writes this for a reading outside the channel's range: the signal there "
-    "is not known, so the reader does not guess it. Record again with a wider range, or "
-    "delete the rows if they lie outside the test")
+    "the logger writes this for a reading outside the channel's range, or for no reading: "
+    "the signal there is not known, so the reader does not guess it. Record again with a "
+    "wider range, or delete the rows if they lie outside the test (or, if the logger "
+    "read nothing there, leave the cells empty: missing values are read and told)")
+
+
+def is_out_of_range(text: str) -> bool:
+    """Whether `text` is a logger's mark of a reading out of range (:data:`_OUT_OF_RANGE`)."""
+    return _OUT_OF_RANGE.fullmatch(text.strip()) is not None
 
 
 def cell_hint(text: str, default: str) -> str:
     """The hint for a cell `text` of a numeric column that is not a number: an
     out-of-range mark or a clock reading explained, else `default`."""
-    if _OUT_OF_RANGE.fullmatch(text.strip()):
+    if is_out_of_range(text):
         return OUT_OF_RANGE_HINT
     return unread_clock_hint(text) if looks_like_clock(text) else default
 

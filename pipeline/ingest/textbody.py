@@ -32,6 +32,7 @@ from pipeline.ingest.sniff import (
     is_comment,
     is_missing,
     is_number,
+    is_out_of_range,
     row_kind,
     split_fields,
 )
@@ -665,7 +666,8 @@ def _names_row(fields: list[str], decimal: str) -> str:
     """The first names of a row that holds two texts or more and fewer numbers (a names
     row, not a data row with a bad cell), quoted; empty otherwise."""
     texts = [cell.strip() for cell in fields
-             if not (is_number(cell, decimal) or is_missing(cell) or looks_like_clock(cell))]
+             if not (is_number(cell, decimal) or is_missing(cell) or looks_like_clock(cell)
+                     or is_out_of_range(cell))]
     numbers = sum(is_number(cell, decimal) for cell in fields)
     if len(texts) < 2 or numbers >= len(texts):
         return ""

@@ -873,6 +873,18 @@ def test_an_out_of_range_mark_is_refused_with_what_it_means(write, graphtec_expo
     assert caught.value.hint == OUT_OF_RANGE_HINT
 
 
+def test_a_row_of_dashes_is_told_as_no_reading_not_a_second_table(write):
+    # a real rowing monitor's export: '---' where a stroke gave no reading; five dashes
+    # and two numbers read as a names row opening a second table
+    text = ("Interval,Distance,Elapsed,Total Strokes,Force Avg,Force Max\n"
+            ",(m),(s),(Strokes),(N),(N)\n1,0.4,1.7,1,0.0,26.0\n1,0.7,3.2,2,111.0,271.0\n"
+            "1,---,---,5,---,---\n1,57.9,44.8,6,5.0,31.0\n")
+    with pytest.raises(ValueParseError) as caught:
+        read_table(write("nk.csv", text), columns={"force": "Force Max", "gauges": ["Distance"]})
+    assert (caught.value.row, caught.value.message) == (5, "'---' is not a number")
+    assert caught.value.hint == OUT_OF_RANGE_HINT
+
+
 def imada_list(force_units: list[str]) -> str:
     """An Imada Force Recorder list export: its statistics, then each value with its unit
     beside it, a judgement, an unused position and a time of day before the date."""
