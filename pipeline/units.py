@@ -26,6 +26,11 @@ ureg.define("newton_second = newton * second = Ns")
 # micro sign or the Greek mu; Kyowa's µST), and in plain letters (ue, uE, µe: pint alone
 # reads a micro elementary charge): a ratio of 1e-6.
 ureg.define("microstrain = 1e-6 = µε = με = µST = μST = ue = uE = µe = μe")
+# Gauge and absolute pressures (a burst rig's psig, a hydraulic bench's barg), read as the
+# pressure they are of, so that a pressure is never taken for a force; MPa in mixed case.
+ureg.define("@alias pound_force_per_square_inch = psig = psia = psid")
+ureg.define("@alias bar = barg = bara")
+ureg.define("Mpa = megapascal")
 # Keysight data loggers' volts of a direct or alternating voltage (BenchLink's VDC, VAC).
 ureg.define("@alias volt = VDC = VAC")
 # Russian (Cyrillic) unit symbols, as Russian testing-machine software writes them.

@@ -128,8 +128,9 @@ def spellings(text: str) -> list[str]:
     text = text.strip().strip("()[]{}").strip()
     since = _SINCE.fullmatch(text)  # a clock's count from an epoch: its unit
     text = since["unit"] if since else text
-    if not _parses(text):  # a product written with hyphens (a rheometer's Pa-s, N-m)
-        text = _HYPHEN.sub("*", text)
+    if not _parses(text):  # a product written with hyphens (a rheometer's Pa-s, N-m), a
+        # square without its caret (kg/cm2), a gauge or absolute pressure's mark (bar(g))
+        text = _PRESSURE_MARK.sub("", _SQUARE.sub(r"^\1", _HYPHEN.sub("*", text)))
     candidates = [text]
     if not _parses(text) or _case_says_nothing(text):
         candidates += [text.lower(), text[:1].lower() + text[1:]]
@@ -138,6 +139,11 @@ def spellings(text: str) -> list[str]:
 
 #: A hyphen between letters: a product of units (``Pa-s``, ``N-m``, ``lbf-in``).
 _HYPHEN = re.compile(r"(?<=[^\W\d_])-(?=[^\W\d_])")
+
+#: A 2 or 3 right after a unit's letters: its power (``kg/cm2``, ``N/mm2``, ``m/s2``).
+_SQUARE = re.compile(r"(?<=[^\W\d_])([23])\b")
+#: A pressure's mark of gauge or absolute after its unit (``bar(g)``, ``psi (a)``).
+_PRESSURE_MARK = re.compile(r"\s*\((?:g|a|gauge|abs)\)?$", re.IGNORECASE)  # ")" stripped
 
 #: A time counted from an epoch, as a logger writes its stamps' unit (TelemetryViewer's
 #: ``Milliseconds since 1970-01-01``).
@@ -215,6 +221,24 @@ def unit_fits(text: str | None, role: str) -> bool:
     (True, True, False)
     """
     return any(_fits(spelling, role) for spelling in spellings(text or ""))
+
+
+def is_pressure_unit(text: str | None) -> bool:
+    """Whether some spelling of `text` is a unit of pressure (``"psi"``, ``"bar(g)"``, or a
+    mass over an area for its weight, ``"kg/cm2"``, ``"lb/in2"``): a hydraulic machine's
+    load logged as its ram's pressure is no force.
+
+    Examples
+    --------
+    >>> is_pressure_unit("psig"), is_pressure_unit("kg/cm2"), is_pressure_unit("kN")
+    (True, True, False)
+    """
+    return any(ureg.parse_units(spelling).dimensionality in _PRESSURES
+               for spelling in spellings(text or ""))
+
+
+#: The dimensions of a pressure, and of a mass over an area (its weight over it).
+_PRESSURES = (ureg.pascal.dimensionality, (ureg.kilogram / ureg.meter ** 2).dimensionality)
 
 
 @functools.lru_cache(maxsize=256)

@@ -136,6 +136,22 @@ def test_a_product_of_units_written_with_a_hyphen_is_read(unit, newton_metres):
     assert spellings("Load-cell") == []
 
 
+@pytest.mark.parametrize("unit", ["psig", "psia", "psid", "barg", "bar(g)", "[bar (a)]",
+                                  "kgf/cm2", "N/mm2", "lb/in2", "Mpa"])
+def test_a_pressure_however_written_is_no_force(unit):
+    from pipeline.ingest.unitparse import is_pressure_unit, unit_misfits
+
+    # a burst rig's or a hydraulic bench's pressure: pint read none of these, and a
+    # unit it cannot read does not misfit, so a 'Load [psig]' became the force
+    assert is_pressure_unit(unit) and unit_misfits(unit, "force")
+
+
+def test_a_unit_squared_without_its_caret_is_read():
+    assert ureg.Quantity(1, spellings("kgf/cm2")[0]).to("Pa").magnitude == pytest.approx(
+        98066.5)
+    assert spellings("CH1") == [] and spellings("Weg 2") == []
+
+
 @pytest.mark.parametrize("unit", ["ue", "uE", "µe", "(με)", "µε"])
 def test_microstrain_in_plain_letters_is_a_strain_of_a_millionth(unit):
     from pipeline.ingest.unitparse import is_strain_unit, si_factor
