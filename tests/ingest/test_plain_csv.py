@@ -495,6 +495,15 @@ def test_a_role_word_ending_a_name_is_no_unit(write):
     np.testing.assert_allclose(table["strain_1"], [-46.527e-6, -47.5e-6])
 
 
+def test_a_pressure_after_a_loads_name_is_its_unit_and_refused(write):
+    # a hydraulic rig's 'load_psi' lost its unit ("the file gives none"), and a force unit
+    # in the run sheet then read the pressure as a force without a word
+    text = "Time,load_psi,Stroke\n0,1,0\n0.1,2,0.1\n"
+    _, meta = read_table(write("rig.csv", text), kind="tensile", strict=False)
+    assert {info.name: info.unit for info in meta.columns}["load"] == "psi"
+    assert "column 'load': unit 'psi' is not a unit of force: column not used" in meta.warnings
+
+
 def test_a_prefix_written_out_before_a_unit_is_part_of_it(write):
     # a real nanoindenter's export: micronewtons as load_micro_N, nanometres as depth_nm
     text = "depth_nm,load_micro_N,time_s\n0.5,1.0,0.0\n12.0,2.0,0.1\n25.0,3.0,0.2\n"
