@@ -739,8 +739,9 @@ def _settle_units(
 def _report_missing(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> None:
     for name in table.columns:
         values = table[name].to_numpy()
-        if not values.size or np.isfinite(np.add.reduce(values)):  # no NaN nor Inf: one pass
-            continue
+        with np.errstate(invalid="ignore"):  # inf - inf is NaN: no warning to print
+            if not values.size or np.isfinite(np.add.reduce(values)):  # no NaN, Inf: one pass
+                continue
         infinite = np.flatnonzero(np.isinf(values))
         if infinite.size:
             warnings.append(f"{name}: {infinite.size} infinite values (Inf or -Inf, a script's "
@@ -777,13 +778,14 @@ FIRST_ROW_PEERS = 50
 def _report_first_row(raw: RawTable, warnings: list[str]) -> bool:
     """Tell (and return whether there is) a first data row whose values lie outside the
     range of the next :data:`FIRST_ROW_PEERS` rows, by over ten times that range, in most
-    of the columns (two at least): a row of settings written above the samples (a
-    script's ``150,75,500`` of sampling rate, samples per channel and timer over forces
-    of a few newtons)."""
+    of the columns but the time's (two at least): a row of settings written above the
+    samples (a script's ``150,75,500`` of sampling rate, samples per channel and timer over
+    forces of a few newtons). A time far from the next is a gap, told as such."""
     if raw.first_row or raw.rows <= FIRST_ROW_PEERS // 5:
         return False
     told = unlike = 0
-    for values in raw.arrays.values():
+    times = set(raw.candidates.roles.get("time", ()))
+    for values in (values for index, values in raw.arrays.items() if index not in times):
         first, peers = values[0], values[1:FIRST_ROW_PEERS + 1]
         peers = peers[np.isfinite(peers)]
         if not np.isfinite(first) or peers.size < FIRST_ROW_PEERS // 5:
@@ -804,15 +806,19 @@ def _report_first_row(raw: RawTable, warnings: list[str]) -> bool:
 #: Steps a gauge may take over half its range before its jumps are no longer told (a
 #: fatigue log of peaks and valleys takes one each row).
 JUMPS_TOLD = 3
+#: Rows before a jump whose way it goes against to step back.
+JUMP_TREND = 20
 
 
 def _report_jump(table: pd.DataFrame, raw: RawTable, warnings: list[str], start: int = 0
                  ) -> None:
-    """Tell a gauge or length (of a table without time) that crosses over half its range
-    in one step, no more than :data:`JUMPS_TOLD` times, while its median step is under a
-    hundredth of it: a second test appended below the first (the displacement back at its
-    start after the fracture), or a gauge taken off or reset, that no time shows. The rows
-    before `start` are left out (a first row told unlike the others)."""
+    """Tell a gauge or length (of a table without time) that steps back, against its way
+    over the :data:`JUMP_TREND` rows before, over half its range in one step, no more than
+    :data:`JUMPS_TOLD` steps crossing so much, while its median step is under a hundredth of
+    the range and the range over a tenth of its largest value: a second test appended below
+    the first (the displacement back at its start after the fracture), or a gauge taken off
+    or reset, that no time shows. The rows before `start` are left out (a first row told
+    unlike the others)."""
     for name in table.columns:
         if not name.startswith(("gauge_", "strain_", "length")):
             continue
@@ -823,9 +829,14 @@ def _report_jump(table: pd.DataFrame, raw: RawTable, warnings: list[str], start:
             continue
         span = float(np.nanmax(values) - np.nanmin(values))
         jumps = steps > span / 2
-        if not (1 <= np.count_nonzero(jumps) <= JUMPS_TOLD and np.median(finite) < span / 100):
+        if not (1 <= np.count_nonzero(jumps) <= JUMPS_TOLD and np.median(finite) < span / 100
+                and span > np.nanmax(np.abs(values)) / 10):
             continue
-        at = int(np.argmax(jumps)) + 1
+        back = [at for at in np.flatnonzero(jumps) + 1 if (values[at] - values[at - 1]) * (
+            values[at - 1] - values[max(0, at - 1 - JUMP_TREND)]) < 0]
+        if not back:
+            continue
+        at = back[0]
         line = raw.where(start + at)
         unit = "" if _si_unit(name) == "1" else " " + _si_unit(name)
         warnings.append(
