@@ -95,8 +95,9 @@ _PLACE = re.compile(r"column\s*(\d+)")
 
 def _lookup(wanted: str, names: list[str], role: str, file: Path | str, line: int | None) -> int:
     target = fold(str(wanted).strip())
-    hits = [index for index, name in enumerate(names)
-            if target in (fold(name.strip()), fold(name.rsplit("/", 1)[-1].strip()))]
+    hits = ([index for index, name in enumerate(names) if target == fold(name.strip())]
+            or [index for index, name in enumerate(names)  # a channel after its group's
+                if target == fold(name.rsplit("/", 1)[-1].strip())])  # name: not L0 of ΔL/L0
     place = _PLACE.fullmatch(target)
     if not hits and place and 1 <= int(place.group(1)) <= len(names):
         hits = [int(place.group(1)) - 1]  # "column N": the Nth field, as the messages call it

@@ -45,6 +45,12 @@ def test_group_channel_names():
     assert found.roles == {"force": [0], "time": [1]}
 
 
+def test_a_name_given_is_the_whole_name_before_a_channel_after_a_slash():
+    # a real VIC-3D extensometer export: 'ΔL/L0' ends in the name of the column 'L0'
+    found = candidates(["Index", "ΔL/L0", "ΔL", "L1", "L0"], columns={"gauges": ["L0"]})
+    assert found.roles["gauge"] == [4]
+
+
 def test_a_column_without_a_name_is_given_by_what_the_messages_call_it():
     # "the file has: Time, column 2, column 3": the hint's names work in the run sheet
     with pytest.raises(ColumnError) as caught:
