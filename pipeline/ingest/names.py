@@ -252,7 +252,8 @@ SIGN_CONVENTION_WORDS = frozenset({"compressive", "tensile"})
 #: torque (a drive rig's ``torque (nm)``, newton metres in lower case, no nanometres), a
 #: logger's stamps of a state's last change (``last_changed``, no German load), a rate or
 #: a pace of a quantity (a rowing machine's ``Stroke Rate (SPM)``, ``Stroke500mPace``; a
-#: ``Load rate``, no load). Such a column takes no role, not even from its unit.
+#: ``Load rate``, no load), a meter's setting of its display (a Keithley's ``Disp
+#: Digits``, no displacement). Such a column takes no role, not even from its unit.
 OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points count",
                         "reading count", "readings count", "scan count", "pip count", "temp",
                         "temperature", "temperatur", "température", "temperatura", "温度",
@@ -261,7 +262,7 @@ OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points 
                         "von mises strain", "equivalent strain", "effective strain",
                         "shear strain", "vergleichsdehnung", "cop", "center of pressure",
                         "centre of pressure", "last changed", "last updated", "last reset",
-                        "last seen", "torque", "drehmoment", "rate", "pace",
+                        "last seen", "torque", "drehmoment", "rate", "pace", "digits",
                         "moment obrotowy", "momento torsor", "couple moteur", "扭矩", "トルク",
                         "토크", "крутящий момент")
 #: The labels of :data:`TRANSVERSE_NAMES` and :data:`OTHER_QUANTITY_NAMES` among the role
