@@ -196,6 +196,21 @@ def test_an_extensometer_still_while_the_crosshead_moves_on_is_cut():
     assert removal is not None and removal.reason == "freezes"
 
 
+def test_an_extensometer_read_far_into_plastic_strain_moves_with_the_crosshead():
+    # a real 1045 steel pull at 2 Hz: 0.15 % elastic strain, 28.6 % at the fracture; 0.5 %
+    # of that range was the whole elastic strain, so the extensometer "stood still" while
+    # the crosshead (the machine's compliance besides) moved, and E0 came from the crosshead
+    # at 5.1 GPa
+    elastic = np.linspace(0.0, 25.0, 60)  # kN, up to yield
+    hardening = 25.0 + 4.4 * np.sin(np.linspace(0.0, np.pi / 2, 195))
+    necking = 29.4 - 10.0 * np.linspace(0.0, 1.0, 125) ** 2
+    force = np.concatenate([elastic, hardening, necking])
+    strain = np.concatenate([elastic / 1.7e4, 0.0015 + np.linspace(0.0, 0.12, 195),
+                             0.1215 + np.linspace(0.0, 0.165, 125)])
+    crosshead = 25.4 * strain + force / 20.0  # mm: the specimen and the machine's compliance
+    assert find_removal(force, strain, [crosshead]) is None
+
+
 @pytest.mark.parametrize("seed", range(5))
 def test_a_channel_left_unconnected_witnesses_nothing(seed):
     # a real MTS export: auxiliary inputs wandering with their noise, or standing at one
