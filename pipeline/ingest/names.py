@@ -262,7 +262,9 @@ OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points 
                         "von mises strain", "equivalent strain", "effective strain",
                         "shear strain", "vergleichsdehnung", "cop", "center of pressure",
                         "centre of pressure", "last changed", "last updated", "last reset",
-                        "last seen", "torque", "drehmoment", "rate", "pace", "digits",
+                        "last seen", "torque", "drehmoment", "stroke rate", "load rate",
+                        "loading rate", "force rate", "strain rate", "stress rate",
+                        "displacement rate", "extension rate", "cycle rate", "pace", "digits",
                         "moment obrotowy", "momento torsor", "couple moteur", "扭矩", "トルク",
                         "토크", "крутящий момент")
 #: The labels of :data:`TRANSVERSE_NAMES` and :data:`OTHER_QUANTITY_NAMES` among the role
