@@ -411,7 +411,9 @@ def build(
     empty = raw.empty | clean(raw, meta.warnings)
     if empty:
         meta.warnings.append(empty_warning(raw.names, empty))
-    conversion = settle(raw, empty, kind=kind, units=units, strict=strict, specimen=specimen)
+    lone = _lone_values(raw, empty, meta.warnings)
+    conversion = settle(raw, empty | lone, kind=kind, units=units, strict=strict,
+                        specimen=specimen)
     table = conversion.table(raw)
     if meta.specimen is not None:
         table = _without_padding(table, raw, meta)
@@ -520,6 +522,43 @@ def clean(raw: RawTable, warnings: list[str]) -> set[int]:
         if np.isnan(low):
             empty.add(index)
     return empty
+
+
+def first_values(raw: RawTable, columns: set[int]) -> dict[int, tuple[int, float, str]]:
+    """Of each of `columns` of `raw`: how many values it holds (two at most are counted),
+    and the first with where it stands (NaN and "" without one)."""
+    found = {}
+    for index in columns:
+        array = raw.arrays[index]
+        rows = np.flatnonzero(np.isfinite(array[:2]))
+        if rows.size < 2:  # a value missing from the first two rows: look further
+            rows = np.flatnonzero(np.isfinite(array))[:2]
+        found[index] = ((rows.size, float(array[rows[0]]), raw.where(int(rows[0])))
+                        if rows.size else (0, math.nan, ""))
+    return found
+
+
+def lone_warning(names: list[str], index: int, value: float, line: str, rows: int) -> str:
+    """What to say of a column holding one value (`value`, on `line`) over `rows` rows: a
+    specimen's diameter written beside its first sample, no channel."""
+    return (f"column {display_name(names, index)!r} holds one value ({value:g}, {line}) over "
+            f"{rows} rows: a specimen's dimension or a setting, no channel: not used")
+
+
+def _lone_values(raw: RawTable, empty: set[int], warnings: list[str]) -> set[int]:
+    """The columns (not `empty`) holding one value among :data:`LONE_ROWS` rows or more,
+    told in `warnings` (:func:`lone_warning`)."""
+    if raw.rows < LONE_ROWS:
+        return set()
+    lone = {index: (value, line) for index, (count, value, line)
+            in first_values(raw, set(raw.arrays) - empty).items() if count == 1}
+    warnings += [lone_warning(raw.names, index, value, line, raw.rows)
+                 for index, (value, line) in lone.items()]
+    return set(lone)
+
+
+#: Rows a column of one value must stand beside to be no channel.
+LONE_ROWS = 10
 
 
 def empty_warning(names: list[str], empty: set[int]) -> str:

@@ -46,10 +46,13 @@ import pandas as pd
 from pipeline.errors import IngestError
 from pipeline.ingest import continuation, delimited, lvm, tdms
 from pipeline.ingest.canonical import (
+    LONE_ROWS,
     Conversion,
     clean,
     convert_rows,
     empty_warning,
+    first_values,
+    lone_warning,
     settle,
     unlike_stated,
 )
@@ -343,12 +346,16 @@ def open_log(
     path = Path(path)
     with opened(path) as source:
         rows = _rows_reader(source, sniff(source, format), columns, sheet, specimen)
-        empty = rows.empty | _empty_candidates(source, rows)
+        empty, lone = _scan_candidates(source, rows)
+        empty |= rows.empty
         stamp = _stamp(source)
     meta = rows.header.metadata
     if empty:
         meta.warnings.append(empty_warning(rows.header.names, empty))
-    conversion = settle(rows.header, empty, kind=kind, units=units, specimen=specimen)
+    meta.warnings += [lone_warning(rows.header.names, index, value, line, rows.rows)
+                      for index, (value, line) in lone.items()]
+    conversion = settle(rows.header, empty | set(lone), kind=kind, units=units,
+                        specimen=specimen)
     meta.rows = rows.rows
     meta.columns = list(conversion.infos)
     meta.warnings += unlike_stated(meta.preamble, meta.rows)
@@ -360,18 +367,28 @@ def open_log(
     return reader
 
 
-def _empty_candidates(source: Source, rows: _Rows) -> set[int]:
-    """The columns that take a role and hold no value (after sentinels) in the whole file.
+def _scan_candidates(source: Source, rows: _Rows
+                     ) -> tuple[set[int], dict[int, tuple[float, str]]]:
+    """The columns that take a role and hold no value (after sentinels) in the whole file,
+    and those holding one among :data:`~pipeline.ingest.canonical.LONE_ROWS` rows or more,
+    with the value and where it stands (no channel, as ``read_table`` tells them:
+    :func:`~pipeline.ingest.canonical.lone_warning`).
 
-    Rows are read from the start until every such column has shown a value:
+    Rows are read from the start until every such column has shown two values:
     the first :data:`~pipeline.ingest.rowindex.EVERY` rows, then
     :data:`SCAN_ROWS` at a time.
     """
-    unseen = rows.header.candidates.indexes()
+    seen = dict.fromkeys(rows.header.candidates.indexes(), (0, math.nan, ""))
     start, size = 0, EVERY
-    while unseen and start < rows.rows:
+    while start < rows.rows and any(count < 2 for count, _, _ in seen.values()):
         stop = min(start + size, rows.rows)
         raw = rows.read(source, start, stop)[0]
-        unseen &= clean(raw, [])
+        clean(raw, [])
+        for index, (count, value, line) in first_values(
+                raw, {index for index, (count, _, _) in seen.items() if count < 2}).items():
+            held = seen[index]
+            seen[index] = (min(2, held[0] + count), *(held[1:] if held[0] else (value, line)))
         start, size = stop, SCAN_ROWS
-    return unseen
+    lone = ({index: (value, line) for index, (count, value, line) in seen.items() if count == 1}
+            if rows.rows >= LONE_ROWS else {})
+    return {index for index, (count, _, _) in seen.items() if count == 0}, lone

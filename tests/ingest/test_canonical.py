@@ -79,6 +79,17 @@ def test_a_pull_that_starts_with_a_jump_in_force_alone_is_no_settings_row(write)
     assert meta.warnings == []
 
 
+def test_a_column_of_one_value_beside_the_first_sample_is_no_channel(write):
+    # a real steel pull: the specimen's diameters written beside the first sample only,
+    # read as gauges by their unit; the run refused them as channels that dropped out
+    text = ("Time (s),Extension (mm),Load (kN),Original Diameter (mm)\n0,0,0.1,7.13\n"
+            + rows(*[(0.5 * row, 0.03 * row, 0.1 + row, "") for row in range(1, 12)]))
+    table, meta = read_table(write("steel.csv", text))
+    assert list(table.columns) == ["time", "force", "gauge_1"]
+    assert ("column 'Original Diameter' holds one value (7.13, line 2) over 12 rows: a "
+            "specimen's dimension or a setting, no channel: not used") in meta.warnings
+
+
 def test_time_backwards_and_gaps_are_warnings(write):
     text = HEADER + rows(*[(t, 1, 0) for t in (0.0, 0.1, 0.2, 0.15, 0.3, 0.4, 9.0, 9.1)])
     _, meta = read_table(write("t.csv", text))

@@ -110,7 +110,9 @@ def tables(draw):
             name = f"{name} {number}"
         values = draw(st.lists(VALUES, min_size=rows, max_size=rows))
         missing = draw(st.lists(st.booleans(), min_size=rows, max_size=rows))
-        missing[draw(st.integers(0, rows - 1))] = False
+        for kept in draw(st.lists(st.integers(0, rows - 1), min_size=min(rows, 2),
+                                  max_size=min(rows, 2), unique=True)):
+            missing[kept] = False  # two values at least: one alone is no channel
         values = [np.nan if gone else value for value, gone in zip(values, missing, strict=True)]
         columns.append((role, name, draw(st.sampled_from(UNITS[role])), values))
     style = draw(st.sampled_from(["[]", "()", "units row", "preamble and units row"]))

@@ -110,7 +110,9 @@ def workbooks(draw):
         name = draw(st.sampled_from(NAMES[role])) + (f" {number}" if role == "gauge" else "")
         values = draw(st.lists(VALUES, min_size=rows, max_size=rows))
         missing = draw(st.lists(st.booleans(), min_size=rows, max_size=rows))
-        missing[draw(st.integers(0, rows - 1))] = False
+        for kept in draw(st.lists(st.integers(0, rows - 1), min_size=min(rows, 2),
+                                  max_size=min(rows, 2), unique=True)):
+            missing[kept] = False  # two values at least: one alone is no channel
         values = [np.nan if gone else value for value, gone in zip(values, missing, strict=True)]
         columns.append((role, name, draw(st.sampled_from(UNITS[role])), values))
     storage = [draw(st.sampled_from(["number", "text", "comma text", "mixed"])) for _ in columns]

@@ -196,14 +196,20 @@ def test_a_column_empty_in_the_whole_file_is_dropped(write, monkeypatch):
     monkeypatch.setattr(stream, "SCAN_ROWS", 5)
     rows = [f"{row * 0.1:.1f},{row},-1000000" for row in range(30)]
     late = rows.copy()
-    late[23] = "2.3,23,45"  # the angle's only value, found by a later scan
+    late[23], late[28] = "2.3,23,45", "2.8,28,46"  # the angle's values, found by later scans
+    lone = rows.copy()
+    lone[0] = "0.0,0,12.5"  # a setting written beside the first sample, no channel
     for name, lines, columns in (("empty.csv", rows, ["time", "force"]),
-                                 ("late.csv", late, ["time", "force", "angle"])):
+                                 ("late.csv", late, ["time", "force", "angle"]),
+                                 ("lone.csv", lone, ["time", "force"])):
         path = write(name, "time [s],force [N],angle [deg]\n" + "\n".join(lines) + "\n")
         reader, meta = assert_opens_as_read(path, kind="engagement")
         assert list(reader.read(0, 30)[0].columns) == columns
         assert ("1 empty column(s) dropped: angle" in reader.metadata.warnings) == (
-            "angle" not in columns)
+            name == "empty.csv")
+        assert ("column 'angle' holds one value (12.5, line 2) over 30 rows: a specimen's "
+                "dimension or a setting, no channel: not used" in reader.metadata.warnings
+                ) == (name == "lone.csv")
 
 
 def test_roles_and_units_are_settled_at_open(write):
