@@ -911,6 +911,15 @@ def _past_midnight(raw: RawTable, step: float) -> str:
             "date and time in one column, year first, or the time in seconds)")
 
 
+def _no_time(count: int, steps: int) -> str:
+    """What steps back, three or more, in a quarter of the `steps` or more mean: no time (a
+    request's latency, a reading named after the time)."""
+    if count < 3 or 4 * count < steps:
+        return ""
+    return (f" (in {count} of {steps} steps: a time runs forward, so the column may be no "
+            "time; name the time in the run sheet, columns = {time = \"...\"})")
+
+
 def _starts_again(time: np.ndarray, backwards: np.ndarray) -> str:
     """What a step back to the first sample's time (within two of its first steps) means:
     tests one after another."""
@@ -949,7 +958,7 @@ def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tupl
         if count:
             first = int(np.argmax(backwards)) + 1
             warnings.append(f"time: steps back {count} times, first at {raw.where(first)}"
-                            + (_past_midnight(raw, steps[first - 1])
+                            + (_no_time(count, steps.size) or _past_midnight(raw, steps[first - 1])
                                or _starts_again(time, backwards)))
         repeated = steps == 0
         if repeated.any():

@@ -98,6 +98,18 @@ def test_time_backwards_and_gaps_are_warnings(write):
     assert "first before line 8" in meta.warnings[1]
 
 
+def test_a_time_stepping_back_often_is_told_as_maybe_no_time(write):
+    # a real balance logger's 'elapsed_s': each request's latency, back in 21 of 29 steps;
+    # told as a time starting again because one step landed near the first value
+    latency = [0.112, 0.095, 0.131, 0.088, 0.125, 0.097, 0.14, 0.091, 0.118, 0.102]
+    text = "elapsed_s,mass_g,stroke_mm\n" + rows(*[(value, 10 + row, 0.1 * row)
+                                                  for row, value in enumerate(latency)])
+    _, meta = read_table(write("balance.csv", text), kind="tensile", strict=False)
+    assert ("time: steps back 5 times, first at line 3 (in 5 of 9 steps: a time runs "
+            "forward, so the column may be no time; name the time in the run sheet, "
+            "columns = {time = \"...\"})") in meta.warnings
+
+
 def test_a_time_without_unit_is_still_checked_for_steps_back(write):
     # a real Turkish rebar tester stacks its specimens one below the other, its time
     # column (Zaman) without a unit: what `chainbench inspect` shows of it (a run refuses
@@ -260,6 +272,9 @@ def _time_warnings_step_by_step(time: list[float]) -> tuple[bool, int, list[str]
         again = first_step > 0 and any(abs(time[line - 2] - time[0]) <= 2 * first_step
                                        for line in back)
         found.append(f"time: steps back {len(back)} times, first at line {back[0]}" + (
+            f" (in {len(back)} of {len(steps)} steps: a time runs forward, so the column may "
+            "be no time; name the time in the run sheet, columns = {time = \"...\"})"
+            if len(back) >= 3 and 4 * len(back) >= len(steps) else
             " (back to the first sample's time: the time starts again, as a cycle's or a "
             "step's own time does, or as the next test's in a file of tests one after "
             "another)" if again else ""))
