@@ -61,7 +61,7 @@ BLANKS = " "
 #: Delimiters tried, in order of preference when several fit.
 DELIMITERS = ("\t", ";", ",", "|", BLANKS)
 #: What separates the names of a table aligned by blanks when a name holds a blank.
-_WIDE_BLANKS = re.compile(r" {2,}|\t")
+_WIDE_BLANKS = re.compile(r"[ \t]*\t[ \t]*| {2,}")
 #: A setting written ``KEY = value`` (an Imada force recorder's ``UNIT = gf,mm``,
 #: ``2ND PEAK FORCE = ---,---``).
 _SETTING = re.compile(r"\s*[^=,;\t]+? = ")

@@ -283,6 +283,16 @@ def test_names_holding_a_blank_over_columns_aligned_by_spaces(write):
     np.testing.assert_allclose(table["gauge_1"], [1e-5, 2e-5, 3e-5])
 
 
+def test_names_apart_by_a_tab_and_blanks_over_columns_aligned_by_spaces(write):
+    # a real drop-tower export: each name padded with blanks after its tab
+    text = ("     Time [ms]\t  Force [N]\t     Ext [mm]\t\n"
+            "    9.499000    12.062190    0.181723\n    9.500000    19.632190    0.221723\n")
+    table, meta = read_table(write("T04.txt", text), kind="tensile")
+    assert [(column.name, column.unit) for column in meta.columns] == [
+        ("Time", "ms"), ("Force", "N"), ("Ext", "mm")]
+    np.testing.assert_allclose(table["time"], [9.499e-3, 9.5e-3])
+
+
 def test_blank_and_missing_cells_after_a_comma_and_a_space_are_missing_values(write):
     # a real TestResources export: ", " between the fields, an unused channel left blank
     text = ("\n\nTime (sec), Load (N), Stress (KPa), Strain (mm), Position (mm), Cycle\n"
