@@ -88,12 +88,18 @@ def derived(table: pd.DataFrame, metadata: TableMetadata
 
 def sample_rate(table: pd.DataFrame) -> float | None:
     """The log's sampling rate [Hz]: one over its median time step, or None without
-    time (or steps)."""
+    time (or steps); of a log whose stamps mostly repeat (printed coarser than it samples:
+    ten rows a millisecond), its rows up to its last stamp over the time to it."""
     if "time" not in table:
         return None
-    steps = np.diff(table["time"].to_numpy(dtype=float))
-    steps = steps[steps > 0]
-    return float(1.0 / np.median(steps)) if steps.size else None
+    time = table["time"].to_numpy(dtype=float)
+    steps = np.diff(time)
+    positive = steps[steps > 0]
+    if not positive.size:
+        return None
+    if np.count_nonzero(steps == 0) > positive.size and time[-1] > time[0]:
+        return float(np.flatnonzero(time == time[-1])[0] / (time[-1] - time[0]))
+    return float(1.0 / np.median(positive))
 
 
 #: How far the mean time step (gaps left out) may lie from the median one before the rate

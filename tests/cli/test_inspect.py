@@ -67,6 +67,18 @@ def test_rows_sent_in_bursts_are_told_beside_the_median_steps_rate(tmp_path):
             f"{1 / mean_step:.4g} Hz") in report["warnings"][0]
 
 
+def test_stamps_coarser_than_the_samples_give_the_rows_rate(tmp_path):
+    # a logger sampling at 10 kHz prints its stamps to the millisecond: ten rows a stamp;
+    # the steps between stamps gave 1 kHz, and "likely refused" for an engagement run
+    times = [1e-3 * (i // 10) for i in range(60)]
+    path = tmp_path / "coarse.csv"
+    path.write_text("time [s],force [kN]\n" + "".join(
+        f"{time:.3f},{load}\n" for time, load in zip(times, LOAD, strict=True)))
+    report = inspect_json("--kind", "engagement", str(path))
+    assert report["sample_rate_hz"] == pytest.approx(1e4)
+    assert not any("sampled at" in warning for warning in report["warnings"])
+
+
 @pytest.mark.parametrize("header", ["Cycles (kcycles)", "Cycles x1000"])
 def test_a_counter_in_a_unit_that_scales_it_is_told_as_a_run_would_refuse_it(tmp_path,
                                                                             header):
