@@ -142,8 +142,8 @@ def count_cycles(force: np.ndarray) -> int:
     int
         Excursions of the oriented force above 70 % of its range, each after a
         visit below 30 % (or at the start); none when the range is within ten times
-        the noise, or the rounding of a force logged in steps (a gauge's whole
-        counts: 0, 2, 0, 2 gf is no load cycle).
+        the noise, or that of the rounding of a force logged in steps (a gauge's
+        whole counts: 0, 2, 0, 2 gf is no load cycle).
 
     Examples
     --------
@@ -160,7 +160,8 @@ def count_cycles(force: np.ndarray) -> int:
     steps = np.abs(np.diff(force))
     steps = steps[steps > 0]
     rounding = float(steps.min()) / np.sqrt(12.0) if steps.size else 0.0
-    return int(rising.size) if span > 10 * max(noise_level(force), rounding) else 0
+    return (int(rising.size) if span > 10 * noise_level(force)
+            and np.ptp(force) > 10 * rounding else 0)
 
 
 def segment_cycles(
