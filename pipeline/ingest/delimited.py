@@ -93,7 +93,6 @@ from pipeline.ingest.textbody import (
 )
 from pipeline.ingest.unitparse import (
     is_micro_alone,
-    is_pressure_unit,
     is_strain_unit,
     spellings,
     unit_fits,
@@ -319,8 +318,9 @@ def _without_in(name: str) -> str:
 
 def _unit_after_its_name(name: str, unit: str, separator: str) -> bool:
     """Whether `unit`, after `name` and `separator`, is a unit of the role `name` gives
-    (``荷重`` and ``kN``: force; a strain's ratio for a gauge; a pressure after a load's
-    name, ``Load psi``, which the force then refuses); or, after a name that gives
+    (``荷重`` and ``kN``: force; a strain's ratio for a gauge), or of another quantity, two
+    letters or more and no word (``Load psi``, ``Velocidad_RPM``: the column then refuses it,
+    where the file was said to give no unit); or, after a name that gives
     no role, a strain's ratio or a micro sign alone after a blank (a Japanese logger's
     ``表-縦 με``, ``表-横 μ``: such a column is warned of), or a unit of force of two
     letters or more after an underscore (a load logger's ``current_kN``, ``peak_kN``), or
@@ -330,12 +330,17 @@ def _unit_after_its_name(name: str, unit: str, separator: str) -> bool:
     if not (name and unit) or unit.isdigit() or match_role(unit) is not None:
         return False  # a number ends a name (Weg 1, gauge_1); a role word names
     role = match_role(name)
-    if role is not None:  # a pressure after a load's name is its unit, to be refused
+    if role is not None:  # a unit of another quantity is the column's, to be refused
         return (unit_fits(unit, role) or (role == "gauge" and is_strain_unit(unit))
-                or (role == "force" and is_pressure_unit(unit)))
+                or (len(unit) > 1 and unit[0].isalpha()  # a label: Strain_1a, no 1 a
+                    and unit.casefold() not in _WORDS_AS_UNITS and bool(spellings(unit))))
     return ((separator == "_" and len(unit) > 1 and unit != "in"
              and (unit_fits(unit, "force") or unit_fits(unit, "length")))
             or (separator == " " and (is_strain_unit(unit) or is_micro_alone(unit))))
+
+
+#: Words pint reads as units that end a name as words (``Force at``, ``Time AM``), folded.
+_WORDS_AS_UNITS = frozenset({"in", "at", "am", "pm"})
 
 
 def metadata(head: Head, spec: TableSpec, layout: str, preamble: dict[str, str]) -> TableMetadata:

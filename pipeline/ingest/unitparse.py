@@ -223,24 +223,6 @@ def unit_fits(text: str | None, role: str) -> bool:
     return any(_fits(spelling, role) for spelling in spellings(text or ""))
 
 
-def is_pressure_unit(text: str | None) -> bool:
-    """Whether some spelling of `text` is a unit of pressure (``"psi"``, ``"bar(g)"``, or a
-    mass over an area for its weight, ``"kg/cm2"``, ``"lb/in2"``): a hydraulic machine's
-    load logged as its ram's pressure is no force.
-
-    Examples
-    --------
-    >>> is_pressure_unit("psig"), is_pressure_unit("kg/cm2"), is_pressure_unit("kN")
-    (True, True, False)
-    """
-    return any(ureg.parse_units(spelling).dimensionality in _PRESSURES
-               for spelling in spellings(text or ""))
-
-
-#: The dimensions of a pressure, and of a mass over an area (its weight over it).
-_PRESSURES = (ureg.pascal.dimensionality, (ureg.kilogram / ureg.meter ** 2).dimensionality)
-
-
 @functools.lru_cache(maxsize=256)
 def is_measure_unit(text: str) -> bool:
     """Whether `text` is a unit of force or length (``"gf"``, ``"mm"``), as a force gauge

@@ -505,13 +505,16 @@ def test_a_role_word_ending_a_name_is_no_unit(write):
     np.testing.assert_allclose(table["strain_1"], [-46.527e-6, -47.5e-6])
 
 
-def test_a_pressure_after_a_loads_name_is_its_unit_and_refused(write):
+@pytest.mark.parametrize(("name", "unit", "role"), [("load", "psi", "force"),
+                                                    ("speed", "RPM", "speed")])
+def test_a_unit_of_another_quantity_after_a_name_is_its_unit_and_refused(write, name, unit,
+                                                                           role):
     # a hydraulic rig's 'load_psi' lost its unit ("the file gives none"), and a force unit
     # in the run sheet then read the pressure as a force without a word
-    text = "Time,load_psi,Stroke\n0,1,0\n0.1,2,0.1\n"
-    _, meta = read_table(write("rig.csv", text), kind="tensile", strict=False)
-    assert {info.name: info.unit for info in meta.columns}["load"] == "psi"
-    assert "column 'load': unit 'psi' is not a unit of force: column not used" in meta.warnings
+    text = f"Time,{name}_{unit},Stroke\n0,1,0\n0.1,2,0.1\n"
+    _, meta = read_table(write("rig.csv", text), kind="wear", strict=False)
+    assert {info.name: info.unit for info in meta.columns}[name] == unit
+    assert f"column {name!r}: unit {unit!r} is not a unit of {role}" in " ".join(meta.warnings)
 
 
 def test_a_prefix_written_out_before_a_unit_is_part_of_it(write):
