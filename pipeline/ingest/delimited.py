@@ -325,7 +325,8 @@ def _unit_after_its_name(name: str, unit: str, separator: str) -> bool:
     ``表-縦 με``, ``表-横 μ``: such a column is warned of), or a unit of force of two
     letters or more after an underscore (a load logger's ``current_kN``, ``peak_kN``), or
     of length (a nanoindenter's ``depth_nm``; not ``in``): ``N`` alone may be a number's
-    mark (``Sample_N``), ``m`` a minute's. A word that names a role is part of the name
+    mark (``Sample_N``), ``m`` a minute's; or of the quantity of a symbol (``t_sec``, ``F_N``:
+    :data:`_SYMBOLS`). A word that names a role is part of the name
     (``Ext Strain``: a strain, its unit unknown, not a ratio)."""
     if not (name and unit) or unit.isdigit() or match_role(unit) is not None:
         return False  # a number ends a name (Weg 1, gauge_1); a role word names
@@ -336,7 +337,12 @@ def _unit_after_its_name(name: str, unit: str, separator: str) -> bool:
                     and unit.casefold() not in _WORDS_AS_UNITS and bool(spellings(unit))))
     return ((separator == "_" and len(unit) > 1 and unit != "in"
              and (unit_fits(unit, "force") or unit_fits(unit, "length")))
+            or (separator == "_" and unit_fits(unit, _SYMBOLS.get(name, "")))
             or (separator == " " and (is_strain_unit(unit) or is_micro_alone(unit))))
+
+
+#: A quantity's symbol before an underscore and its unit (a script's ``t_sec``, ``F_N``).
+_SYMBOLS = {"t": "time", "F": "force"}
 
 
 #: Words pint reads as units that end a name as words (``Force at``, ``Time AM``), folded.

@@ -329,6 +329,15 @@ def test_a_lone_point_is_a_missing_value(write):
     assert meta.rows == 3
 
 
+def test_a_quantitys_symbol_before_its_unit_after_an_underscore(write):
+    # a script's log of an F/T sensor: t_sec (no time by its name alone), F_N (N alone may
+    # number the samples, but after F it is the force's unit)
+    table, meta = read_table(write("ft.csv", "t_sec,F_N,x_mm\n0,1,0\n0.1,2,0.1\n"))
+    assert [(info.name, info.role, info.unit) for info in meta.columns] == [
+        ("t", "time", "sec"), ("F", "force", "N"), ("x", "gauge_1", "mm")]
+    np.testing.assert_allclose(table["time"], [0.0, 0.1])
+
+
 def test_a_load_loggers_units_after_underscores_and_its_held_peak(write):
     # a real load-cell logger (HX711): '#' before every settings line, the units after an
     # underscore, and the peak held so far beside the reading
