@@ -26,7 +26,7 @@ import unicodedata
 from collections import Counter
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from itertools import islice
+from itertools import groupby, islice
 from pathlib import PureWindowsPath
 
 import pyarrow.csv as pacsv
@@ -1315,8 +1315,17 @@ def _units_under_names(names: list[str], over: list[str]) -> tuple[list[str], tu
 
 def _group_labels(row: list[str]) -> list[str]:
     """The labels of `row` when they stand alone at the start of groups of columns of equal
-    width (one label: over the first column, every other cell empty) and name no role;
-    else []."""
+    width (one label: over the first column, every other cell empty), or over each column
+    of its group (Stable Micro Systems' Exponent: ``gel2,gel2,gel2,frame,frame,frame``),
+    and name no role; else []."""
+    cells = [cell.strip() for cell in row]
+    while cells and not cells[-1]:  # a trailing delimiter
+        cells.pop()
+    runs = [(label, len(list(group))) for label, group in groupby(cells)]
+    if (len(runs) > 1 and all(label for label, _ in runs) and runs[0][1] > 1
+            and len({size for _, size in runs}) == 1):
+        labels = [label for label, _ in runs]
+        return [] if len(set(labels)) < len(labels) or any(map(match_role, labels)) else labels
     filled = [position for position, cell in enumerate(row) if cell.strip()]
     if not filled or filled[0] != 0 or len(row) < 2:
         return []

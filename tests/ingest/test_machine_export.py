@@ -7,6 +7,7 @@ from pipeline.errors import ColumnError, LayoutError, UnitError, ValueParseError
 from pipeline.ingest import open_log, read_table
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.sniff import OUT_OF_RANGE_HINT
+from pipeline.units import STANDARD_GRAVITY
 
 BLUEHILL = (
     'Text Inputs : Specimen label,"22L.3"\r\n'
@@ -683,6 +684,20 @@ def test_specimens_side_by_side_under_their_labels_and_a_shorter_one(write):
     table, meta = read_table(path, specimen="AcierC70")
     np.testing.assert_allclose(table["time"], [0, 0.01, 0.02])
     assert meta.rows == 3 and not meta.warnings
+
+
+def test_specimens_labelled_over_each_of_their_columns_are_told_apart(write):
+    # a Stable Micro Systems Exponent layout: each test's name over each of its columns; a
+    # name the readers do not know (Distance) was then named by that row, two tests read
+    # as one with the first's force beside the second's distance
+    text = ("gel2\tgel2\tgel2\tframe\tframe\tframe\t\nForce\tDistance\tTime\tForce\t"
+            "Distance\tTime\t\ng\tmm\tsec\tg\tmm\tsec\t\n\n0.023\t0\t0\t-0.054\t0\t0\t\n"
+            "0.039\t0.01\t0.005\t-0.021\t0.02\t0.005\t\n")
+    with pytest.raises(LayoutError, match="repeat 2 times side by side") as caught:
+        read_table(write("gels.tab", text), kind="engagement")
+    assert "the file's labels gel2, frame" in caught.value.hint
+    table, meta = read_table(write("gels.tab", text), kind="engagement", specimen="frame")
+    np.testing.assert_allclose(table["force"] / STANDARD_GRAVITY, [-0.054e-3, -0.021e-3])
 
 
 def test_a_specimen_asked_of_a_file_of_one_is_refused(write):
