@@ -526,9 +526,11 @@ def read_head(source: Source, size: int = HEAD_BYTES) -> Head:
 
 
 #: The start of a structured document that is no table: a JSON object or array of
-#: records (a screwdriver's curve export), an XML document.
+#: records (a screwdriver's curve export), an XML document, a Universal File Format
+#: dataset (a modal-test system's or catman's UFF: ``-1`` over its dataset number, 58).
 _DOCUMENTS = {"JSON": re.compile(r'\s*(?:\{\s*"|\[\s*[{\["])'),
-              "XML": re.compile(r"\s*<\?xml\b")}
+              "XML": re.compile(r"\s*<\?xml\b"),
+              "Universal File Format (UFF)": re.compile(r" *-1 *\n *\d+ *\n")}
 
 
 def refuse_document(lines: list[str], name: str) -> None:

@@ -143,6 +143,12 @@ def test_dialect(lines, dialect, tmp_path):
      "JSON"),
     ('[\n  {\n    "time": 0.0,\n    "torque": 1.5\n  },\n  {"time": 0.001}\n]\n', "JSON"),
     ('<?xml version="1.0"?>\n<test><point t="0.0" f="1,5"/></test>\n', "XML"),
+    # a catman UFF58 dataset: its records were read as a table, broken at the sixth
+    ("    -1\n    58\n1x : m/s²\nUFF58 file created by HBM catman\n30-Apr-20 19:12:52\n"
+     "NONE\nNONE\n    1         0    0         0 NONE               0   0 NONE   0   0\n"
+     "         2        13         1 0.00000E+000 5.00000E-005 0.00000E+000\n"
+     " -3.81956E+00 -3.56616E+00 -2.98987E+00 -2.62207E+00 -3.22879E+00 -3.63712E+00\n"
+     "    -1\n", r"Universal File Format \(UFF\)"),
 ])
 def test_a_structured_document_is_refused_as_such(write, text, kind):
     # a screwdriver's curve export: its braces and commas are no table's rows
