@@ -127,7 +127,7 @@ def spellings(text: str) -> list[str]:
         return []
     text = text.strip().strip("()[]{}").strip()
     since = _SINCE.fullmatch(text)  # a clock's count from an epoch: its unit
-    text = since["unit"] if since else text
+    text = since["unit"] if since else "microstrain" if _MILLIONTHS.fullmatch(text) else text
     if not _parses(text):  # a product written with hyphens (a rheometer's Pa-s, N-m), a
         # square without its caret (kg/cm2), a gauge or absolute pressure's mark (bar(g))
         text = _PRESSURE_MARK.sub("", _SQUARE.sub(r"^\1", _HYPHEN.sub("*", text)))
@@ -136,6 +136,11 @@ def spellings(text: str) -> list[str]:
         candidates += [text.lower(), text[:1].lower() + text[1:]]
     return [spelling for spelling in dict.fromkeys(candidates) if spelling and _parses(spelling)]
 
+
+#: A millionth written as a power of ten, as Japanese strain loggers write microstrain
+#: (Kyowa's and Tokyo Sokki's ``×10^-6``; ``x10-6``, ``1e-6``).
+_MILLIONTHS = re.compile(r"[x×*]\s*10\s*\^?\s*[-−⁻]\s*[6⁶]|10\s*(?:\^\s*[-−]|⁻)\s*[6⁶]"
+                         r"|1[eE]-0?6")
 
 #: A hyphen between letters: a product of units (``Pa-s``, ``N-m``, ``lbf-in``).
 _HYPHEN = re.compile(r"(?<=[^\W\d_])-(?=[^\W\d_])")

@@ -148,13 +148,18 @@ def test_a_pressure_however_written_is_no_force(unit):
     assert unit_misfits(unit, "force")
 
 
+def test_a_range_of_numbers_is_no_millionth():
+    assert spellings("10-6") == [] and spellings("x10^-3") == []
+
+
 def test_a_unit_squared_without_its_caret_is_read():
     assert ureg.Quantity(1, spellings("kgf/cm2")[0]).to("Pa").magnitude == pytest.approx(
         98066.5)
     assert spellings("CH1") == [] and spellings("Weg 2") == []
 
 
-@pytest.mark.parametrize("unit", ["ue", "uE", "µe", "(με)", "µε"])
+@pytest.mark.parametrize("unit", ["ue", "uE", "µe", "(με)", "µε", "×10^-6", "x10-6", "1e-6",
+                                  "10⁻⁶", "(x10^-6)"])
 def test_microstrain_in_plain_letters_is_a_strain_of_a_millionth(unit):
     from pipeline.ingest.unitparse import is_strain_unit, si_factor
 
