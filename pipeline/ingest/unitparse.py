@@ -130,7 +130,7 @@ def spellings(text: str) -> list[str]:
     text = since["unit"] if since else "microstrain" if _MILLIONTHS.fullmatch(text) else text
     if not _parses(text):  # a product written with hyphens (a rheometer's Pa-s, N-m), a
         # square without its caret (kg/cm2), a gauge or absolute pressure's mark (bar(g))
-        text = _PRESSURE_MARK.sub("", _SQUARE.sub(r"^\1", _HYPHEN.sub("*", text)))
+        text = _PRESSURE_MARK.sub("", _SQUARE.sub(r"\1^\2", _HYPHEN.sub("*", text)))
     candidates = [text]
     if not _parses(text) or _case_says_nothing(text):
         candidates += [text.lower(), text[:1].lower() + text[1:]]
@@ -145,8 +145,9 @@ _MILLIONTHS = re.compile(r"[x×*]\s*10\s*\^?\s*[-−⁻]\s*[6⁶]|10\s*(?:\^\s*[
 #: A hyphen between letters: a product of units (``Pa-s``, ``N-m``, ``lbf-in``).
 _HYPHEN = re.compile(r"(?<=[^\W\d_])-(?=[^\W\d_])")
 
-#: A 2 or 3 right after a unit's letters: its power (``kg/cm2``, ``N/mm2``, ``m/s2``).
-_SQUARE = re.compile(r"(?<=[^\W\d_])([23])\b")
+#: A 2 or 3 right after a unit of length or the second: its power (``kg/cm2``, ``N/mm2``,
+#: ``m/s2``; not ``a2``, a label).
+_SQUARE = re.compile(r"(?<![^\W\d_])((?:[kcmµu]?m|in|ft|s))([23])\b")
 #: A pressure's mark of gauge or absolute after its unit (``bar(g)``, ``psi (a)``).
 _PRESSURE_MARK = re.compile(r"\s*\((?:g|a|gauge|abs)\)?$", re.IGNORECASE)  # ")" stripped
 

@@ -156,6 +156,7 @@ def test_a_unit_squared_without_its_caret_is_read():
     assert ureg.Quantity(1, spellings("kgf/cm2")[0]).to("Pa").magnitude == pytest.approx(
         98066.5)
     assert spellings("CH1") == [] and spellings("Weg 2") == []
+    assert spellings("a2") == []  # a label (a tensile specimen's width a2), no are squared
 
 
 @pytest.mark.parametrize("unit", ["ue", "uE", "µe", "(με)", "µε", "×10^-6", "x10-6", "1e-6",
