@@ -632,12 +632,18 @@ def detect_dialect(
                      "'Elongation [%]'")
         if not any(_has_two_numbers(line) for line in sample):
             named = _data_file_named(lines, name)
+            lone = any(is_number(cell, decimal) for line in sample for delimiter in DELIMITERS
+                       for cell in split_fields(line, delimiter) for decimal in ".,")
             raise EmptyFileError(
+                "no data rows: no line holds two numbers side by side, as a log's rows do (a "
+                "summary of a test's results?)" if lone else
                 "no data rows: the file holds only text lines",
                 file=name, row=len(lines) + 1,
                 hint=f"the file names {named!r}: the measurements may be there; give that "
                      "file in the run sheet" if named else
-                     "the machine wrote no measurements: export the test again",
+                     "the machine wrote no measurements: export the test again" if not lone
+                     else "export the test's raw data (time, force, displacement side by "
+                          "side), not its results",
             )
         texts = _text_in_every_row(sample, tuple(d for d in delimiters if d != BLANKS))
         if texts:

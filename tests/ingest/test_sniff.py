@@ -209,6 +209,18 @@ def test_header_only_is_empty(tmp_path):
         detect_dialect(["Points: 51", "Cycles: 3 5", "end"], tmp_path)
 
 
+def test_a_summary_of_results_is_told_as_such_not_as_text_lines(tmp_path):
+    # a real finger-strength app's export: one row of results, one number among its texts
+    lines = ["date,tag,comment,unit,type,max weight,body weight,force/BW",
+             "2026-29-07 09:31:55,max force test ,,SI,single,10.3841515,,"]
+    with pytest.raises(EmptyFileError) as caught:
+        detect_dialect(lines, tmp_path)
+    assert caught.value.message == (
+        "no data rows: no line holds two numbers side by side, as a log's rows do (a summary "
+        "of a test's results?)")
+    assert caught.value.hint.startswith("export the test's raw data")
+
+
 def test_a_header_file_naming_its_data_file_points_to_it(tmp_path):
     # a real HBM catman .TSX: the test's settings, and the file its measurements went to
     lines = ["CATMAN TEST FILE", "Messwertdatei=DD11_7_3.ASC", "Standardmessrate=50 Hz",
