@@ -390,7 +390,9 @@ class ClockColumn:
 
     def note(self, name: str) -> str:
         """What the reader tells the user about column `name`."""
-        kind = "date and time" if self.carried else self.kind
+        kind = ("date and time" if self.carried else "a time elapsed, from zero"
+                if self.kind == "time of day" and _FROM_ZERO.fullmatch(self.first)
+                else self.kind)
         note = (f"column {name!r} holds clock readings ({kind}, first "
                 f"{self.first.strip()!r}): read as seconds after the first row's")
         if self.unpadded is not None:
@@ -408,6 +410,11 @@ class ClockColumn:
         if self._zoned:
             note += ", each at its offset from UTC"
         return note
+
+
+#: A first reading of a clock that counts from zero (a logger's elapsed ``00:00:00``): no
+#: time of day.
+_FROM_ZERO = re.compile(r"\s*0?0:00:0\d(?:[.,]\d+)?\s*")
 
 
 def fraction_columns(clocks: Mapping[int, ClockColumn]) -> frozenset[int]:

@@ -24,7 +24,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
             "extension", "displacement", "disp", "gauge", "elongation", "extensometer", "ext",
             "deflection", "position", "stroke", "crosshead", "lvdt", "dial", "strain",
             "actuator", "piston", "clip gauge", "ave", "video extensometer", "travel",
-            "stretch", "chain stretch",
+            "stretch", "chain stretch", "grip to grip separation", "grip separation",
         ),
         "angle": ("angle", "encoder", "rotation"),
         "cycle_count": ("cycle", "cycles", "cycle count", "segment count", "stroke count",
@@ -79,7 +79,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "time": ("temps", "durée"),
         "force": ("force", "effort"),  # not "charge": an electric charge in English logs
         "gauge": ("déplacement", "allongement", "déformation", "déform", "extensomètre",
-                  "course", "course traverse", "vérin"),
+                  "course", "course traverse", "vérin", "écartement entre outils"),
         "cycle_count": ("cycles", "nombre de cycles"),
         "length": ("longueur",),
         "speed": ("vitesse",),
@@ -157,7 +157,8 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
 GAUGE_KINDS: dict[str, tuple[str, ...]] = {
     "crosshead": (
         "crosshead", "cross head", "stroke", "position", "actuator", "piston", "machine",
-        "standard travel",
+        "standard travel", "grip to grip separation", "grip separation",
+        "écartement entre outils",
         "traverse", "traversenweg", "standardweg", "standardwegaufnehmer", "kolbenweg",
         "maschinenweg", "trawersa", "trawersy", "tłok", "droga standardowa", "travesaño",
         "actuador", "pistón", "carrera", "course", "vérin", "travessa", "atuador", "pistão",

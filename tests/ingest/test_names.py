@@ -226,6 +226,8 @@ def test_a_channel_along_the_specimen_is_not_transverse(name):
 
 @pytest.mark.parametrize(("name", "kind"), [
     ("Course_Traverse", "crosshead"), ("Position vérin", "crosshead"),
+    # ZwickRoell testXpert's crosshead gauge, in English and French
+    ("Grip to grip separation", "crosshead"), ("Ecartement entre outils", "crosshead"),
     ("C_1_Déform1", "extensometer"), ("Extensomètre", "extensometer"),
     ("Déplacement", "gauge"), ("Allongement", "gauge"),
 ])
