@@ -179,6 +179,15 @@ def test_one_digit_hours_and_a_decimal_comma_in_the_seconds(write):
                for warning in meta.warnings)
 
 
+def test_a_clock_counting_from_zero_is_told_as_a_time_elapsed(write):
+    # a real PicoLog export: its elapsed "00:00:00" past 24 hours was called a time of day
+    text = "Time,Force (N)\n00:00:00,1.0\n00:00:01,1.5\n00:00:02,2.0\n"
+    table, meta = read_table(write("pico.csv", text), kind="engagement", strict=False)
+    np.testing.assert_allclose(table["time"], [0.0, 1.0, 2.0])
+    assert any("holds clock readings (a time elapsed, from zero, first '00:00:00')" in warning
+               for warning in meta.warnings)
+
+
 def test_milliseconds_after_a_colon(write):
     # a press's software: "09:39:48:776", a colon before the milliseconds
     cells = [time_of_day(s, 9 * 3600 + 3598.5) for s in SECONDS]
