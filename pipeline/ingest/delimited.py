@@ -93,6 +93,7 @@ from pipeline.ingest.textbody import (
 )
 from pipeline.ingest.unitparse import (
     is_micro_alone,
+    is_quantity_unit,
     is_strain_unit,
     spellings,
     unit_fits,
@@ -334,7 +335,7 @@ def _unit_after_its_name(name: str, unit: str, separator: str) -> bool:
     if role is not None:  # a unit of another quantity is the column's, to be refused
         return (unit_fits(unit, role) or (role == "gauge" and is_strain_unit(unit))
                 or (len(unit) > 1 and unit[0].isalpha()  # a label: Strain_1a, no 1 a
-                    and unit.casefold() not in _WORDS_AS_UNITS and bool(spellings(unit))))
+                    and unit.casefold() not in _WORDS_AS_UNITS and is_quantity_unit(unit)))
     return ((separator == "_" and len(unit) > 1 and unit != "in"
              and (unit_fits(unit, "force") or unit_fits(unit, "length")))
             or (separator == "_" and unit_fits(unit, _SYMBOLS.get(name, "")))
@@ -345,8 +346,9 @@ def _unit_after_its_name(name: str, unit: str, separator: str) -> bool:
 _SYMBOLS = {"t": "time", "F": "force"}
 
 
-#: Words pint reads as units that end a name as words (``Force at``, ``Time AM``), folded.
-_WORDS_AS_UNITS = frozenset({"in", "at", "am", "pm"})
+#: Words pint reads as units that end a name as words (``Force at``, ``Time AM``) or as
+#: an axis (a force plate's centre of pressure, ``ground_force1_px``: no pixels), folded.
+_WORDS_AS_UNITS = frozenset({"in", "at", "am", "pm", "px"})
 
 
 def metadata(head: Head, spec: TableSpec, layout: str, preamble: dict[str, str]) -> TableMetadata:

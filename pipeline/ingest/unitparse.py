@@ -229,6 +229,25 @@ def unit_fits(text: str | None, role: str) -> bool:
     return any(_fits(spelling, role) for spelling in spellings(text or ""))
 
 
+def is_quantity_unit(text: str | None) -> bool:
+    """Whether some spelling of `text` is a unit of a quantity a test rig logs (a time,
+    length, speed, force, mass, pressure, frequency, torque, power, temperature, voltage or
+    current): not a byte's, a mole's or a bare ratio.
+
+    Examples
+    --------
+    >>> is_quantity_unit("psi"), is_quantity_unit("RPM"), is_quantity_unit("kB")
+    (True, True, False)
+    """
+    return any(ureg.parse_units(spelling).dimensionality in _QUANTITIES
+               for spelling in spellings(text or ""))
+
+
+#: The dimensions of :func:`is_quantity_unit`.
+_QUANTITIES = tuple(ureg.parse_units(unit).dimensionality for unit in (
+    "s", "m", "m/s", "N", "kg", "Pa", "kg/m^2", "Hz", "J", "W", "K", "V", "A"))
+
+
 @functools.lru_cache(maxsize=256)
 def is_measure_unit(text: str) -> bool:
     """Whether `text` is a unit of force or length (``"gf"``, ``"mm"``), as a force gauge
