@@ -254,8 +254,7 @@ SIGN_CONVENTION_WORDS = frozenset({"compressive", "tensile"})
 #: logger's stamps of a state's last change (``last_changed``, no German load), a rate or
 #: a pace of a quantity (a rowing machine's ``Stroke Rate (SPM)``, ``Stroke500mPace``; a
 #: ``Load rate``, no load), a meter's setting of its display (a Keithley's ``Disp
-#: Digits``, no displacement), a six-axis sensor's torques (``Tz (nm)``: newton metres in
-#: lower case, no nanometres). Such a column takes no role, not even from its unit.
+#: Digits``, no displacement). Such a column takes no role, not even from its unit.
 OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points count",
                         "reading count", "readings count", "scan count", "pip count", "temp",
                         "temperature", "temperatur", "température", "temperatura", "温度",
@@ -267,7 +266,6 @@ OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points 
                         "last seen", "torque", "drehmoment", "stroke rate", "load rate",
                         "loading rate", "force rate", "strain rate", "stress rate",
                         "displacement rate", "extension rate", "cycle rate", "pace", "digits",
-                        "tx", "ty", "tz", "mx", "my", "mz",
                         "moment obrotowy", "momento torsor", "couple moteur", "扭矩", "トルク",
                         "토크", "крутящий момент")
 #: The labels of :data:`TRANSVERSE_NAMES` and :data:`OTHER_QUANTITY_NAMES` among the role

@@ -177,11 +177,17 @@ def test_a_count_of_samples_a_temperature_or_an_acceleration_takes_no_role(name)
 
 
 @pytest.mark.parametrize("name", ["Stroke Rate", "StrokeRate", "Load rate", "Strain rate",
-                                  "Pace", "Disp Digits", "Tz", "Mx"])
-def test_a_rate_a_setting_or_a_torque_takes_no_role(name):
+                                  "Pace", "Disp Digits"])
+def test_a_rate_or_a_setting_takes_no_role(name):
     # a rowing machine's 'Stroke Rate (SPM)' was a gauge by its first word, in a unit the
     # run sheet could have set to millimetres; a load rate is no load, a strain rate no strain
     assert match_role(name) is None and is_unmeasured(name)
+
+
+@pytest.mark.parametrize("name", ["MX840B_CH 1", "MX1615B_CH 1"])
+def test_an_amplifiers_channel_takes_no_role_by_its_name(name):
+    # HBM QuantumX amplifiers: their channels take a role by their unit alone
+    assert match_role(name) is None and not is_unmeasured(name)
 
 
 @pytest.mark.parametrize("name", ["Stroke Count", "StrokeCount", "Strokes"])
