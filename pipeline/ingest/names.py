@@ -180,6 +180,7 @@ GAUGE_KINDS: dict[str, tuple[str, ...]] = {
 #: says.
 TRANSVERSE_NAMES = (
     "width", "width change", "transverse", "transverse strain", "lateral", "lateral strain",
+    "hoop", "hoop strain", "circumferential strain",
     "thickness", "thickness change", "thickness strain", "width strain", "minor strain",
     "breite", "breitenänderung", "breitenaenderung", "breitendehnung", "dicke",
     "dickenänderung", "dickenaenderung", "dickendehnung", "querdehnung", "szerokość", "grubość",

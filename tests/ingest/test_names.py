@@ -153,7 +153,8 @@ def test_fold_drops_case_and_diacritics():
     assert fold("SIŁA Ąę Straße") == "sila ae strasse"
 
 
-@pytest.mark.parametrize("name", ["Breitenänderung", "BREITENAENDERUNG", "Width change",
+@pytest.mark.parametrize("name", ["Hoop Strain", "Breitenänderung", "BREITENAENDERUNG",
+                                  "Width change",
                                   "Transverse strain", "Transverse", "Querdehnung",
                                   "表-横 ひずみ", "横-平均",  # a Japanese logger's
                                   # a DIC export's (GOM Correlate's thickness_strain)
