@@ -88,8 +88,10 @@ def derived(table: pd.DataFrame, metadata: TableMetadata
 
 def sample_rate(table: pd.DataFrame) -> float | None:
     """The log's sampling rate [Hz]: one over its median time step, or None without
-    time (or steps); of a log whose stamps mostly repeat (printed coarser than it samples:
-    ten rows a millisecond), its rows up to its last stamp over the time to it."""
+    time (or steps); of a log whose stamps mostly repeat with other readings (printed
+    coarser than it samples: ten rows a millisecond), its rows up to its last stamp over
+    the time to it. Rows repeated whole (a logger writing each sample thrice) are no
+    samples."""
     if "time" not in table:
         return None
     time = table["time"].to_numpy(dtype=float)
@@ -97,8 +99,11 @@ def sample_rate(table: pd.DataFrame) -> float | None:
     positive = steps[steps > 0]
     if not positive.size:
         return None
-    if np.count_nonzero(steps == 0) > positive.size and time[-1] > time[0]:
-        return float(np.flatnonzero(time == time[-1])[0] / (time[-1] - time[0]))
+    repeats = np.flatnonzero(steps == 0) + 1
+    if repeats.size > positive.size and time[-1] > time[0]:
+        values = table.to_numpy(dtype=float)
+        if not np.all(values[repeats] == values[repeats - 1], axis=1).mean() > 0.5:
+            return float(np.flatnonzero(time == time[-1])[0] / (time[-1] - time[0]))
     return float(1.0 / np.median(positive))
 
 

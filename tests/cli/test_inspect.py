@@ -77,6 +77,11 @@ def test_stamps_coarser_than_the_samples_give_the_rows_rate(tmp_path):
     report = inspect_json("--kind", "engagement", str(path))
     assert report["sample_rate_hz"] == pytest.approx(1e4)
     assert not any("sampled at" in warning for warning in report["warnings"])
+    # a texture analyser writing each sample thrice: the samples' rate, not the rows'
+    thrice = tmp_path / "thrice.csv"
+    thrice.write_text("time [s],force [kN]\n" + "".join(
+        f"{row // 3 * 0.013:.3f},{LOAD[row // 3]}\n" for row in range(60)))
+    assert inspect_json(str(thrice))["sample_rate_hz"] == pytest.approx(1 / 0.013)
 
 
 @pytest.mark.parametrize("header", ["Cycles (kcycles)", "Cycles x1000"])
