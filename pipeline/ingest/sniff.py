@@ -917,6 +917,9 @@ def find_table(
            and _units_beside_numbers(rows[data - 1], decimal) is None
            and not _names_with_numbers(rows[data - 1], kinds[data - 1], decimal, width)):
         data -= 1
+    statistics = _statistics(rows[data:])
+    if len(statistics) > 1 and statistics[0][0] <= RESULTS_ROWS:  # under a batch's results
+        raise _statistics_error([label for _, label in statistics], name, data)
     numbered = ()
     if _numbers_over_texts(rows[data:], kinds[data:], width, decimal):
         numbered = (f"line {data + 1}: a row of channel numbers over columns of text is read "
@@ -982,15 +985,8 @@ def find_table(
                       "blanks or a tab between them): the columns are named by their place",)
             names = [""] * columns
     if len(names) > columns:
-        statistics = [row[0].strip() for row in rows[data:]
-                      if row and row[0].strip().lower() in STATISTICS_LABELS]
         if statistics:
-            raise LayoutError(
-                f"the rows under the names are statistics of a batch's results "
-                f"({', '.join(statistics[:4])}), not a test's raw data",
-                file=name, row=data + 1,
-                hint="export the raw data of each specimen (time, force, extension), not "
-                     "the results table")
+            raise _statistics_error([label for _, label in statistics], name, data)
         raise LayoutError(
             f"the names row has {len(names)} fields but the data rows have {width}",
             file=name, row=above + 1,
@@ -1058,6 +1054,27 @@ def find_table(
         notes=notes,
         specimens=specimens,
     )
+
+
+def _statistics(rows: list[list[str]]) -> list[tuple[int, str]]:
+    """The rows of `rows` labelled as a statistic (:data:`STATISTICS_LABELS`) in their
+    first or second cell (the first may number the row), with their place."""
+    found = []
+    for at, row in enumerate(rows):
+        label = next((cell.strip() for cell in row[:2] if not is_missing(cell)), "")
+        if label.lower() in STATISTICS_LABELS:
+            found.append((at, label))
+    return found
+
+
+def _statistics_error(labels: list[str], name: str, data: int) -> LayoutError:
+    """The refusal of a batch's results table, its statistics labelled `labels`."""
+    return LayoutError(
+        f"the rows under the names are statistics of a batch's results "
+        f"({', '.join(labels[:4])}), not a test's raw data",
+        file=name, row=data + 1,
+        hint="export the raw data of each specimen (time, force, extension), not the "
+             "results table")
 
 
 def _clock_column(kind: str, index: int, names: list[str], rows: list[list[str]],

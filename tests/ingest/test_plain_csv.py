@@ -369,6 +369,19 @@ def test_a_results_table_with_its_statistics_is_refused_as_such(write):
         read_table(write("tensile_sample.csv", text))
 
 
+def test_a_results_table_numbering_its_rows_is_refused_by_its_statistics(write):
+    # a Bluehill results table: the row number first, the specimens' labels numbers too
+    # ('009'), the statistics labelled in the second cell; with a gauge-like 'Maximum
+    # Extension' it was read as a seven-point curve, the standard deviation a sample
+    text = ('"Results Table 1"\n"","Specimen label","Maximum Load","Maximum Extension"\n'
+            '"","","(N)","(mm)"\n' + "".join(f'"{row}","00{8 + row}","38{row}0.5","0.45{row}"\n'
+                                             for row in range(1, 6))
+            + '"","Mean","3830.5","0.453"\n"","Standard Deviation","31.4","0.009"\n')
+    with pytest.raises(LayoutError, match=r"statistics of a batch's results \(Mean, "
+                                          r"Standard Deviation\)"):
+        read_table(write("results.csv", text))
+
+
 def test_short_row_in_the_middle(write):
     with pytest.raises(LayoutError, match="2 fields where the data rows have 3") as caught:
         read_table(write("t.csv", "time [s],force [kN],gauge [mm]\n0,1,2\n0,1\n0,1,2\n"))
