@@ -126,6 +126,8 @@ def spellings(text: str) -> list[str]:
     if is_micro_alone(text):
         return []
     text = text.strip().strip("()[]{}").strip()
+    if _CHANNEL_NUMBER.search(text):  # Bluehill's "(Strain 1)": a channel, no strain x 1
+        return []
     since = _SINCE.fullmatch(text)  # a clock's count from an epoch: its unit
     text = since["unit"] if since else "microstrain" if _MILLIONTHS.fullmatch(text) else text
     if not _parses(text):  # a product written with hyphens (a rheometer's Pa-s, N-m), a
@@ -136,6 +138,9 @@ def spellings(text: str) -> list[str]:
         candidates += [text.lower(), text[:1].lower() + text[1:]]
     return [spelling for spelling in dict.fromkeys(candidates) if spelling and _parses(spelling)]
 
+
+#: A word and a number apart at the end of a text: a channel's name and number.
+_CHANNEL_NUMBER = re.compile(r"[^\W\d_]\s+\d+$")
 
 #: A millionth written as a power of ten, as Japanese strain loggers write microstrain
 #: (Kyowa's and Tokyo Sokki's ``×10^-6``; ``x10-6``, ``1e-6``).

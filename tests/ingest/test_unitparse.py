@@ -148,6 +148,12 @@ def test_a_pressure_however_written_is_no_force(unit):
     assert unit_misfits(unit, "force")
 
 
+def test_a_channel_and_its_number_is_no_unit():
+    # Bluehill's 'Tensile strain (Strain 1)' names the channel it was worked from; pint read
+    # 'strain 1' as a ratio, and a strain in % a hundred times too large
+    assert spellings("Strain 1") == [] and spellings("(AVE 2)") == []
+
+
 def test_a_range_of_numbers_is_no_millionth():
     assert spellings("10-6") == [] and spellings("x10^-3") == []
 
