@@ -60,6 +60,17 @@ HEAD_BYTES = 1 << 16
 BLANKS = " "
 #: Delimiters tried, in order of preference when several fit.
 DELIMITERS = ("\t", ";", ",", "|", BLANKS)
+#: A number with thousands separators, by decimal mark: ``1,004.80328`` (Bluehill's quoted
+#: forces), ``1'017.11`` (a Swiss locale's); with decimal commas, grouped by points before
+#: its decimals (``1.017,11``: a spreadsheet's in a German locale) or by blanks (``1 017,11``,
+#: a French one's, with a no-break space), and a whole number grouped by points (``1.056``
+#: ms), read so only in a column where a cell shows the points to group
+#: (:func:`~pipeline.ingest.textbody.parse_body`). Python's and RE2's regular expressions alike.
+_BLANKS_GROUPING = "[ \u00a0\u202f]"
+THOUSANDS = {
+    ".": re.compile(r"[+-]?\d{1,3}(?:(?:,\d{3})+|(?:'\d{3})+)(?:\.\d*)?(?:[eE][+-]?\d+)?"),
+    ",": re.compile(r"[+-]?\d{1,3}(?:(?:\.\d{3})+|(?:" + _BLANKS_GROUPING + r"\d{3})+)(?:,\d*)?"),
+}
 #: What separates the names of a table aligned by blanks when a name holds a blank.
 _WIDE_BLANKS = re.compile(r"[ \t]*\t[ \t]*| {2,}")
 #: A setting written ``KEY = value`` (an Imada force recorder's ``UNIT = gf,mm``,
@@ -1129,6 +1140,7 @@ def _text_columns(rows: list[list[str]], kinds: list[str], columns: int, decimal
     for row in data:
         texts = {index for index in texts if index < len(row) and not (
             is_number(row[index], decimal) or is_missing(row[index])
+            or THOUSANDS[decimal].fullmatch(row[index].strip())
             or clock_kind(row[index]) is not None)}
     return frozenset(texts) if len(data) >= 2 else frozenset()  # one bad row is a bad cell
 
@@ -1458,7 +1470,8 @@ def _repeats_name(cell: str, names: list[str], index: int) -> bool:
 def _over_text(first_data: list[str], index: int, decimal: str) -> bool:
     """Whether column `index` of the first data row holds text or a clock reading."""
     cell = first_data[index] if index < len(first_data) else ""
-    return not (is_missing(cell) or is_number(cell, decimal))
+    return not (is_missing(cell) or is_number(cell, decimal)
+                or THOUSANDS[decimal].fullmatch(cell.strip()))
 
 
 def _first_data_row(rows: list[list[str]], kinds: list[str], width: int,

@@ -28,6 +28,7 @@ from pipeline.ingest.sniff import (
     BLANKS,
     COMMENT_MARK,
     NULL_VALUES,
+    THOUSANDS,
     cell_hint,
     is_comment,
     is_missing,
@@ -50,17 +51,6 @@ POOL = pa.system_memory_pool()
 
 _INVALID = re.compile(r"column #(\d+).*invalid value '(.*)'", re.DOTALL)
 _WRONG_WIDTH = re.compile(r"Expected \d+ columns, got \d+: (.*)", re.DOTALL)
-#: A number with thousands separators, by decimal mark: ``1,004.80328`` (Bluehill's quoted
-#: forces), ``1'017.11`` (a Swiss locale's); with decimal commas, grouped by points before
-#: its decimals (``1.017,11``: a spreadsheet's in a German locale) or by blanks (``1 017,11``,
-#: a French one's, with a no-break space), and a whole number grouped by points (``1.056``
-#: ms), read so only in a column where a cell shows the points to group
-#: (:func:`_with_thousands`). Python's and RE2's regular expressions alike.
-_BLANKS_GROUPING = "[ \u00a0\u202f]"
-_THOUSANDS = {
-    ".": re.compile(r"[+-]?\d{1,3}(?:(?:,\d{3})+|(?:'\d{3})+)(?:\.\d*)?(?:[eE][+-]?\d+)?"),
-    ",": re.compile(r"[+-]?\d{1,3}(?:(?:\.\d{3})+|(?:" + _BLANKS_GROUPING + r"\d{3})+)(?:,\d*)?"),
-}
 #: The thousands separators removed, by decimal mark.
 _GROUPING = {".": (",", "'"), ",": (".", " ", "\u00a0", "\u202f")}
 #: A cell of points grouping thousands before a decimal comma: the points are no decimal
@@ -499,7 +489,7 @@ def _stream(body: Region, delimiter: str) -> pa.NativeFile:
 def _thousands_cell(error: Exception, decimal: str) -> bool:
     """Whether the cell pyarrow could not read is a number with thousands separators."""
     reported = _INVALID.search(str(error))
-    return reported is not None and _THOUSANDS[decimal].fullmatch(reported.group(2)) is not None
+    return reported is not None and THOUSANDS[decimal].fullmatch(reported.group(2)) is not None
 
 
 def _with_thousands(body: pa.NativeFile, read_options: pacsv.ReadOptions,
@@ -527,7 +517,7 @@ def _with_thousands(body: pa.NativeFile, read_options: pacsv.ReadOptions,
         grouped = pc.match_substring_regex(
             text, "[" + "".join(re.escape(mark) for mark in _GROUPING[decimal]) + "]")
         if pc.any(pc.and_kleene(grouped, pc.invert(pc.match_substring_regex(
-                text, f"^{_THOUSANDS[decimal].pattern}$")))).as_py():
+                text, f"^{THOUSANDS[decimal].pattern}$")))).as_py():
             raise pa.ArrowInvalid(f"column {label}: a separator in a number that is not a "
                                   "thousands separator")
         if decimal != "." and pc.any(pc.match_substring(text, ".")).as_py() and pc.any(
@@ -583,7 +573,7 @@ def locate_defect(
                 if not (clocks[index].matches(cell) or is_missing(cell)):
                     return _bad_clock(region, names, number, index, cell, clocks[index])
             elif not (is_number(cell, decimal) or is_missing(cell)
-                      or decimal == "." and _THOUSANDS["."].fullmatch(cell.strip())):
+                      or decimal == "." and THOUSANDS["."].fullmatch(cell.strip())):
                 return _bad_cell(region, names, number, index, cell, decimal)
     if reported is not None:
         index = int(reported.group(1))
@@ -685,7 +675,7 @@ def _bad_cell(
         if is_number(cell, other)
         else "the number is grouped in thousands in a form not read here (a no-break space "
              "is read in a file saved as UTF-8 only): save the file as UTF-8, or its numbers "
-             "without grouping" if _THOUSANDS[decimal].fullmatch(cell.strip())
+             "without grouping" if THOUSANDS[decimal].fullmatch(cell.strip())
         else cell_hint(cell, "fix or delete the cell (missing values may be left empty or "
                              "written NaN)")
     )

@@ -792,6 +792,17 @@ def test_quoted_numbers_with_thousands_separators(write, reader):
     np.testing.assert_allclose(table["gauge_1"], 2e-6 * np.arange(80), atol=1e-12)
 
 
+@pytest.mark.parametrize("reader", [read_table, open_log])
+def test_loads_grouped_in_thousands_from_the_first_row_are_the_force(write, reader):
+    # a preloaded specimen's export: every load in the first rows over 1,000 N; the column
+    # was taken for text, its unit dropped, and the run found no force
+    lines = bluehill_quoted(120).split("\r\n")
+    text = "\r\n".join(lines[:4] + lines[44:])
+    found = reader(write("Specimen_RawData_1.csv", text), kind="tensile")
+    table = found[0] if reader is read_table else found.read(0, 80)[0]
+    np.testing.assert_allclose(table["force"][:80], 25.0 * np.arange(40, 120))
+
+
 @pytest.mark.parametrize("cell", ["1,2", "10,00.5", "1,0045.2"])
 def test_a_comma_that_is_no_thousands_separator_is_still_refused(write, cell):
     text = bluehill_quoted(80).replace('"1,500.00000"', f'"{cell}"')  # past 20 grouped loads
