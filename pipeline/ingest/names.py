@@ -254,7 +254,8 @@ SIGN_CONVENTION_WORDS = frozenset({"compressive", "tensile"})
 #: torque (a drive rig's ``torque (nm)``, newton metres in lower case, no nanometres), a
 #: logger's stamps of a state's last change (``last_changed``, no German load), a rate or
 #: a pace of a quantity (a rowing machine's ``Stroke Rate (SPM)``, ``Stroke500mPace``; a
-#: ``Load rate``, no load), a meter's setting of its display (a Keithley's ``Disp
+#: ``Load rate``, no load), a stress in Spanish (Bluehill's ``Tensión de tracción``: no
+#: chain's tension), a meter's setting of its display (a Keithley's ``Disp
 #: Digits``, no displacement). Such a column takes no role, not even from its unit.
 OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points count",
                         "reading count", "readings count", "scan count", "pip count", "temp",
@@ -267,6 +268,7 @@ OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points 
                         "last seen", "torque", "drehmoment", "stroke rate", "load rate",
                         "loading rate", "force rate", "strain rate", "stress rate",
                         "displacement rate", "extension rate", "cycle rate", "pace", "digits",
+                        "tensión de tracción", "tensión de compresión", "tensión de flexión",
                         "moment obrotowy", "momento torsor", "couple moteur", "扭矩", "トルク",
                         "토크", "крутящий момент")
 #: The labels of :data:`TRANSVERSE_NAMES` and :data:`OTHER_QUANTITY_NAMES` among the role

@@ -178,7 +178,7 @@ def test_a_count_of_samples_a_temperature_or_an_acceleration_takes_no_role(name)
 
 
 @pytest.mark.parametrize("name", ["Stroke Rate", "StrokeRate", "Load rate", "Strain rate",
-                                  "Pace", "Disp Digits"])
+                                  "Pace", "Disp Digits", "Tensión de tracción"])
 def test_a_rate_or_a_setting_takes_no_role(name):
     # a rowing machine's 'Stroke Rate (SPM)' was a gauge by its first word, in a unit the
     # run sheet could have set to millimetres; a load rate is no load, a strain rate no strain
