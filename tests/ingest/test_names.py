@@ -179,7 +179,7 @@ def test_a_count_of_samples_a_temperature_or_an_acceleration_takes_no_role(name)
 
 @pytest.mark.parametrize("name", ["Stroke Rate", "StrokeRate", "Load rate", "Strain rate",
                                   "Pace", "Disp Digits", "Tensión de tracción"])
-def test_a_rate_or_a_setting_takes_no_role(name):
+def test_a_rate_a_setting_or_a_stress_takes_no_role(name):
     # a rowing machine's 'Stroke Rate (SPM)' was a gauge by its first word, in a unit the
     # run sheet could have set to millimetres; a load rate is no load, a strain rate no strain
     assert match_role(name) is None and is_unmeasured(name)
