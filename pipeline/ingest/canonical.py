@@ -190,6 +190,7 @@ class Conversion:
         (:attr:`unitless_time`) checked as read."""
         if self.unitless_time is not None:
             table = table.assign(time=raw.arrays[self.unitless_time])
+            return _check_rows(table, raw, warnings, time_unit=" (no unit given)")
         return _check_rows(table, raw, warnings)
 
 
@@ -932,8 +933,10 @@ def _starts_again(time: np.ndarray, backwards: np.ndarray) -> str:
             "another)")
 
 
-def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tuple[bool | None, int]:
-    """Report missing values and time problems of `table` in `warnings`.
+def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str],
+                time_unit: str = " s") -> tuple[bool | None, int]:
+    """Report missing values and time problems of `table` in `warnings`, its time steps
+    told in `time_unit` (the seconds of the canonical table, or a file's time as read).
 
     Returns
     -------
@@ -982,7 +985,6 @@ def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str]) -> tupl
         first = int(np.argmax(gaps)) + 1
         warnings.append(
             f"time: {count_gaps} gaps longer than {GAP_FACTOR:g} x the median step "
-            f"({median:.3g} s), the longest {float(steps[gaps].max()):.3g} s, first before "
-            f"{raw.where(first)}"
-        )
+            f"({median:.3g}{time_unit}), the longest {float(steps[gaps].max()):.3g}{time_unit}, "
+            f"first before {raw.where(first)}")
     return count == 0, count_gaps

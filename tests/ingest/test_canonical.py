@@ -110,6 +110,15 @@ def test_a_time_stepping_back_often_is_told_as_maybe_no_time(write):
             "columns = {time = \"...\"})") in meta.warnings
 
 
+def test_the_gaps_of_a_time_without_unit_are_told_without_one(write):
+    # a DIC rig's camera clock with no unit: its gaps were told in seconds
+    text = "Time\tKuvvet(N)\n" + "".join(f"{t}\t{f}\n" for t, f in ((0, 1), (1, 2), (2, 3),
+                                                                       (3, 4), (40, 5)))
+    _, meta = read_table(write("frames.txt", text), strict=False)
+    assert ("time: 1 gaps longer than 10 x the median step (1 (no unit given)), the longest "
+            "37 (no unit given), first before line 6") in meta.warnings
+
+
 def test_a_time_without_unit_is_still_checked_for_steps_back(write):
     # a real Turkish rebar tester stacks its specimens one below the other, its time
     # column (Zaman) without a unit: what `chainbench inspect` shows of it (a run refuses
