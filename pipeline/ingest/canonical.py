@@ -984,7 +984,7 @@ def _check_rows(table: pd.DataFrame, raw: RawTable, warnings: list[str],
     if count_gaps:
         first = int(np.argmax(gaps)) + 1
         warnings.append(
-            f"time: {count_gaps} gaps longer than {GAP_FACTOR:g} x the median step "
+            f"time: {count_gaps} gap(s) longer than {GAP_FACTOR:g} x the median step "
             f"({median:.3g}{time_unit}), the longest {float(steps[gaps].max()):.3g}{time_unit}, "
             f"first before {raw.where(first)}")
     return count == 0, count_gaps

@@ -50,7 +50,7 @@ WARNINGS = {
     "machine_export_european_truncated.csv": (3, "line 9 is truncated"),
     "nan_stretch.csv": (5, "3 missing values kept as NaN; longest run 3 rows from line 3"),
     "time_backwards.csv": (4, "steps back 1 times, first at line 4"),
-    "time_gap.csv": (5, "1 gaps longer than 10 x the median step"),
+    "time_gap.csv": (5, "1 gap(s) longer than 10 x the median step"),
     "mts_block_mismatch.dat": (2, "lines 10 to 15: a block of other columns than the first "
                                   "(Time, Axial Displacement, Axial Strain, Axial Count: 2 "
                                   "row(s)"),

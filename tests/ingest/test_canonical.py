@@ -115,7 +115,7 @@ def test_the_gaps_of_a_time_without_unit_are_told_without_one(write):
     text = "Time\tKuvvet(N)\n" + "".join(f"{t}\t{f}\n" for t, f in ((0, 1), (1, 2), (2, 3),
                                                                        (3, 4), (40, 5)))
     _, meta = read_table(write("frames.txt", text), strict=False)
-    assert ("time: 1 gaps longer than 10 x the median step (1 (no unit given)), the longest "
+    assert ("time: 1 gap(s) longer than 10 x the median step (1 (no unit given)), the longest "
             "37 (no unit given), first before line 6") in meta.warnings
 
 
@@ -298,7 +298,7 @@ def _time_warnings_step_by_step(time: list[float]) -> tuple[bool, int, list[str]
     gaps = [line for line, step in enumerate(steps, 3) if step > 10 * median]
     if gaps:
         longest = max(step for step in steps if step > 10 * median)
-        found.append(f"time: {len(gaps)} gaps longer than 10 x the median step "
+        found.append(f"time: {len(gaps)} gap(s) longer than 10 x the median step "
                      f"({median:.3g} s), the longest {longest:.3g} s, first before line "
                      f"{gaps[0]}")
     return not back, len(gaps), found

@@ -120,7 +120,7 @@ def missing(count, line):
 
 
 # the corpus's pause of 0.5 s after row 20, and the step of 0.005 s
-GAP = ("time: 1 gaps longer than 10 x the median step (0.005 s), the longest 0.505 s, first "
+GAP = ("time: 1 gap(s) longer than 10 x the median step (0.005 s), the longest 0.505 s, first "
        "before line ")
 
 
