@@ -31,6 +31,8 @@ ureg.define("microstrain = 1e-6 = µε = με = µST = μST = ue = uE = µe = μ
 ureg.define("@alias pound_force_per_square_inch = psig = psia = psid")
 ureg.define("@alias bar = barg = bara")
 ureg.define("Mpa = megapascal")
+# A percent as scripts write it after a name (strain_pct): pint alone reads a picocarat.
+ureg.define("@alias percent = pct")
 # Keysight data loggers' volts of a direct or alternating voltage (BenchLink's VDC, VAC).
 ureg.define("@alias volt = VDC = VAC")
 # Russian (Cyrillic) unit symbols, as Russian testing-machine software writes them.

@@ -644,6 +644,7 @@ def detect_dialect(
         if not any(_has_two_numbers(line) for line in sample):
             named = _data_file_named(lines, name)
             lone = any(is_number(cell, decimal) for line in sample for delimiter in DELIMITERS
+                       if delimiter != BLANKS  # a sentence's year is no result
                        for cell in split_fields(line, delimiter) for decimal in ".,")
             raise EmptyFileError(
                 "no data rows: no line holds two numbers side by side, as a log's rows do (a "

@@ -221,6 +221,12 @@ def test_a_summary_of_results_is_told_as_such_not_as_text_lines(tmp_path):
     assert caught.value.hint.startswith("export the test's raw data")
 
 
+def test_a_text_with_a_year_in_its_sentences_holds_only_text_lines(tmp_path):
+    lines = ["MIT License", "", "Copyright (c) 2021 The authors", "", "Permission is granted"]
+    with pytest.raises(EmptyFileError, match="the file holds only text lines"):
+        detect_dialect(lines, tmp_path)
+
+
 def test_a_header_file_naming_its_data_file_points_to_it(tmp_path):
     # a real HBM catman .TSX: the test's settings, and the file its measurements went to
     lines = ["CATMAN TEST FILE", "Messwertdatei=DD11_7_3.ASC", "Standardmessrate=50 Hz",

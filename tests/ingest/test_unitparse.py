@@ -154,6 +154,13 @@ def test_a_channel_and_its_number_is_no_unit():
     assert spellings("Strain 1") == [] and spellings("(AVE 2)") == []
 
 
+def test_a_percent_after_a_scripts_name_is_a_percent():
+    # a script's 'strain_pct': pint alone reads a picocarat, a mass
+    from pipeline.ingest.unitparse import is_strain_unit
+
+    assert is_strain_unit("pct") and ureg.Quantity(5, "pct").to("").magnitude == 0.05
+
+
 def test_a_range_of_numbers_is_no_millionth():
     assert spellings("10-6") == [] and spellings("x10^-3") == []
 
