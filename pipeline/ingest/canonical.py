@@ -527,15 +527,15 @@ def clean(raw: RawTable, warnings: list[str]) -> set[int]:
 
 def first_values(raw: RawTable, columns: set[int]) -> dict[int, tuple[int, float, str]]:
     """Of each of `columns` of `raw`: how many values it holds (two at most are counted),
-    and the first with where it stands (NaN and "" without one)."""
+    and the first, with where it stands when it is the only one (NaN and "" without)."""
     found = {}
     for index in columns:
         array = raw.arrays[index]
         rows = np.flatnonzero(np.isfinite(array[:2]))
         if rows.size < 2:  # a value missing from the first two rows: look further
             rows = np.flatnonzero(np.isfinite(array))[:2]
-        found[index] = ((rows.size, float(array[rows[0]]), raw.where(int(rows[0])))
-                        if rows.size else (0, math.nan, ""))
+        found[index] = (rows.size, float(array[rows[0]]) if rows.size else math.nan,
+                        raw.where(int(rows[0])) if rows.size == 1 else "")
     return found
 
 
