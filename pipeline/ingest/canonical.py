@@ -247,6 +247,7 @@ def settle(
             continue
         keys = " or ".join(f"columns = {{{SHEET_KEY[role]} = \"...\"}}" for role in group)
         why = "".join(f"{reason}; " for role, reason in raw.set_aside if role in group)
+        why += _spectrum_note(raw) if "time" in group else ""
         problems.report(next((rejected[role] for role in group if role in rejected), None)
                         or ColumnError(
             f"no {' or '.join(group)} column found ({kind} runs need {needs})",
@@ -498,6 +499,22 @@ def _canonical_names(assigned: dict[str, list[int]], strains: set[int]) -> dict[
             counts[prefix] += 1
             names[index] = f"{prefix}_{counts[prefix]}"
     return names
+
+
+#: Units of a frequency axis (a spectrum's, a sweep's), folded.
+_FREQUENCY_UNITS = frozenset({"hz", "khz", "mhz"})
+
+
+def _spectrum_note(raw: RawColumns) -> str:
+    """What the hint of a missing time says of a column of frequencies (``Frequency [Hz]``,
+    a spectrum's or a frequency sweep's axis), or ""."""
+    found = next((index for index, unit in enumerate(raw.units)
+                  if (unit or "").strip().casefold() in _FREQUENCY_UNITS), None)
+    if found is None:
+        return ""
+    return (f"column {display_name(raw.names, found)!r} is in {raw.units[found]}: a spectrum "
+            "or a frequency sweep, whose rows are frequencies, has no time and is no test "
+            "record; ")
 
 
 def _si_unit(name: str) -> str:

@@ -90,6 +90,16 @@ def test_a_column_of_one_value_beside_the_first_sample_is_no_channel(write):
             "specimen's dimension or a setting, no channel: not used") in meta.warnings
 
 
+def test_a_spectrum_is_told_by_its_frequencies_when_no_time_is_found(write):
+    # a real acoustic analyser's force spectrum: its rows are frequencies, and the hint
+    # asked for a time without a word on them
+    text = "Frequency [Hz],Force [N],Phase [deg]\n20.0,96.77,36.74\n20.3,96.81,36.07\n"
+    with pytest.raises(ColumnError) as caught:
+        read_table(write("spectrum.txt", text), kind="engagement")
+    assert ("column 'Frequency' is in Hz: a spectrum or a frequency sweep, whose rows are "
+            "frequencies, has no time and is no test record") in caught.value.hint
+
+
 def test_time_backwards_and_gaps_are_warnings(write):
     text = HEADER + rows(*[(t, 1, 0) for t in (0.0, 0.1, 0.2, 0.15, 0.3, 0.4, 9.0, 9.1)])
     _, meta = read_table(write("t.csv", text))
