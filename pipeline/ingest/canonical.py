@@ -548,11 +548,13 @@ def first_values(raw: RawTable, columns: set[int]) -> dict[int, tuple[int, float
     found = {}
     for index in columns:
         array = raw.arrays[index]
-        rows = np.flatnonzero(np.isfinite(array[:2]))
-        if rows.size < 2:  # a value missing from the first two rows: look further
-            rows = np.flatnonzero(np.isfinite(array))[:2]
-        found[index] = (rows.size, float(array[rows[0]]) if rows.size else math.nan,
-                        raw.where(int(rows[0])) if rows.size == 1 else "")
+        finite = np.isfinite(array[:2])
+        if not finite.all():  # a value missing from the first two rows: look further
+            finite = np.isfinite(array)
+        count = min(2, int(np.count_nonzero(finite)))
+        at = int(np.argmax(finite))
+        found[index] = (count, float(array[at]) if count else math.nan,
+                        raw.where(at) if count == 1 else "")
     return found
 
 

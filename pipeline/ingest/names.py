@@ -253,7 +253,7 @@ SIGN_CONVENTION_WORDS = frozenset({"compressive", "tensile"})
 #: strain; a shear strain) and a
 #: torque (a drive rig's ``torque (nm)``, newton metres in lower case, no nanometres), a
 #: logger's stamps of a state's last change (``last_changed``, no German load), a rate or
-#: a pace of a quantity (a rowing machine's ``Stroke Rate (SPM)``, ``Stroke500mPace``; a
+#: a pace of a quantity (a rowing machine's ``Stroke Rate (SPM)``, ``Pace``; a
 #: ``Load rate``, no load), a stress in Spanish (Bluehill's ``Tensión de tracción``: no
 #: chain's tension), a meter's setting of its display (a Keithley's ``Disp
 #: Digits``, no displacement). Such a column takes no role, not even from its unit.

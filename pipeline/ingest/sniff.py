@@ -1363,16 +1363,15 @@ def _group_labels(row: list[str]) -> list[str]:
     if (len(runs) > 1 and all(label for label, _ in runs) and runs[0][1] > 1
             and len({size for _, size in runs}) == 1):
         labels = [label for label, _ in runs]
-        return [] if len(set(labels)) < len(labels) or any(map(match_role, labels)) else labels
-    filled = [position for position, cell in enumerate(row) if cell.strip()]
-    if not filled or filled[0] != 0 or len(row) < 2:
-        return []
-    stride = filled[1] if len(filled) > 1 else len(row)
-    labels = [row[position].strip() for position in filled]
-    if (stride < 2 or filled != list(range(0, stride * len(filled), stride))
-            or len(set(labels)) < len(labels) or any(match_role(label) for label in labels)):
-        return []
-    return labels
+    else:
+        filled = [position for position, cell in enumerate(cells) if cell]
+        if not filled or filled[0] != 0 or len(row) < 2:
+            return []
+        stride = filled[1] if len(filled) > 1 else len(row)
+        if stride < 2 or filled != list(range(0, stride * len(filled), stride)):
+            return []
+        labels = [cells[position] for position in filled]
+    return [] if len(set(labels)) < len(labels) or any(map(match_role, labels)) else labels
 
 
 def _each_specimen(cells: list, specimens: tuple[str, ...]) -> list:

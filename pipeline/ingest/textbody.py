@@ -612,22 +612,22 @@ def without_events(region: Region, delimiter: str, decimal: str
     """
     if region.codec.startswith("utf-16"):
         return None
-    kept, events, starts = [], [], []
+    kept, firsts, events, starts = [], [], [], []  # firsts: the kept lines' first numbers
     previous = -math.inf
     lines = _LINE.findall(region.read(region.start, region.end))
     for number, line in enumerate(lines, start=region.first_line):
-        fields = split_fields(line.decode(region.codec, errors="replace"), delimiter)
+        text = line.decode(region.codec, errors="replace")
+        fields = split_fields(text, delimiter)
         first = _number(fields[0], decimal)
         if _is_event(fields, decimal) and first >= previous:
-            events.append((number, line.decode(region.codec, errors="replace").strip()))
+            events.append((number, text.strip()))
             starts.append((first, len(kept)))
             continue
         kept.append(line)
+        firsts.append(first)
         previous = previous if math.isnan(first) else first
-    following = [_number(split_fields(line.decode(region.codec, errors="replace"),
-                                      delimiter)[0], decimal) for line in kept]
     if not events or len(events) > max(2, EVENTS_SHARE * len(lines)) or any(
-            at < len(following) and not first <= following[at] for first, at in starts):
+            at < len(firsts) and not first <= firsts[at] for first, at in starts):
         return None
     data = b"".join(kept)
     body = Region(BufferSource(data, region.name), 0, len(data), region.first_line,
