@@ -66,6 +66,10 @@ from pipeline.units import to_si
 #: logs are read whole, which is faster.
 WHOLE_SAMPLES = 1_000_000
 
+#: A log file up to this size [bytes] whose rows do not read by range is read whole
+#: (:func:`open_run_log`): some 10^6 rows of a few columns.
+WHOLE_BYTES = 64 * 2**20
+
 #: Samples of a chunk of a long log: half a million keeps a 2e6-sample log's peak
 #: memory within 3 times its decoded arrays, at the speed of larger chunks.
 CHUNK_SAMPLES = 500_000
@@ -109,12 +113,24 @@ def open_run_log(sheet: RunSheet, run: RunDef) -> tuple[LogSource, list[str], st
     A log of up to :data:`WHOLE_SAMPLES` samples is read whole into memory; a
     longer one is left in its file and read a chunk at a time
     (:func:`pipeline.ingest.open_log`), so its memory is that of a chunk.
+
+    A log of up to :data:`WHOLE_BYTES` whose rows do not read by range is
+    read as :func:`~pipeline.ingest.read_table` reads it, which also leaves
+    out the event lines a rig writes among its readings (as ``chainbench
+    inspect`` does); a larger one refuses them at their line.
     """
-    reader = open_log(existing_run_file(sheet, run), **_reading(run))
-    said = list(reader.metadata.warnings)
-    if reader.n_rows > WHOLE_SAMPLES:
-        return reader, said, reader.metadata.layout
-    table, more = reader.read(0, reader.n_rows)
+    path = existing_run_file(sheet, run)
+    try:
+        reader = open_log(path, **_reading(run))
+        said = list(reader.metadata.warnings)
+        if reader.n_rows > WHOLE_SAMPLES:
+            return reader, said, reader.metadata.layout
+        table, more = reader.read(0, reader.n_rows)
+    except IngestError:
+        if path.stat().st_size > WHOLE_BYTES:
+            raise
+        table, metadata = read_table(path, **_reading(run))
+        return TableSource(table), metadata.warnings, metadata.layout
     return TableSource(table), list(dict.fromkeys([*said, *more])), reader.metadata.layout
 
 

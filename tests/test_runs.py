@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+import numpy as np
 import pytest
 from typer.testing import CliRunner
 
@@ -65,7 +66,6 @@ def test_missing_stiffness_source_fails_the_run_with_its_key(lab, tmp_path, refe
 
 def test_a_log_longer_than_a_chunk_is_read_from_its_file_in_chunks_with_the_same_result(
         lab, tmp_path, monkeypatch):
-    import numpy as np
 
     from pipeline import runs
 
@@ -91,6 +91,28 @@ def test_a_log_longer_than_a_chunk_is_read_from_its_file_in_chunks_with_the_same
     a, b = (read_dataset(result.run_files[run_id]) for result in (whole, chunked))
     np.testing.assert_allclose(a["event_time"], b["event_time"], rtol=0, atol=1e-9)
     np.testing.assert_array_equal(a["time"], b["time"])  # the stored preview
+
+
+def test_an_engagement_log_with_a_rigs_event_lines_is_read_as_inspect_reads_it(lab, tmp_path):
+    from pipeline.ingest import read_table
+
+    wheel = wheel_using(lab, tmp_path / "wheel", "unused")
+    sheet = wheel / "campaign.toml"
+    sheet.write_text(re.sub(r'^stiffness_from = .*$', "E0_N = 22600000", sheet.read_text(),
+                            flags=re.M))
+    whole = process_campaign(wheel, tmp_path / "tdms")
+    table, _ = read_table(next(wheel.glob("*.tdms")), kind="engagement")
+    rows = [f"{t},{f},{a}" for t, f, a in table[["time", "force", "angle"]].to_numpy()]
+    rows.insert(5000, f"{table['time'][4999]},Speed set to 20 rad/s,")
+    (wheel / "log.csv").write_text("time [s],force [N],angle [rad]\n" + "\n".join(rows) + "\n")
+    sheet.write_text(re.sub(r'^file = .*$', 'file = "log.csv"', sheet.read_text(), flags=re.M))
+    with_event = process_campaign(wheel, tmp_path / "csv")
+    assert whole.failures == [] and with_event.failures == []
+    for name in ("N_u1_meas", "N_u2_meas"):
+        np.testing.assert_allclose(with_event.summary[name], whole.summary[name], rtol=1e-12)
+    (run_file,) = with_event.run_files.values()
+    assert "line 5002: '0.4999,Speed set to 20 rad/s,'" in read_dataset(run_file).attrs[
+        "ingest_warnings"]
 
 
 class _Sheet:
