@@ -29,7 +29,6 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated
 
-import numpy as np
 import typer
 from rich.markup import escape
 from rich.table import Table
@@ -219,14 +218,6 @@ def candidate_files(folder: Path) -> tuple[list[Path], list[tuple[str, str]]]:
     return files, skipped
 
 
-def sample_rate(table: pd.DataFrame) -> float | None:
-    """Sampling rate [Hz] from the median time step, or None without a usable time column."""
-    if "time" not in table or len(table) < 2:
-        return None
-    step = float(np.nanmedian(np.diff(table["time"].to_numpy())))
-    return 1.0 / step if step > 0 else None
-
-
 def _is_gauge(column: ColumnInfo) -> bool:
     return (column.role or "").startswith(("gauge_", "strain_"))
 
@@ -249,6 +240,8 @@ def run_kind(table: pd.DataFrame, metadata: TableMetadata) -> tuple[str, str]:
                              and roles & {"time", "cycle_count"}):
         return "wear", ("guessed: a section's length or elongation against the running "
                         "time or cycles, like a wear log")
+    from pipeline.cli.inspect import sample_rate
+
     rate = sample_rate(table)
     if "force" in table and not has_gauge and rate is not None and rate >= ENGAGEMENT_RATE_HZ:
         return "engagement", (f"guessed: time and force at {rate:.4g} Hz and no gauge "

@@ -87,52 +87,61 @@ def derived(table: pd.DataFrame, metadata: TableMetadata
 
 
 def sample_rate(table: pd.DataFrame) -> float | None:
-    """The log's sampling rate [Hz]: one over its median time step, or None without
-    time (or steps); of a log whose stamps mostly repeat with other readings (printed
-    coarser than it samples: ten rows a millisecond), its rows up to its last stamp over
-    the time to it. Rows repeated whole (a logger writing each sample thrice) are no
-    samples."""
-    if "time" not in table:
+    """The log's sampling rate [Hz]: one over its mean time step, the gaps left out
+    (steps over :data:`~pipeline.ingest.table.GAP_FACTOR` times the median), or None
+    without time (or steps). Stamps rounded coarser than the steps (whole milliseconds,
+    one and two apart) give the rate of the rows, not of their median step; of a log whose
+    stamps mostly repeat with other readings (printed coarser than it samples: ten rows a
+    millisecond), its rows up to its last stamp over the time to it. Rows repeated whole
+    (a logger writing each sample thrice) are no samples."""
+    steps = _steps(table)
+    if steps is None:
         return None
     time = table["time"].to_numpy(dtype=float)
-    steps = np.diff(time)
-    positive = steps[steps > 0]
-    if not positive.size:
-        return None
-    repeats = np.flatnonzero(steps == 0) + 1
-    if repeats.size > positive.size and time[-1] > time[0]:
+    repeats = np.flatnonzero(np.diff(time) == 0) + 1
+    if repeats.size > steps.size and time[-1] > time[0]:
         values = table.to_numpy(dtype=float)
         if not np.all(values[repeats] == values[repeats - 1], axis=1).mean() > 0.5:
             return float(np.flatnonzero(time == time[-1])[0] / (time[-1] - time[0]))
-    return float(1.0 / np.median(positive))
+    return 1.0 / _mean_step(steps)
+
+
+def _steps(table: pd.DataFrame) -> np.ndarray | None:
+    """The log's positive time steps [s], None without time or steps."""
+    if "time" not in table:
+        return None
+    steps = np.diff(table["time"].to_numpy(dtype=float))
+    steps = steps[steps > 0]
+    return steps if steps.size else None
+
+
+def _mean_step(steps: np.ndarray) -> float:
+    """The mean of positive time `steps` [s], the gaps the reader reports left out."""
+    from pipeline.ingest.table import GAP_FACTOR
+
+    return float(np.mean(steps[steps <= GAP_FACTOR * np.median(steps)]))
 
 
 #: How far the mean time step (gaps left out) may lie from the median one before the rate
-#: shown, the median's, is said to be one of bursts or pauses.
+#: shown, the mean's, is said to be one of bursts or pauses.
 UNEVEN_STEPS = 1.5
 
 
 def uneven_steps(table: pd.DataFrame) -> str | None:
     """A warning when the log's time steps (the gaps the reader reports left out) average
     far from their median: rows sent in bursts (a logger's three readings a millisecond
-    apart, then a pause) make the median step's rate (:func:`sample_rate`) no rate of
-    the log."""
-    from pipeline.ingest.table import GAP_FACTOR
-
-    if "time" not in table:
+    apart, then a pause) make the rate shown (:func:`sample_rate`, the mean step's) no
+    steady rate of the log."""
+    steps = _steps(table)
+    if steps is None or steps.size < 2:
         return None
-    steps = np.diff(table["time"].to_numpy(dtype=float))
-    steps = steps[steps > 0]
-    if steps.size < 2:
-        return None
-    median = float(np.median(steps))
-    mean = float(np.mean(steps[steps <= GAP_FACTOR * median]))
+    median, mean = float(np.median(steps)), _mean_step(steps)
     if 1 / UNEVEN_STEPS <= mean / median <= UNEVEN_STEPS:
         return None
     return (f"the time steps are uneven: the median step gives {1 / median:.4g} Hz, their "
             f"mean {1 / mean:.4g} Hz (steps from {steps.min():.3g} s to {steps.max():.3g} s): "
             "the rows come in bursts or at irregular times, and the sample rate shown is the "
-            "median step's")
+            "mean step's")
 
 
 def slow_for_impacts(rate: float | None) -> str | None:

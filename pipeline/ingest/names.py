@@ -189,11 +189,13 @@ TRANSVERSE_NAMES = (
 #: Words of a channel that holds what the controller asked for (a setpoint, a command),
 #: not what a sensor measured: ``"Ch 1 Kraft Sollwert"``, ``"Load Command"``,
 #: ``"Valeur de consigne"``, a controller's ``"a1 torque cmd"``; or a setting of the
-#: amplifier (a DAQ table's ``"gain load"``, a sensitivity, a calibration factor). Such a
+#: amplifier (a DAQ table's ``"gain load"``, a sensitivity, a calibration factor); or what a
+#: model or a script expects (a calibration log's ``expected_force_mN``). Such a
 #: column takes no role, wherever the word stands.
 COMMAND_NAMES = ("sollwert", "soll", "setpoint", "set point", "command", "cmd", "demand",
                  "target", "consigne", "commande", "consigna", "zadana", "gain",
-                 "sensitivity", "calibration", "verstärkung", "empfindlichkeit")
+                 "sensitivity", "calibration", "verstärkung", "empfindlichkeit",
+                 "expected", "predicted", "theoretical", "simulated", "erwartet")
 #: Words of a channel the machine's software worked out from others, not one a sensor
 #: measured: WaveMatrix's ``"Elastic Strain(Static Plastic & Elastic Strain
 #: Calculation)"``, a strain split into its elastic part (the stress over an assumed
@@ -205,6 +207,12 @@ DERIVED_NAMES = ("calculation", "berechnung", "calcul", "cálculo", "calcolo", "
                  "plastische dehnung", "déformation élastique", "déformation plastique",
                  "true strain", "log strain", "logarithmic strain", "hencky strain",
                  "wahre dehnung", "logarithmische dehnung", "déformation vraie")
+#: Words of a test's results, one value a specimen (``Yield (N)``, ``Break Elong [mm]``,
+#: ``Tensile Str. (MPa)``, ``Modulus of Elasticity``, ``Fmax``, ``Bruchdehnung``): under
+#: such names, rows each labelled their own are specimens (:func:`says_result`).
+RESULT_WORDS = frozenset({"yield", "break", "modulus", "strength", "str", "toughness",
+                          "rupture", "fmax", "modul", "bruch", "bruchdehnung",
+                          "streckgrenze", "zugfestigkeit", "festigkeit"})
 #: Names of an air's humidity, logged in % beside the channels (a climate chamber's ``RH``):
 #: no strain, whatever its unit says.
 HUMIDITY_NAMES = ("rh", "humidity", "relative humidity", "feuchte", "luftfeuchte",
@@ -529,6 +537,15 @@ def is_derived(name: str) -> bool:
     [True, True, False]
     """
     return _best_of(tokens(name), _DERIVED_KEYWORDS) is not None
+
+
+def says_result(name: str) -> bool:
+    """Whether a column name holds a word of a test's results (:data:`RESULT_WORDS`).
+
+    >>> [says_result(name) for name in ("Yield (N)", "Tensile Str. (MPa)", "Load (N)")]
+    [True, True, False]
+    """
+    return not RESULT_WORDS.isdisjoint(tokens(name))
 
 
 def is_unmeasured(name: str) -> bool:

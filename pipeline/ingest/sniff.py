@@ -43,7 +43,14 @@ from pipeline.ingest.clock import (
     unpadded_milliseconds,
     unread_clock_hint,
 )
-from pipeline.ingest.names import COLUMN_NAMES, match_role, repeats, split_name_unit, tokens
+from pipeline.ingest.names import (
+    COLUMN_NAMES,
+    match_role,
+    repeats,
+    says_result,
+    split_name_unit,
+    tokens,
+)
 from pipeline.ingest.source import Source
 from pipeline.ingest.unitparse import (
     NO_UNIT_CELLS,
@@ -1044,8 +1051,12 @@ def find_table(
         names, units = _each_specimen(names, specimens), _each_specimen(units, specimens)
     notes += _settings_beside(rows[data:], decimal, columns, data)
     texts = frozenset() if pairs else _text_columns(rows[data:], kinds[data:], columns, decimal)
-    if not clocks and not any(match_role(name) == "time" for name in names):
-        notes += _labels_of_rows(rows[data:], kinds[data:], texts, names)
+    if not _advancing(clocks, rows[data:data + TEXT_ROWS]) and not any(
+            match_role(name) == "time" for name in names):
+        labelled = _labels_of_rows(rows[data:], kinds[data:], texts, names)
+        if labelled and (results_named := [column for column in names if says_result(column)]):
+            raise _results_error(labelled[0], results_named, name, data)
+        notes += labelled
     return TableSpec(
         delimiter=delimiter,
         decimal="," if pairs else decimal,
@@ -1077,6 +1088,34 @@ def _statistics(rows: list[list[str]]) -> list[tuple[int, str]]:
         if label.lower() in STATISTICS_LABELS:
             found.append((at, label))
     return found
+
+
+def _advancing(clocks: Mapping[int, object], rows: list[list[str]]) -> bool:
+    """Whether a clock column of `clocks` reads more than one time over the head's `rows`,
+    not all at midnight (the date of each specimen's test in a results table,
+    ``2019-12-06 00:00:00``, is no time of a test)."""
+    for index in clocks:
+        cells = {row[index].strip() for row in rows if len(row) > index and row[index].strip()}
+        if len(cells) > 1 and not all(_MIDNIGHT.search(cell) for cell in cells):
+            return True
+    return False
+
+
+#: A clock reading at midnight: a date written as a date and time.
+_MIDNIGHT = re.compile(r"(?:(?<![\d:])0?0:00|12:00(?=(?::00(?:[.,]0*)?)?\s*AM$))"
+                       r"(?::00(?:[.,]0*)?)?(?:\s*AM)?$", re.IGNORECASE)
+
+
+def _results_error(labelled: str, results: list[str], name: str, data: int) -> LayoutError:
+    """The refusal of a table whose rows are labelled each their own (`labelled`, the
+    warning of :func:`_labels_of_rows`) under names of a test's results."""
+    shown = ", ".join(repr(result.strip()) for result in results[:3])
+    return LayoutError(
+        f"{labelled.split(': the rows may be')[0]}, under names of results ({shown}): the "
+        "rows are specimens of a results table, not a test's raw data",
+        file=name, row=data + 1,
+        hint="export the raw data of each specimen (time, force, extension), not the "
+             "results table")
 
 
 def _statistics_error(labels: list[str], name: str, data: int) -> LayoutError:

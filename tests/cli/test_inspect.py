@@ -54,17 +54,30 @@ def test_the_sampling_rate_is_shown_and_an_engagement_log_too_slow_for_impacts_w
     assert inspect_json("--kind", "engagement", str(fast))["warnings"] == []
 
 
-def test_rows_sent_in_bursts_are_told_beside_the_median_steps_rate(tmp_path):
+def test_rows_sent_in_bursts_give_the_mean_steps_rate_told_beside_the_median_steps(tmp_path):
     # a logger sending three readings 1 ms apart every 10 ms: 300 Hz, not the median's 1 kHz
     times = [10e-3 * (i // 3) + 1e-3 * (i % 3) for i in range(60)]
     path = tmp_path / "bursts.csv"
     path.write_text("time [s],force [kN]\n" + "".join(
         f"{time:.4f},{load}\n" for time, load in zip(times, LOAD, strict=True)))
     report = inspect_json("--kind", "engagement", str(path))
-    assert report["sample_rate_hz"] == pytest.approx(1000.0)
     mean_step = (times[-1] - times[0]) / (len(times) - 1)
+    assert report["sample_rate_hz"] == pytest.approx(1 / mean_step)
     assert (f"the time steps are uneven: the median step gives 1000 Hz, their mean "
             f"{1 / mean_step:.4g} Hz") in report["warnings"][0]
+
+
+def test_stamps_rounded_coarser_than_the_steps_give_the_rows_rate(tmp_path):
+    # a real Arduino log: samples every 1.18 ms stamped in whole milliseconds (millis()),
+    # one and two apart; the median step's 1 kHz overstated the rate by 18 %
+    times = [int(i * 1.18e-3 * 1e3) / 1e3 for i in range(60)]
+    path = tmp_path / "millis.csv"
+    path.write_text("time [s],force [kN]\n" + "".join(
+        f"{time},{load}\n" for time, load in zip(times, LOAD, strict=True)))
+    report = inspect_json("--kind", "engagement", str(path))
+    assert report["sample_rate_hz"] == pytest.approx(59 / (times[-1] - times[0]))
+    assert report["sample_rate_hz"] == pytest.approx(1 / 1.18e-3, rel=0.02)
+    assert not any("uneven" in warning for warning in report["warnings"])
 
 
 def test_stamps_coarser_than_the_samples_give_the_rows_rate(tmp_path):

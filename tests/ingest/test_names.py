@@ -200,7 +200,8 @@ def test_a_count_of_strokes_is_a_cycle_count(name):
 @pytest.mark.parametrize("name", ["Ch 1 Kraft Sollwert", "Sollwert Kraft", "Load Command",
                                   "Force setpoint", "Valeur de consigne", "Siła zadana",
                                   "a1 position cmd", "force_cmd",  # a motor controller's
-                                  "C_1_Valeur de commande"])  # a French controller's
+                                  "C_1_Valeur de commande",  # a French controller's
+                                  "expected_force_mN"])  # a calibration script's reference
 def test_a_setpoint_or_command_channel_takes_no_role(name):
     assert match_role(name) is None and is_command(name)
 

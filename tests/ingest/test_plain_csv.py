@@ -208,6 +208,24 @@ def test_rows_labelled_one_by_one_without_a_time_are_told_as_specimens(write):
         assert not any("label of its own" in warning for warning in meta.warnings)
 
 
+def test_a_results_table_of_specimens_dated_at_midnight_is_refused_as_such(write):
+    # a real filament-testing lab's table: one row per specimen, its test's date at
+    # midnight (no time of a test), results beside it; it was read as a curve of yield
+    # forces against break elongations, "3 cycles"
+    text = ("Specimen ID,Test #,Test Date,Operator,Yield (N),Tensile (N),Break Elong [mm]\n"
+            "SVA7P,500,2019-12-06 00:00:00,Taylor,2048.2,2048.35,6.23\n"
+            "5ZB92,501,2019-12-06 00:00:00,Taylor,2033.12,2033.12,6.59\n"
+            "Y35ZN,502,2019-12-09 00:00:00,Taylor,1615.57,1615.69,5.25\n")
+    with pytest.raises(LayoutError, match=r"column 'Specimen ID' gives each row a label of "
+                                          r"its own .* under names of results \('Yield \(N\)', "
+                                          r"'Break Elong \[mm\]'\): the rows are specimens"):
+        read_table(write("tensile.csv", text), kind="tensile")
+    # a date and time that advances is a log's time: its labels are no specimens
+    logged = text.replace("2019-12-06 00:00:00,Taylor,2033", "2019-12-06 00:00:01,Taylor,2033")
+    _, meta = read_table(write("log.csv", logged), kind="tensile", columns={"force": "Yield"})
+    assert not any("label of its own" in warning for warning in meta.warnings)
+
+
 def test_an_arduino_clock_call_names_the_time_and_its_unit(write):
     # an HX711 thrust stand's serial log: millis() beside the thrust in grams (its weight)
     text = "millis,Thrust (g)\n1278,-0.1\n1373,12.4\n1468,25.0\n"
