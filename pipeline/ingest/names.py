@@ -279,6 +279,9 @@ OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points 
                         "tensión de tracción", "tensión de compresión", "tensión de flexión",
                         "moment obrotowy", "momento torsor", "couple moteur", "扭矩", "トルク",
                         "토크", "крутящий момент")
+#: Words of another quantity only as written, with their accent: Spanish ``Tensión``, a
+#: stress (or a voltage), which without it is the English tension, a force.
+ACCENTED_OTHER_WORDS = frozenset({"tensión"})
 #: The labels of :data:`TRANSVERSE_NAMES` and :data:`OTHER_QUANTITY_NAMES` among the role
 #: keywords: each wins as a role would.
 _TRANSVERSE = "transverse"
@@ -490,12 +493,13 @@ def match_role(name: str) -> str | None:
     --------
     >>> match_role("Total Cycle Count"), match_role("Machine_Load"), match_role("Siła")
     ('cycle_count', 'force', 'force')
-    >>> match_role("actuator_a_id") is None
-    True
+    >>> match_role("actuator_a_id") is None, match_role("Tensión") is None  # a stress
+    (True, True)
     >>> match_role("SmallLVDT"), match_role("LoadCell")  # camel case, set apart
     ('gauge', 'force')
     """
-    if tokens(name)[-1:] == ("id",):
+    if tokens(name)[-1:] == ("id",) or not ACCENTED_OTHER_WORDS.isdisjoint(
+            re.findall(r"\w+", unicodedata.normalize("NFC", name.casefold()))):
         return None
     role = _keyword(name)
     return (None if role in _NO_ROLE_LABELS or is_command(name) or is_derived(name)

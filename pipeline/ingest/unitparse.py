@@ -101,6 +101,23 @@ def is_micro_alone(text: str | None) -> bool:
     return (text or "").strip().strip("()[]{}").strip() in AMBIGUOUS_MICRO
 
 
+#: Units read as no unit, for what they may mean, folded: a micro sign alone
+#: (:data:`MICRO_ALONE`); a ton, pint's US short ton (2000 lb) where a Spanish, Korean or
+#: Brazilian machine's ``Carga (ton)`` means the metric tonne-force, 10 % more.
+AMBIGUOUS_UNITS = {**dict.fromkeys(AMBIGUOUS_MICRO, MICRO_ALONE),
+                   **dict.fromkeys(("ton", "tons"), "a ton, the metric tonne (write t or tf), "
+                                   "the US short ton of 2000 lb or the UK long ton of 2240 lb")}
+
+
+def ambiguity(text: str | None) -> str | None:
+    """What `text` may mean, if it is a unit of :data:`AMBIGUOUS_UNITS`, else None.
+
+    >>> ambiguity("(TON)").split(",")[0], ambiguity("tf")
+    ('a ton', None)
+    """
+    return AMBIGUOUS_UNITS.get((text or "").strip().strip("()[]{}").strip().casefold())
+
+
 #: What to tell a user whose unit is not understood.
 ACCEPTED_UNITS = ("N, kN, daN, mN, µN (uN), kgf (kG), tf, lbf, gf, g (in a force column); "
                   "mm, µm (um), nm, m, in; %, mm/mm, µε (microstrain) for a strain; s, ms, "
@@ -123,7 +140,7 @@ def spellings(text: str) -> list[str]:
     >>> spellings("KN"), spellings("Pa")
     (['kn', 'kN'], ['Pa'])
     """
-    if is_micro_alone(text):
+    if ambiguity(text):
         return []
     text = text.strip().strip("()[]{}").strip()
     if _CHANNEL_NUMBER.search(text):  # Bluehill's "(Strain 1)": a channel, no strain x 1
@@ -367,7 +384,7 @@ def si_factor(
     if not found:
         raise UnitError(
             f"unknown unit {text!r} in {source}"
-            + (f": {MICRO_ALONE}" if is_micro_alone(text) else ""),
+            + (f": {said}" if (said := ambiguity(text)) else ""),
             file=file, row=row, column=column,
             hint=f"write a unit pint understands ({ACCEPTED_UNITS})",
         )

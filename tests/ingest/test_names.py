@@ -185,6 +185,13 @@ def test_a_rate_a_setting_or_a_stress_takes_no_role(name):
     assert match_role(name) is None and is_unmeasured(name)
 
 
+def test_the_spanish_tension_a_stress_is_no_force_but_the_english_one_is():
+    # 'Tensión' over MPa was a force refused for its unit ("correct the unit"); over no
+    # unit, the run sheet's force unit would have read a stress as a load
+    assert [match_role(name) for name in ("Tensión", "Tensión real (MPa)", "Tension",
+                                          "Chain tension")] == [None, None, "force", "force"]
+
+
 @pytest.mark.parametrize("name", ["MX840B_CH 1", "MX1615B_CH 1"])
 def test_an_amplifiers_channel_takes_no_role_by_its_name(name):
     # HBM QuantumX amplifiers: their channels take a role by their unit alone

@@ -526,6 +526,18 @@ def test_a_micro_sign_alone_is_no_unit_and_its_column_is_warned_of(write):
         read_table(path, kind="tensile", columns={"gauges": ["表-縦"]})
 
 
+def test_a_ton_is_no_unit_for_the_tonne_force_or_the_short_ton_it_may_be(write):
+    # a Spanish machine's "Carga (ton)" is in tonnes-force; pint's ton, 2000 lb, read it
+    # 9 % low, told only as "the force of its weight"
+    path = write("ensayo.csv", "Tiempo (s);Carga (ton);Desplazamiento (mm)\n"
+                               "0,00;0,012248;0,00688\n0,10;0,012508;0,00723\n")
+    with pytest.raises(UnitError, match=r"unknown unit 'ton' in the file: a ton, the metric "
+                                        r"tonne \(write t or tf\), the US short ton"):
+        read_table(path, kind="tensile")
+    table, _ = read_table(path, kind="tensile", units={"force": "tf"})
+    np.testing.assert_allclose(table["force"], [0.012248 * 9806.65, 0.012508 * 9806.65])
+
+
 def test_microstrain_is_a_strain(write):
     text = JAPANESE_STRAIN.format(unit="με").replace("表-縦 με", "表-縦 ひずみ με")
     table, meta = read_table(write("H300CP_No1.csv", text, "cp932"), kind="tensile")
