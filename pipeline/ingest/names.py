@@ -313,10 +313,12 @@ _RUN_LABEL = re.compile(r"\s+(?:Run\s*#?\s*\d+|Auto)$")
 #: The channel a computed one was derived from, in trailing brackets.
 _SOURCE = re.compile(r"\((?P<source>[^()]+)\)\s*$")
 #: A displacement of an MTS controller's channel (``Ch 1 Weg``, ``Ch 1 Displacement``,
-#: ``Ch 1 LVDT``): the channel's own transducer on its actuator, so the machine's travel;
-#: the sensors on the specimen are named by the lab (``Extensometer``, a serial number).
-_CONTROLLER_TRAVEL = re.compile(r"ch\.? ?\d+ (?:weg|displacement|position|lvdt|stroke)",
-                                re.IGNORECASE)
+#: ``Ch 1 LVDT``, TestWare's ``Channel 1 Displacement``) or station (793's ``Axial
+#: Displacement``, ``Universal Displacement``): the channel's own transducer on its
+#: actuator, so the machine's travel; the sensors on the specimen are named by the lab
+#: (``Extensometer``, a serial number) or by the station as a strain (``Axial Strain``).
+_CONTROLLER_TRAVEL = re.compile(r"(?:ch\.? ?\d+|channel ?\d+|axial|universal) "
+                                r"(?:weg|displacement|position|lvdt|stroke)", re.IGNORECASE)
 _TOKEN = re.compile(r"[^\W\d_]+|\d+")
 
 

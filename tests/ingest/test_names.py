@@ -277,6 +277,10 @@ def test_what_a_displacement_channel_measures_in_more_languages(name, kind):
     ("1470533", "gauge"), ("Ch 1 Dehnung", "extensometer"), ("Weg Ch 1", "gauge"),
     # a real MTS 793 single pull: the actuator's own LVDT; an LVDT on the specimen is the lab's
     ("Ch 1 LVDT", "crosshead"), ("Ch 1 Stroke", "crosshead"), ("LVDT 2", "gauge"),
+    # a real MTS 793 export's station, and TestWare's channel: the actuator's LVDT, which
+    # was ranked above the crosshead and gave E0 without the machine-compliance warning
+    ("Universal Displacement", "crosshead"), ("Axial Displacement", "crosshead"),
+    ("Channel 1 Displacement", "crosshead"), ("Axial Strain", "extensometer"),
 ])
 def test_an_mts_controller_channels_displacement_is_its_actuators(name, kind):
     assert gauge_kind(name) == kind
