@@ -331,25 +331,35 @@ def _warn_by_unit_alone(raw: RawColumns, role: str, columns: list[int]) -> None:
 
 
 def _refuse_a_table_of_peaks(raw: RawColumns) -> None:
-    """Refuse a table of one row per cycle: its force columns, or without one its gauge
-    columns, are each cycle's peaks and valleys (and amplitudes)."""
+    """Refuse a table of one row per cycle: its force columns, or its gauge columns, are
+    each cycle's peaks and valleys (and amplitudes, means); or, beside a count of cycles,
+    each a maximum alone (``Cycles,Max Load,Max Position``). Unless the run sheet names
+    the force or the gauges."""
     roles = raw.candidates.roles
-    role = "force" if roles.get("force") else "gauge"
-    measured = roles.get(role, [])
-    if (not measured or role in raw.candidates.explicit
-            or not all(is_cycle_statistic(raw.names, index) for index in measured)):
+    counted = bool(roles.get("cycle_count"))
+    if {"force", "gauge"} & set(raw.candidates.explicit):  # the run sheet says
         return
-    first = next(index for index in measured if peak_partner(raw.names, index) is not None)
-    key = SHEET_KEY[role]
-    raise LayoutError(
-        f"the {role} columns {raw.names[first]!r} and {peak_partner(raw.names, first)!r} are "
-        "a cycle's extremes: the file is a table of one row per cycle, not the samples of a "
-        "log",
-        file=raw.metadata.file, row=raw.metadata.header_line,
-        hint="export the test's raw data (every sample) rather than its trends or "
-             f"peaks table, or name the {role} column in the run sheet, "
-             f"columns = {{{key} = \"...\"}}",
-    )
+    for role in ("force", "gauge"):
+        measured = roles.get(role, [])
+        if not measured:
+            continue
+        if all(is_cycle_statistic(raw.names, index) for index in measured):
+            first = next(index for index in measured
+                         if peak_partner(raw.names, index) is not None)
+            said = (f"the {role} columns {raw.names[first]!r} and "
+                    f"{peak_partner(raw.names, first)!r} are a cycle's extremes")
+        elif counted and all(is_held_peak(raw.names, index) for index in measured):
+            shown = ", ".join(repr(raw.names[index]) for index in measured)
+            said = f"the {role} column(s) {shown} hold a maximum, beside a count of cycles"
+        else:
+            continue
+        raise LayoutError(
+            f"{said}: the file is a table of one row per cycle, not the samples of a log",
+            file=raw.metadata.file, row=raw.metadata.header_line,
+            hint="export the test's raw data (every sample) rather than its trends or peaks "
+                 f"table; only if those columns are sampled readings, name the {role} column "
+                 f"in the run sheet, columns = {{{SHEET_KEY[role]} = \"...\"}}",
+        )
 
 
 def _other_specimens(raw: RawColumns, specimen: str | int | None) -> set[int]:

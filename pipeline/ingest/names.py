@@ -761,7 +761,9 @@ def _numbered_repeats(folded: list[str]) -> int:
 #: Words that make a column one statistic of each cycle, in a table of one row per
 #: cycle (Instron WaveMatrix's trends: ``"Kraft:Maximum"``, ``"Kraft:Minimum"``).
 _PEAK_WORDS = {"maximum": "max", "max": "max", "peak": "max", "höchstwert": "max",
-               "minimum": "min", "min": "min", "valley": "min", "tiefstwert": "min"}
+               "fmax": "max", "oberlast": "max",
+               "minimum": "min", "min": "min", "valley": "min", "tiefstwert": "min",
+               "fmin": "min", "unterlast": "min"}
 _PEAK_TOKENS = {tokens(word)[0]: side for word, side in _PEAK_WORDS.items()}
 
 
@@ -812,10 +814,18 @@ def peak_partner(names: list[str], index: int) -> str | None:
     return None
 
 
+#: Words of a statistic of each cycle other than its extremes (WaveMatrix's
+#: ``Strain:Amplitude``, ``Kraft:Mittel der Spitzenwerte``, a mean, a range), folded.
+_CYCLE_STATISTIC_WORDS = frozenset({"amplitude", "mean", "average", "range", "bereich",
+                                    "mittel", "mittelwert", "der", "spitzenwerte", "of",
+                                    "peaks"})
+
+
 def is_cycle_statistic(names: list[str], index: int) -> bool:
     """Whether column `index` is one statistic of each cycle: one of a cycle's extremes
-    (:func:`peak_partner`), or the amplitude of a channel whose extremes are there
-    (WaveMatrix's ``Strain:Amplitude`` beside ``Strain:Maximum``, ``Strain:Minimum``).
+    (:func:`peak_partner`), or the amplitude, mean or range of a channel whose extremes
+    are there (WaveMatrix's ``Strain:Amplitude`` beside ``Strain:Maximum``,
+    ``Strain:Minimum``).
 
     >>> names = ["Cycles", "Strain:Maximum", "Strain:Minimum", "Strain:Amplitude", "Load"]
     >>> [is_cycle_statistic(names, index) for index in range(5)]
@@ -824,8 +834,8 @@ def is_cycle_statistic(names: list[str], index: int) -> bool:
     if peak_partner(names, index) is not None:
         return True
     words = tokens(names[index])
-    if "amplitude" not in words:
+    if _CYCLE_STATISTIC_WORDS.isdisjoint(words):
         return False
-    channel = tuple(word for word in words if word != "amplitude")
+    channel = tuple(word for word in words if word not in _CYCLE_STATISTIC_WORDS)
     return any((found := _extreme(other)) is not None and found[0] == channel
                for other in names)

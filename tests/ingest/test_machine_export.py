@@ -1,5 +1,7 @@
 """Machine export: preamble, names row, units row (Instron Bluehill style)."""
 
+import re
+
 import numpy as np
 import pytest
 
@@ -293,6 +295,38 @@ def test_a_table_of_each_cycles_gauge_extremes_is_not_read_as_a_log(write):
                                           "'Position:Minimum' are a cycle's extremes") as caught:
         read_table(write("10-13.csv", text), kind="wear")
     assert 'columns = {gauges = "..."}' in caught.value.hint
+
+
+@pytest.mark.parametrize(("names", "said"), [
+    # the real E3000 table with a third statistic of the force, as it writes one of its
+    # temperature: the force was only "ambiguous", the positions' extremes read as gauges
+    ('"Kraft:Maximum (N)";"Kraft:Minimum (N)";"Kraft:Mittel der Spitzenwerte (N)"',
+     "the force columns 'Kraft:Maximum' and 'Kraft:Minimum' are a cycle's extremes"),
+    ('"Fmax (N)";"Fmin (N)"', "the force columns 'Fmax' and 'Fmin'"),
+    ('"Oberlast (N)";"Unterlast (N)";"Load (N)"', "the gauge columns 'Position des "
+                                                   "Aktuators:Maximum' and"),
+])
+def test_a_table_of_peaks_is_refused_whatever_else_its_force_columns_hold(write, names, said):
+    header = TRENDS.split("\r\n")[0].replace('"Kraft:Maximum (N)";"Kraft:Minimum (N)"', names)
+    rows = "".join(row.rstrip(";") + ";1,5;\r\n" for row in TRENDS.split("\r\n")[1:] if row)
+    with pytest.raises(LayoutError, match=re.escape(said)):
+        read_table(write("trends.csv", header + "\r\n" + rows))
+
+
+@pytest.mark.parametrize("text", [
+    # a real Instron 8800 table's first rows with its minima left out, and as a DION or
+    # testXpert table names them: each cycle's maximum was read as a force signal
+    "Cycles,Max Load (kN),Max Position (mm)\n1,0.655,37.938\n2,1.461,38.797\n3,1.5,38.8\n",
+    "Zyklen;Fmax [kN];Weg max [mm]\n1;0,655;37,938\n2;1,461;38,797\n3;1,5;38,8\n",
+])
+def test_each_cycles_maximum_beside_a_cycle_count_is_a_table_of_peaks(write, text):
+    with pytest.raises(LayoutError, match="hold a maximum, beside a count of cycles: the file "
+                                          "is a table of one row per cycle"):
+        read_table(write("peaks.csv", text), kind="tensile")
+    # a logger's peak held beside no count is read, as its only force
+    held = text.replace("Cycles", "Time (s)").replace("Zyklen", "Zeit [s]")
+    table, _ = read_table(write("held.csv", held), kind="tensile")
+    assert len(table) == 3
 
 
 def test_a_named_force_is_read_and_a_raw_force_beside_its_extremes_is_a_choice(write):
