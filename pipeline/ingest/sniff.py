@@ -988,7 +988,8 @@ def find_table(
     names = split_fields(names_line, delimiter) if above >= 0 else [""] * width
     if delimiter == BLANKS:  # a script's names kept apart by a delimiter and blanks
         names = [name.rstrip(",;") for name in names]
-    pairs = delimiter == "," and decimal == "." and 2 * len(names) == width
+    pairs = (delimiter == "," and decimal == "." and 2 * len(names) == width
+             and not _counts_rows(rows[data:data + TEXT_ROWS], kinds[data:data + TEXT_ROWS]))
     columns = width // 2 if pairs else width
     if len(names) > columns and not any(cell.strip() for cell in names[columns:]):
         names = names[:columns]
@@ -1088,6 +1089,20 @@ def _statistics(rows: list[list[str]]) -> list[tuple[int, str]]:
         if label.lower() in STATISTICS_LABELS:
             found.append((at, label))
     return found
+
+
+def _counts_rows(rows: list[list[str]], kinds: list[str]) -> bool:
+    """Whether the first field of the head's data `rows` counts them (``0``, ``1``, ``2``,
+    three rows at least) and the second varies: a sample's number beside a reading, not
+    the whole and decimal parts of a value written with a decimal comma (``0,1000``,
+    ``1,1007`` are a number and a load, not 0.1 and 1.1007; ``0,0``, ``1,0``, ``2,0`` may
+    be a time in whole seconds)."""
+    pairs = [(row[0].strip(), row[1].strip()) for row, kind in zip(rows, kinds, strict=False)
+             if kind == "numeric" and len(row) > 1]
+    firsts = [first for first, _ in pairs]
+    return (len(pairs) >= 3 and all(first.isdigit() for first in firsts)
+            and all(int(b) - int(a) == 1 for a, b in zip(firsts, firsts[1:]))
+            and len({second for _, second in pairs}) > 1)
 
 
 def _advancing(clocks: Mapping[int, object], rows: list[list[str]]) -> bool:

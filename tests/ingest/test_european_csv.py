@@ -65,6 +65,19 @@ def test_unquoted_decimal_comma_with_comma_delimiter_is_rejoined(write):
     assert meta.decimal == "," and "rejoined" in meta.warnings[0]
 
 
+def test_a_sample_number_beside_a_reading_is_no_decimal_comma_pair(write):
+    # a real dynamometer's log under a key=value line (LineScale's "Unit=N"): the number
+    # and the load were joined as 0.1000, 1.1007, 2.1014
+    text = "Unit=N\n0,1000\n1,1007\n2,1014\n3,1021\n"
+    with pytest.raises(LayoutError, match="no names row above the first data row"):
+        read_table(write("log.csv", text))
+    # a time in whole seconds with a decimal comma is still rejoined
+    table, _ = read_table(write("c.csv", "time [s],force [kN]\n0,0,1,5\n1,0,1,6\n2,0,1,7\n"),
+                          kind="engagement")
+    np.testing.assert_allclose(table["time"], [0.0, 1.0, 2.0])
+    np.testing.assert_allclose(table["force"], [1500.0, 1600.0, 1700.0])
+
+
 def test_unsplittable_pairs(write):
     text = "time [s],force [kN],gauge [mm]\n0,5,1,25,0,01\n1,5,2,-25,0,02\n"
     with pytest.raises(LayoutError, match="cannot be split") as caught:
