@@ -1052,6 +1052,7 @@ def find_table(
         names, units = _each_specimen(names, specimens), _each_specimen(units, specimens)
     notes += _settings_beside(rows[data:], decimal, columns, data)
     texts = frozenset() if pairs else _text_columns(rows[data:], kinds[data:], columns, decimal)
+    _refuse_interleaved(rows[data:], kinds[data:], texts, names, name, data)
     if not _advancing(clocks, rows[data:data + TEXT_ROWS]) and not any(
             match_role(name) == "time" for name in names):
         labelled = _labels_of_rows(rows[data:], kinds[data:], texts, names)
@@ -1089,6 +1090,31 @@ def _statistics(rows: list[list[str]]) -> list[tuple[int, str]]:
         if label.lower() in STATISTICS_LABELS:
             found.append((at, label))
     return found
+
+
+def _refuse_interleaved(rows: list[list[str]], kinds: list[str], texts: frozenset[int],
+                       names: list[str], name: str, data: int) -> None:
+    """Refuse a log whose text column (of `texts`) labels the head's data `rows` in turn,
+    the same few labels over and over (``Left``, ``Right``, ``Left``...): each row a
+    reading of another sensor (a long-format log), which read as one channel would zigzag
+    between them."""
+    data_rows = [row for row, kind in zip(rows, kinds, strict=False) if kind == "numeric"
+                 ][:TEXT_ROWS]
+    for index in sorted(texts):
+        cells = [row[index].strip() for row in data_rows]
+        labels = list(dict.fromkeys(cells))
+        period = len(labels)
+        if (2 <= period <= 16 and len(cells) >= max(6, 2 * period)
+                and all(cells[at] == labels[at % period] for at in range(len(cells)))):
+            column = names[index].strip() or f"column {index + 1}"
+            raise LayoutError(
+                f"column {column!r} labels the rows in turn "
+                f"({', '.join(map(repr, labels[:4]))}{', ...' if period > 4 else ''}): each "
+                f"row is a reading of one of {period} sensors, not a sample of all the "
+                "channels; read as one channel they would be mixed",
+                file=name, row=data + 1,
+                hint=f"write each sensor's readings in a column of its own (or a file of "
+                     f"its own, by {column!r}), then read that")
 
 
 def _counts_rows(rows: list[list[str]], kinds: list[str]) -> bool:

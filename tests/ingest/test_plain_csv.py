@@ -208,6 +208,22 @@ def test_rows_labelled_one_by_one_without_a_time_are_told_as_specimens(write):
         assert not any("label of its own" in warning for warning in meta.warnings)
 
 
+def test_a_log_of_two_sensors_read_in_turn_is_refused(write):
+    # a real two-load-cell Arduino log in long format: once its value was named the force,
+    # the left and right cells' readings were one zigzagging force signal
+    rows = "".join(f"{1736440668 + i // 2 / 10},{'Left' if i % 2 == 0 else 'Right'},"
+                   f"{30 + i % 2 * 5 + i / 100}\n" for i in range(12))
+    text = "Unix Timestamp,Position,Force [kg]\n" + rows
+    with pytest.raises(LayoutError, match=r"column 'Position' labels the rows in turn "
+                                          r"\('Left', 'Right'\): each row is a reading of one "
+                                          r"of 2 sensors"):
+        read_table(write("serial.csv", text), kind="tensile")
+    # a state held over several rows labels no sensor
+    held = text.replace("Right", "Left", 3)
+    table, _ = read_table(write("held.csv", held), kind="engagement", units={"time": "s"})
+    assert table["force"].size == 12
+
+
 def test_a_results_table_of_specimens_dated_at_midnight_is_refused_as_such(write):
     # a real filament-testing lab's table: one row per specimen, its test's date at
     # midnight (no time of a test), results beside it; it was read as a curve of yield
