@@ -172,6 +172,7 @@ GAUGE_KINDS: dict[str, tuple[str, ...]] = {
         "deformación", "dial", "czujnik", "extensomètre", "déformation", "déform",
         "extensômetro", "estensometro", "deformazione", "ekstansometre", "экстензометр",
         "引伸计", "应变", "伸び計", "rek", "gerinim", "ひずみ", "歪み", "변형률", "신장계",
+        "optical",
     ),
 }
 

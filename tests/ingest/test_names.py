@@ -286,6 +286,15 @@ def test_an_mts_controller_channels_displacement_is_its_actuators(name, kind):
     assert gauge_kind(name) == kind
 
 
+@pytest.mark.parametrize(("name", "kind"), [
+    # a real Bluehill export's video extensometer beside the crosshead's 'Displacement':
+    # both were gauges, so the choice for E0 could not prefer the extensometer
+    ("Optical Displacement", "extensometer"), ("Displacement", "gauge"),
+])
+def test_an_optical_extensometer_is_one(name, kind):
+    assert match_role(name) == "gauge" and gauge_kind(name) == kind
+
+
 @pytest.mark.parametrize(("name", "role", "kind"), [
     # PicoLog writes each channel's statistic after its name: a qualifier
     ("Force Ave.", "force", None), ("Load Ave.", "force", None), ("Force Min.", "force", None),
