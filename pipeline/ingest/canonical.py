@@ -232,6 +232,14 @@ def settle(
     """
     meta = raw.metadata
     others = _other_specimens(raw, specimen)
+    mine = [index for index in range(len(raw.names)) if index not in others]
+    if others and all(index in empty for index in mine):
+        raise LayoutError(
+            f"specimen {meta.specimen!r} holds no readings: its columns "
+            f"({', '.join(display_name(raw.names, index) for index in mine)}) are empty, or "
+            "hold one value, in the whole file",
+            file=meta.file, row=meta.header_line,
+            hint="read another specimen (specimen_in_file in the run sheet)")
     empty = empty | others
     _refuse_a_table_of_peaks(raw)
     problems = _Problems(strict, meta.warnings)

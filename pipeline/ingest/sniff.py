@@ -26,7 +26,7 @@ import unicodedata
 from collections import Counter
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from itertools import groupby, islice
+from itertools import groupby, islice, pairwise
 from pathlib import PureWindowsPath
 
 import pyarrow.csv as pacsv
@@ -1105,6 +1105,7 @@ def _refuse_interleaved(rows: list[list[str]], kinds: list[str], texts: frozense
         labels = list(dict.fromkeys(cells))
         period = len(labels)
         if (2 <= period <= 16 and len(cells) >= max(6, 2 * period)
+                and not {label.casefold() for label in labels} <= _FLAGS
                 and all(cells[at] == labels[at % period] for at in range(len(cells)))):
             column = names[index].strip() or f"column {index + 1}"
             raise LayoutError(
@@ -1117,6 +1118,10 @@ def _refuse_interleaved(rows: list[list[str]], kinds: list[str], texts: frozense
                      f"its own, by {column!r}), then read that")
 
 
+#: A flag's states, folded: a flag toggling every row (a rig's ``F``, ``T``) labels no sensor.
+_FLAGS = frozenset({"t", "f", "true", "false", "y", "n", "yes", "no", "on", "off"})
+
+
 def _counts_rows(rows: list[list[str]], kinds: list[str]) -> bool:
     """Whether the first field of the head's data `rows` counts them (``0``, ``1``, ``2``,
     three rows at least) and the second varies: a sample's number beside a reading, not
@@ -1127,7 +1132,7 @@ def _counts_rows(rows: list[list[str]], kinds: list[str]) -> bool:
              if kind == "numeric" and len(row) > 1]
     firsts = [first for first, _ in pairs]
     return (len(pairs) >= 3 and all(first.isdigit() for first in firsts)
-            and all(int(b) - int(a) == 1 for a, b in zip(firsts, firsts[1:]))
+            and all(int(b) - int(a) == 1 for a, b in pairwise(firsts))
             and len({second for _, second in pairs}) > 1)
 
 

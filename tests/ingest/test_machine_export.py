@@ -720,6 +720,22 @@ def test_specimens_side_by_side_under_their_labels_and_a_shorter_one(write):
     assert meta.rows == 3 and not meta.warnings
 
 
+def test_a_specimen_whose_columns_are_empty_is_refused_as_such(write):
+    # a force tester's batch export with slots left empty: the empty specimen was shown
+    # as read, its rows counted, "no force column found ... the file has: " and no name
+    empty = TRAPEZIUM.replace('"AcierC70",,', '"AcierC70",,,"Vide",,').replace(
+        '"Stroke"\n', '"Stroke","Temps","Force","Stroke"\n').replace(
+        '"mm"\n', '"mm","sec","N","mm"\n')
+    empty = "\n".join(line + (",,," if line.startswith('"0') or line.startswith('""') else "")
+                      for line in empty.splitlines()) + "\n"
+    path = write("tract.csv", empty)
+    with pytest.raises(LayoutError, match=r"specimen 'Vide' holds no readings: its columns "
+                                          r"\(Temps, Force, Stroke\) are empty"):
+        read_table(path, specimen="Vide")
+    table, _ = read_table(path, specimen="AcierC70")
+    np.testing.assert_allclose(table["force"], [81.86976, 81.8952, 81.93652])
+
+
 def test_specimens_labelled_over_each_of_their_columns_are_told_apart(write):
     # a Stable Micro Systems Exponent layout: each test's name over each of its columns; a
     # name the readers do not know (Distance) was then named by that row, two tests read
