@@ -1050,7 +1050,7 @@ def find_table(
     specimens = tuple(labels) if len(labels) > 1 else ()
     if specimens:  # names and units written over the first specimen's columns only
         names, units = _each_specimen(names, specimens), _each_specimen(units, specimens)
-    notes += _settings_beside(rows[data:], decimal, columns, data)
+    notes += _settings_beside(rows[data:], decimal, columns, data, names)
     texts = frozenset() if pairs else _text_columns(rows[data:], kinds[data:], columns, decimal)
     _refuse_interleaved(rows[data:], kinds[data:], texts, names, name, data)
     if not _advancing(clocks, rows[data:data + TEXT_ROWS]) and not any(
@@ -1367,13 +1367,16 @@ SETTINGS_BESIDE_ROWS = 3
 
 
 def _settings_beside(rows: list[list[str]], decimal: str, columns: int,
-                     data: int) -> tuple[str, ...]:
+                     data: int, names: list[str]) -> tuple[str, ...]:
     """A note when the first data rows hold text in some column that is empty below them
     (a Hopkinson bar's export: its settings, ``Test Time<TAB>11:48:55 AM``, in the first
     columns beside the waveforms, whose first two numbers are their start and step), else
-    none; `rows` are the head's data rows, the first on line ``data + 1``."""
+    none; `rows` are the head's data rows, the first on line ``data + 1``. A column named
+    for remarks (:data:`_REMARKS`) holds none."""
     beside = []
     for column in range(columns):
+        if column < len(names) and not _REMARKS.isdisjoint(tokens(names[column])):
+            continue
         cells = [row[column].strip() if column < len(row) else "" for row in rows]
         filled = [cell for cell in cells if not is_missing(cell)]
         reach = max((count + 1 for count, cell in enumerate(cells) if not is_missing(cell)),
@@ -1388,6 +1391,12 @@ def _settings_beside(rows: list[list[str]], decimal: str, columns: int,
             f"{', '.join(str(column + 1) for column, _ in beside)}, and none below: settings "
             "written beside the data? The numbers of those lines may be settings too (a "
             "waveform's start and step), not samples: check them",)
+
+
+#: Words of a column of remarks (``Comments``), folded.
+_REMARKS = frozenset({"comment", "comments", "remark", "remarks", "note", "notes",
+                      "bemerkung", "bemerkungen", "kommentar", "commentaire", "commentaires",
+                      "observaciones", "observacoes", "uwagi"})
 
 
 def _text_rows_over(rows: list[list[str]], kinds: list[str], index: int,

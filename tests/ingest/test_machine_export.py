@@ -1043,6 +1043,14 @@ def test_a_comment_column_filled_to_the_end_of_the_head_is_no_setting(write):
     lines = ["time [s],force [kN],note", *(f"{i},{i * 2},ok" for i in range(12))]
     _, meta = read_table(write("log.csv", "\n".join(lines) + "\n"), kind="engagement")
     assert not any("settings written beside" in warning for warning in meta.warnings)
+    # a lab's remarks on its first rows only ('broke near neck') are no settings either
+    lines = ["time [s],force [kN],Comments", "0,0,broke near neck", "1,2,near neck",
+             "2,4,neck", *(f"{i},{i * 2}," for i in range(3, 12))]
+    _, meta = read_table(write("log.csv", "\n".join(lines) + "\n"), kind="engagement")
+    assert not any("settings written beside" in warning for warning in meta.warnings)
+    _, meta = read_table(write("log.csv", "\n".join(lines).replace("Comments", "Setting")
+                               + "\n"), kind="engagement")
+    assert any("settings written beside" in warning for warning in meta.warnings)
 
 
 def test_a_units_row_repeating_a_name_gives_that_column_no_unit(write):
