@@ -36,8 +36,10 @@ ureg.define("@alias percent = pct")
 # Keysight data loggers' volts of a direct or alternating voltage (BenchLink's VDC, VAC).
 ureg.define("@alias volt = VDC = VAC")
 # Russian (Cyrillic) unit symbols, as Russian testing-machine software writes them.
-for _definition in ("с = second", "мс = millisecond", "мин = minute", "ч = hour",
-                    "Н = newton", "кН = kilonewton", "кгс = kilogram_force",
+for _definition in ("с = second", "сек = second", "мс = millisecond", "мин = minute",
+                    "ч = hour", "Н = newton", "мН = millinewton", "кН = kilonewton",
+                    "даН = decanewton", "гс = gram_force", "кгс = kilogram_force",
+                    "тс = force_metric_ton",
                     "м = meter", "мм = millimeter", "см = centimeter", "мкм = micrometer"):
     ureg.define(_definition)
 # Chinese unit names, as Chinese testing-machine software writes them.

@@ -34,6 +34,8 @@ def factor(text, role):
         # Russian (Cyrillic) symbols
         ("с", "time", 1.0), ("мс", "time", 1e-3), ("мин", "time", 60.0), ("ч", "time", 3600.0),
         ("Н", "force", 1.0), ("кН", "force", 1e3), ("кгс", "force", STANDARD_GRAVITY),
+        ("сек", "time", 1.0), ("мН", "force", 1e-3), ("даН", "force", 10.0),
+        ("гс", "force", 1e-3 * STANDARD_GRAVITY), ("тс", "force", 1e3 * STANDARD_GRAVITY),
         ("мм", "gauge", 1e-3), ("мкм", "gauge", 1e-6), ("см", "gauge", 1e-2), ("м", "gauge", 1.0),
         # Chinese unit names
         ("秒", "time", 1.0), ("毫秒", "time", 1e-3), ("千牛", "force", 1e3), ("牛", "force", 1.0),
