@@ -209,10 +209,13 @@ DERIVED_NAMES = ("calculation", "berechnung", "calcul", "cálculo", "calcolo", "
                  "true strain", "log strain", "logarithmic strain", "hencky strain",
                  "wahre dehnung", "logarithmische dehnung", "déformation vraie")
 #: Words of a test's results, one value a specimen (``Yield (N)``, ``Break Elong [mm]``,
-#: ``Tensile Str. (MPa)``, ``Modulus of Elasticity``, ``Fmax``, ``Bruchdehnung``): under
-#: such names, rows each labelled their own are specimens (:func:`says_result`).
-RESULT_WORDS = frozenset({"yield", "break", "modulus", "strength", "str", "toughness",
-                          "rupture", "fmax", "modul", "bruch", "bruchdehnung",
+#: ``Tensile Str. (MPa)``, ``Modulus of Elasticity``, ``Bruchdehnung``; a chain
+#: catalogue's ``Breaking load``, ``Mindestbruchkraft``, ``MBL``): such a column takes no
+#: role, and under such names rows each labelled their own are specimens
+#: (:func:`says_result`).
+RESULT_WORDS = frozenset({"yield", "break", "breaking", "modulus", "strength", "str",
+                          "toughness", "rupture", "ruptura", "rotura", "modul", "bruch",
+                          "bruchdehnung", "bruchkraft", "mindestbruchkraft", "bruchlast", "mbl",
                           "streckgrenze", "zugfestigkeit", "festigkeit"})
 #: Names of an air's humidity, logged in % beside the channels (a climate chamber's ``RH``):
 #: no strain, whatever its unit says.
@@ -506,7 +509,7 @@ def match_role(name: str) -> str | None:
         return None
     role = _keyword(name)
     return (None if role in _NO_ROLE_LABELS or is_command(name) or is_derived(name)
-            or is_crack(name) else role)
+            or is_crack(name) or says_result(name) else role)
 
 
 #: Where a name written in camel case (``SmallLVDT``, ``LoadCell``) is set apart into words.
@@ -558,16 +561,16 @@ def says_result(name: str) -> bool:
 def is_unmeasured(name: str) -> bool:
     """Whether a column name says it holds no measurement along the specimen: a transverse
     channel (:data:`TRANSVERSE_NAMES`), another quantity (:data:`OTHER_QUANTITY_NAMES`), a
-    setpoint or command, a value worked out from others, one part of a clock reading, or a
-    crack's record (:data:`CRACK_WORDS`). Such a column takes no role, not even from its
-    unit.
+    setpoint or command, a value worked out from others, one part of a clock reading, a
+    crack's record (:data:`CRACK_WORDS`), or a test's result (:data:`RESULT_WORDS`). Such
+    a column takes no role, not even from its unit.
 
     >>> [is_unmeasured(name) for name in ("Querdehnung", "Load Command", "Minute",
     ...                                   "Crack_length", "sample_count", "Temp", "Load")]
     [True, True, True, True, True, True, False]
     """
     return (_keyword(name) in _NO_ROLE_LABELS or is_command(name) or is_derived(name)
-            or is_clock_part(name) or is_crack(name))
+            or is_clock_part(name) or is_crack(name) or says_result(name))
 
 
 def is_crack(name: str) -> bool:

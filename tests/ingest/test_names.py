@@ -192,6 +192,14 @@ def test_the_spanish_tension_a_stress_is_no_force_but_the_english_one_is():
                                           "Chain tension")] == [None, None, "force", "force"]
 
 
+@pytest.mark.parametrize("name", ["Breaking load", "Break load", "Bruchkraft", "MBL",
+                                  "Mindestbruchkraft", "Yield", "Load at Break"])
+def test_a_result_of_a_test_takes_no_role(name):
+    # a chain catalogue's breaking loads beside its pitches was read as a tensile curve
+    # through its chain sizes, the load by its name or by its unit alone
+    assert match_role(name) is None and is_unmeasured(name)
+
+
 @pytest.mark.parametrize("name", ["MX840B_CH 1", "MX1615B_CH 1"])
 def test_an_amplifiers_channel_takes_no_role_by_its_name(name):
     # HBM QuantumX amplifiers: their channels take a role by their unit alone
