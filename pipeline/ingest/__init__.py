@@ -129,7 +129,7 @@ def read_table(
       ``metadata.time_monotonic`` and ``metadata.time_gaps``), never raised nor
       repaired: the conditioning stage decides;
     * NaN stretches are kept as NaN with a warning giving their count;
-    * all-empty channels are dropped, sentinel values (-1e6, -999999, 9.9e37)
+    * all-empty channels are dropped, sentinel values (-1e6, -999999, 9.9e37, ±999999999)
       become NaN, both with a warning.
 
     Raises

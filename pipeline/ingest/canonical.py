@@ -82,6 +82,8 @@ SENTINELS = {
     -1_000_000.0: "MTS / Instron unused-channel marker",
     -999_999.0: "unused-channel marker",
     9.9e37: "NI / Agilent overflow marker",
+    999_999_999.0: "Yokogawa recorder over-range marker",
+    -999_999_999.0: "Yokogawa recorder under-range marker",
 }
 
 # Values beyond these may be sentinels: the arrays are scanned for them only then.
@@ -549,11 +551,11 @@ def clean(raw: RawTable, warnings: list[str]) -> set[int]:
             mask = np.isin(array, list(SENTINELS))
             count = int(np.count_nonzero(mask))
             if count:
+                found = "; ".join(f"{value:g}, {SENTINELS[value]}"
+                                  for value in sorted(set(array[mask].tolist())))
                 array[mask] = np.nan
-                warnings.append(
-                    f"column {display_name(raw.names, index)!r}: {count} sentinel values "
-                    f"({', '.join(f'{v:g}' for v in SENTINELS)}) of an unused channel set to NaN"
-                )
+                warnings.append(f"column {display_name(raw.names, index)!r}: {count} sentinel "
+                                f"values ({found}) set to NaN")
                 low = np.fmin.reduce(array)
         if np.isnan(low):
             empty.add(index)

@@ -26,6 +26,12 @@ def test_sentinels_become_nan_and_empty_channels_are_dropped(write):
     assert np.isnan(table["force"][2])
     assert sum("sentinel" in warning for warning in meta.warnings) == 3
     assert "2 empty column(s) dropped: gauge2, Winkel" in meta.warnings
+    # a Yokogawa recorder's declared over-range codes are no readings either
+    over = rows((0, 1, 0.1), (1, 999999999, 0.2), (2, 3, -999999999))
+    table, meta = read_table(write("gp10.csv", "time [s],force [kN],gauge1 [mm]\n" + over))
+    assert np.isnan(table["force"][1]) and np.isnan(table["gauge_1"][2])
+    assert ("column 'gauge1': 1 sentinel values (-1e+09, Yokogawa recorder under-range "
+            "marker) set to NaN") in meta.warnings
 
 
 def test_nan_stretch_is_reported_with_count_and_longest_run(write):

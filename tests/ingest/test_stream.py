@@ -111,8 +111,8 @@ def test_all_rows_warn_as_the_whole_file(corpus):
 
 
 def sentinel(column):
-    return (f"column {column!r}: 1 sentinel values (-1e+06, -999999, 9.9e+37) of an unused "
-            "channel set to NaN")
+    return (f"column {column!r}: 1 sentinel values (-1e+06, MTS / Instron unused-channel "
+            "marker) set to NaN")
 
 
 def missing(count, line):
