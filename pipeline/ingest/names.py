@@ -37,7 +37,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
     },
     "de": {
         "time": ("zeit", "prüfzeit", "testzeit", "versuchszeit", "laufzeit", "betriebsstunden",
-                 "gesamtzeit", "zykluszeit", "zeitstempel"),
+                 "gesamtzeit", "zykluszeit", "zeitstempel", "datum uhrzeit"),
         "force": ("kraft", "standardkraft", "prüfkraft", "last"),
         "gauge": ("weg", "standardweg", "traversenweg", "dehnung", "verlängerung", "längung",
                   "längenänderung", "feindehnung",
@@ -66,7 +66,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "side_force": ("siła boczna",),
     },
     "es": {
-        "time": ("tiempo",),
+        "time": ("tiempo", "fecha hora"),
         "force": ("fuerza", "carga"),
         "gauge": ("desplazamiento", "extensión", "alargamiento", "deformación",
                   "extensómetro", "travesaño", "actuador", "pistón", "carrera"),
@@ -76,7 +76,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "speed": ("velocidad",),
     },
     "fr": {
-        "time": ("temps", "durée"),
+        "time": ("temps", "durée", "date heure"),
         "force": ("force", "effort"),  # not "charge": an electric charge in English logs
         "gauge": ("déplacement", "allongement", "déformation", "déform", "extensomètre",
                   "course", "course traverse", "vérin", "écartement entre outils"),

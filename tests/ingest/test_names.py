@@ -319,6 +319,12 @@ def test_a_statistic_after_a_channels_name_is_a_qualifier(name, role, kind):
     assert kind is None or gauge_kind(name) == kind
 
 
+@pytest.mark.parametrize("name", ["Date/Heure", "Datum Uhrzeit", "Fecha/Hora", "Date/Time"])
+def test_a_date_and_time_named_in_its_language_is_the_time(name):
+    # a French recorder's 'Date/Heure' over its stamps took no role: no time, no rate
+    assert match_role(name) == "time" and not is_clock_part(name)
+
+
 @pytest.mark.parametrize("name", ["Hour", "Minute", "Second", "Stunde", "Sekunde", "Heure"])
 def test_a_part_of_a_clock_reading_is_no_elapsed_time(name):
     assert match_role(name) is None and is_clock_part(name)
