@@ -50,6 +50,7 @@ from pipeline.ingest.names import (
         # a real Bluehill export in Chinese: 时间, 位移, 载荷, 压缩应力, 循环计数
         ("时间", "time"), ("位移", "gauge"), ("载荷", "force"), ("循环计数", "cycle_count"),
         ("压缩应力", None),
+        ("行程", "gauge"), ("横梁", "gauge"),  # a Chinese machine's stroke, by name not unit
         # real French exports (Shimadzu, Walter+Bai): Temps, Force, Course_Traverse,
         # C_1_Déform1, C_1_Déplacement, C_1_Valeur de consigne; Bluehill's "Charge (kN)"
         # is a force by its unit, not its name, an electric charge in English logs
