@@ -14,9 +14,10 @@ import re
 from pipeline.ingest.names import split_name_unit
 from pipeline.ingest.sniff import is_number, split_fields
 
-#: A colon that separates a key from its value: not one between digits (a clock time,
+#: A colon that separates a key from its value (a full-width one, as Chinese software writes
+#: it: ``试样编号：A12``): not one between digits (a clock time,
 #: ``14:43:46``) nor a drive letter's (``C:\``).
-_KEY_COLON = re.compile(r"(?<!\d):|(?<=\d):(?!\d)")
+_KEY_COLON = re.compile(r"(?<!\d):|(?<=\d):(?!\d)|：")
 _DRIVE = re.compile(r"[A-Za-z]:[\\/]")
 #: A file's signature of fields between bars, as MTS 793 opens its exports with
 #: (``MTS793|MPT|ESR|1|2|.|/|:|51|1|1|A``: its decimal, date and time signs among them):
@@ -89,7 +90,7 @@ def _key_and_value(line: str, delimiter: str) -> tuple[str | None, str]:
         if not fields:  # a blank row padded with delimiters (a spreadsheet's ",,,,")
             return None, ""
         first = fields[0]
-        separators = [at for at in (_key_colon(first), first.find(" =")) if at >= 0]
+        separators = [at for at in (_key_colon(first), first.find("=")) if at >= 0]
         if _SIGNATURE.fullmatch(first):  # its ':' is one of the signs it lists
             key, values = first, fields[1:]
         elif separators:

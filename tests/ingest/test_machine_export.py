@@ -257,6 +257,9 @@ def test_run_sheet_columns_pick_among_candidates(write):
         (["# Test Name: Test 1", "# Peak Force: 3.379 kN", "#"],
          {"Test Name": "Test 1", "Peak Force": "3.379 kN"}),
         (["# of cycles: 5"], {"# of cycles": "5"}),  # alone, the mark may be the key's
+        # a rigging dynamometer's settings without blanks; a Chinese machine's full-width colon
+        (["Unit=kN", "Speed=1280"], {"Unit": "kN", "Speed": "1280"}),
+        (["试样编号：A12"], {"试样编号": "A12"}),
         # a real force-sensor logger's: a blank row padded with delimiters is no key
         (["Data Collection Duration (s):,1,,,,,,", "Force Sensor Sample rate (Hz):,1000,,,,,,",
           ",,,,,,,"],
