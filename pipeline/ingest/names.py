@@ -22,7 +22,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
         "force": ("force", "load", "tension", "thrust"),
         "gauge": (
             "extension", "displacement", "disp", "gauge", "elongation", "extensometer", "ext",
-            "deflection", "position", "stroke", "crosshead", "lvdt", "dial", "strain",
+            "exts", "deflection", "position", "stroke", "crosshead", "lvdt", "dial", "strain",
             "actuator", "piston", "clip gauge", "ave", "video extensometer", "travel",
             "stretch", "chain stretch", "grip to grip separation", "grip separation",
         ),
@@ -172,7 +172,7 @@ GAUGE_KINDS: dict[str, tuple[str, ...]] = {
         "deformación", "dial", "czujnik", "extensomètre", "déformation", "déform",
         "extensômetro", "estensometro", "deformazione", "ekstansometre", "экстензометр",
         "引伸计", "应变", "伸び計", "rek", "gerinim", "ひずみ", "歪み", "변형률", "신장계",
-        "optical",
+        "optical", "exts",
     ),
 }
 

@@ -287,8 +287,9 @@ class TableSpec:
 
 
 def split_fields(line: str, delimiter: str) -> list[str]:
-    """The fields of one line (``"`` quotes honoured); with :data:`BLANKS`, each run of
-    blanks is one delimiter and blanks around the line are none."""
+    """The fields of one line (``"`` quotes honoured, blanks before a quote passed over:
+    VIC-3D writes `` "X",  "Y"``); with :data:`BLANKS`, each run of blanks is one delimiter
+    and blanks around the line are none."""
     if delimiter == BLANKS:
         line = line.replace("\t", " ").strip()
         if '"' not in line:
@@ -297,7 +298,7 @@ def split_fields(line: str, delimiter: str) -> list[str]:
     if '"' not in line:
         return line.split(delimiter)
     try:
-        return next(csv.reader([line], delimiter=delimiter), [])
+        return next(csv.reader([line], delimiter=delimiter, skipinitialspace=True), [])
     except csv.Error:
         return [line]
 

@@ -299,8 +299,9 @@ def test_an_mts_controller_channels_displacement_is_its_actuators(name, kind):
     # a real Bluehill export's video extensometer beside the crosshead's 'Displacement':
     # both were gauges, so the choice for E0 could not prefer the extensometer
     ("Optical Displacement", "extensometer"), ("Displacement", "gauge"),
+    ("EXTS", "extensometer"),  # a MaCh3D tester's clip-on beside its DISP and ENC1
 ])
-def test_an_optical_extensometer_is_one(name, kind):
+def test_an_optical_or_abbreviated_extensometer_is_one(name, kind):
     assert match_role(name) == "gauge" and gauge_kind(name) == kind
 
 

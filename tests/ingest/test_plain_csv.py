@@ -208,6 +208,15 @@ def test_rows_labelled_one_by_one_without_a_time_are_told_as_specimens(write):
         assert not any("label of its own" in warning for warning in meta.warnings)
 
 
+def test_quoted_names_after_blanks_are_read_with_their_units(write):
+    # VIC-3D writes ' "X",  "Y"': the quotes were kept, the units in brackets not read
+    text = ' "Time [s]",  "Load [kN]",  "Crosshead [mm]"\n0,0.5,0.25\n1,10.5,1.25\n'
+    table, meta = read_table(write("vic.csv", text), kind="tensile")
+    assert [(column.name, column.unit) for column in meta.columns] == [
+        ("Time", "s"), ("Load", "kN"), ("Crosshead", "mm")]
+    np.testing.assert_allclose(table["force"], [500.0, 10500.0])
+
+
 def test_a_log_of_two_sensors_read_in_turn_is_refused(write):
     # a real two-load-cell Arduino log in long format: once its value was named the force,
     # the left and right cells' readings were one zigzagging force signal
