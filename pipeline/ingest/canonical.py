@@ -679,7 +679,7 @@ _PREFERRED = (
      "is named as one that starts again (a step's, a cycle's, since a reset) beside the "
      "whole test's"),
     (frozenset({"force"}), lambda raw, at: not says_sign_convention(raw.names[at]),
-     "is the load in one kind of test's sign, worked out from the measured one"),
+     "is named as the load in one kind of test's sign, worked out from the measured one"),
     (frozenset({"force"}), lambda raw, at: not is_held_peak(raw.names, at),
      "is a peak held beside the reading itself"),
     (frozenset({"force"}), lambda raw, at: unit_fits(raw.units[at], "force"),

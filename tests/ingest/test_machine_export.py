@@ -394,8 +394,8 @@ def test_a_load_turned_to_compressions_sign_gives_way_to_the_measured_load(write
                       f"{0.01 * row:.3f},{2.0 * row:.1f},0\n" for row in range(6)))
     table, meta = read_table(write("Specimen_RawData_3.csv", text), kind="tensile")
     np.testing.assert_allclose(table["force"], -2.0 * np.arange(6))
-    assert ("column 'Compressive load' is the load in one kind of test's sign, worked out "
-            "from the measured one ('Load'): not used") in meta.warnings[0]
+    assert ("column 'Compressive load' is named as the load in one kind of test's sign, "
+            "worked out from the measured one ('Load'): not used") in meta.warnings[0]
 
 
 def test_a_cracks_record_takes_no_role(write):
