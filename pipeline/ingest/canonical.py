@@ -258,6 +258,7 @@ def settle(
         keys = " or ".join(f"columns = {{{SHEET_KEY[role]} = \"...\"}}" for role in group)
         why = "".join(f"{reason}; " for role, reason in raw.set_aside if role in group)
         why += _spectrum_note(raw) if "time" in group else ""
+        why += _weight_note(raw, empty) if "force" in group else ""
         problems.report(next((rejected[role] for role in group if role in rejected), None)
                         or ColumnError(
             f"no {' or '.join(group)} column found ({kind} runs need {needs})",
@@ -535,6 +536,18 @@ def _spectrum_note(raw: RawColumns) -> str:
     return (f"column {display_name(raw.names, found)!r} is in {raw.units[found]}: a spectrum "
             "or a frequency sweep, whose rows are frequencies, has no time and is no test "
             "record; ")
+
+
+def _weight_note(raw: RawColumns, empty: set[int]) -> str:
+    """What the hint of a missing force says of the columns in a unit of mass whose name
+    gives no role (a load cell's ``Value [kg]``): a mass alone makes no force, but such a
+    column may be the load, as the weight of that mass; or ""."""
+    found = [index for index, unit in enumerate(raw.units) if index not in empty
+             and match_role(raw.names[index]) is None and not is_unmeasured(raw.names[index])
+             and is_mass_unit(unit)]
+    return "".join(f"column {display_name(raw.names, index)!r} is in {raw.units[index]}, a "
+                   "mass: if it is the load, name it as the force (read as the weight of that "
+                   "mass); " for index in found)
 
 
 def _si_unit(name: str) -> str:
