@@ -96,14 +96,22 @@ def test_a_column_of_one_value_beside_the_first_sample_is_no_channel(write):
             "specimen's dimension or a setting, no channel: not used") in meta.warnings
 
 
-def test_a_spectrum_is_told_by_its_frequencies_when_no_time_is_found(write):
+@pytest.mark.parametrize(("text", "said"), [
     # a real acoustic analyser's force spectrum: its rows are frequencies, and the hint
     # asked for a time without a word on them
-    text = "Frequency [Hz],Force [N],Phase [deg]\n20.0,96.77,36.74\n20.3,96.81,36.07\n"
+    ("Frequency [Hz],Force [N],Phase [deg]\n20.0,96.77,36.74\n20.3,96.81,36.07\n",
+     "column 'Frequency' is in Hz: a spectrum or a frequency sweep, whose rows are "
+     "frequencies, has no time and is no test record"),
+    # a real HX711 load-cell log's 'Value [kg]': the hint listed the columns, not that this
+    # one may be the load (a temperature in kg is none)
+    ("time [s],Value [kg],Temperature [kg]\n0,1.5,20\n1,2.5,21\n",
+     "column 'Value' is in kg, a mass: if it is the load, name it as the force (read as "
+     "the weight of that mass); the file has"),
+])
+def test_the_hint_of_a_missing_role_says_what_a_column_may_be(write, text, said):
     with pytest.raises(ColumnError) as caught:
-        read_table(write("spectrum.txt", text), kind="engagement")
-    assert ("column 'Frequency' is in Hz: a spectrum or a frequency sweep, whose rows are "
-            "frequencies, has no time and is no test record") in caught.value.hint
+        read_table(write("log.txt", text), kind="engagement")
+    assert said in caught.value.hint
 
 
 def test_time_backwards_and_gaps_are_warnings(write):

@@ -217,19 +217,6 @@ def test_quoted_names_after_blanks_are_read_with_their_units(write):
     np.testing.assert_allclose(table["force"], [500.0, 10500.0])
 
 
-def test_the_hint_of_a_missing_force_names_a_column_in_a_unit_of_mass(write):
-    # a real HX711 load-cell log's 'Value [kg]': "no force column found" listed the
-    # columns, not that this one may be the load
-    text = "time [s],Value [kg],Temperature [kg]\n0,1.5,20\n1,2.5,21\n"
-    with pytest.raises(ColumnError) as caught:
-        read_table(write("hx711.csv", text), kind="engagement")
-    assert ("column 'Value' is in kg, a mass: if it is the load, name it as the force "
-            "(read as the weight of that mass)") in caught.value.hint
-    assert "'Temperature' is in kg" not in caught.value.hint
-    table, _ = read_table(write("hx711.csv", text), kind="engagement", columns={"force": "Value"})
-    np.testing.assert_allclose(table["force"], [1.5 * 9.80665, 2.5 * 9.80665])
-
-
 def test_a_log_of_two_sensors_read_in_turn_is_refused(write):
     # a real two-load-cell Arduino log in long format: once its value was named the force,
     # the left and right cells' readings were one zigzagging force signal
