@@ -34,6 +34,7 @@ from rich.markup import escape
 from rich.table import Table
 
 from pipeline.cli._output import console, json_ready
+from pipeline.cli.inspect import sample_rate, summary
 from pipeline.errors import ChainbenchError, ColumnError, SpecimensError
 from pipeline.runsheet import RUN_SHEET_NAME, resolve_inside
 
@@ -240,8 +241,6 @@ def run_kind(table: pd.DataFrame, metadata: TableMetadata) -> tuple[str, str]:
                              and roles & {"time", "cycle_count"}):
         return "wear", ("guessed: a section's length or elongation against the running "
                         "time or cycles, like a wear log")
-    from pipeline.cli.inspect import sample_rate
-
     rate = sample_rate(table)
     if "force" in table and not has_gauge and rate is not None and rate >= ENGAGEMENT_RATE_HZ:
         return "engagement", (f"guessed: time and force at {rate:.4g} Hz and no gauge "
@@ -353,8 +352,6 @@ def draft_run(path: Path, folder: Path, taken: set[str], specimen: str | None = 
         When the readers cannot read the file (:class:`~pipeline.errors.ColumnError`
         when they find no force column in it, and it is no wear log).
     """
-    from pipeline.cli.inspect import summary
-
     table, metadata = _read(path, "tensile", specimen=specimen)
     several = next((warning for warning in metadata.warnings
                     if "columns could be the force" in warning), None)

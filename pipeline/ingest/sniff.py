@@ -1056,10 +1056,12 @@ def find_table(
     _refuse_interleaved(rows[data:], kinds[data:], texts, names, name, data)
     if not _advancing(clocks, rows[data:data + TEXT_ROWS]) and not any(
             match_role(name) == "time" for name in names):
-        labelled = _labels_of_rows(rows[data:], kinds[data:], texts, names)
+        labelled = _labelled_rows(rows[data:], kinds[data:], texts, names)
         if labelled and (results_named := [column for column in names if says_result(column)]):
-            raise _results_error(labelled[0], results_named, name, data)
-        notes += labelled
+            raise _results_error(labelled, results_named, name, data)
+        if labelled:
+            notes += (f"{labelled}: the rows may be specimens (a table of results or "
+                      "settings), not the samples of one test",)
     return TableSpec(
         delimiter=delimiter,
         decimal="," if pairs else decimal,
@@ -1153,16 +1155,18 @@ _MIDNIGHT = re.compile(r"(?:(?<![\d:])0?0:00|12:00(?=(?::00(?:[.,]0*)?)?\s*AM$))
                        r"(?::00(?:[.,]0*)?)?(?:\s*AM)?$", re.IGNORECASE)
 
 
+#: The hint of a refused results table.
+_RESULTS_HINT = ("export the raw data of each specimen (time, force, extension), not the "
+                 "results table")
+
+
 def _results_error(labelled: str, results: list[str], name: str, data: int) -> LayoutError:
-    """The refusal of a table whose rows are labelled each their own (`labelled`, the
-    warning of :func:`_labels_of_rows`) under names of a test's results."""
+    """The refusal of a table whose rows are labelled each their own (`labelled`, as
+    :func:`_labelled_rows` says it) under names of a test's results."""
     shown = ", ".join(repr(result.strip()) for result in results[:3])
     return LayoutError(
-        f"{labelled.split(': the rows may be')[0]}, under names of results ({shown}): the "
-        "rows are specimens of a results table, not a test's raw data",
-        file=name, row=data + 1,
-        hint="export the raw data of each specimen (time, force, extension), not the "
-             "results table")
+        f"{labelled}, under names of results ({shown}): the rows are specimens of a results "
+        "table, not a test's raw data", file=name, row=data + 1, hint=_RESULTS_HINT)
 
 
 def _statistics_error(labels: list[str], name: str, data: int) -> LayoutError:
@@ -1170,9 +1174,7 @@ def _statistics_error(labels: list[str], name: str, data: int) -> LayoutError:
     return LayoutError(
         f"the rows under the names are statistics of a batch's results "
         f"({', '.join(labels[:4])}), not a test's raw data",
-        file=name, row=data + 1,
-        hint="export the raw data of each specimen (time, force, extension), not the "
-             "results table")
+        file=name, row=data + 1, hint=_RESULTS_HINT)
 
 
 def _clock_column(kind: str, index: int, names: list[str], rows: list[list[str]],
@@ -1264,13 +1266,13 @@ def _names_with_numbers(row: list[str], kind: str, decimal: str, width: int) -> 
 _FILE_NAME = re.compile(r"\.(?:tiff?|png|jpe?g|bmp|raw|dng)$", re.IGNORECASE)
 
 
-def _labels_of_rows(rows: list[list[str]], kinds: list[str], texts: frozenset[int],
-                    names: list[str]) -> tuple[str, ...]:
-    """The warning of a text column (of `texts`) that gives each of the head's first data
+def _labelled_rows(rows: list[list[str]], kinds: list[str], texts: frozenset[int],
+                   names: list[str]) -> str | None:
+    """What to say of a text column (of `texts`) that gives each of the head's first data
     `rows`, three at least, a label of its own (not an image's file name, as a DIC
     export's frames have), in a table without a time: such rows are likely specimens (a
     table of results or settings, a DAQ's gains per specimen), not the samples of one
-    test."""
+    test; None without one."""
     data = [row for row, kind in zip(rows, kinds, strict=False) if kind == "numeric"
             ][:TEXT_ROWS]
     for index in sorted(texts):
@@ -1280,9 +1282,8 @@ def _labels_of_rows(rows: list[list[str]], kinds: list[str], texts: frozenset[in
             name = names[index].strip() or f"column {index + 1}"
             shown = ", ".join(map(repr, cells[:3]))
             return (f"column {name!r} gives each row a label of its own ({shown}...) and no "
-                    "column is a time: the rows may be specimens (a table of results or "
-                    "settings), not the samples of one test",)
-    return ()
+                    "column is a time")
+    return None
 
 
 def _past_results(rows: list[list[str]], kinds: list[str], width: int, data: int,
