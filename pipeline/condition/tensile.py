@@ -46,6 +46,16 @@ GAUGE_LENGTH_TOLERANCE = 0.01
 #: lost decimal mark) divides by such a length.
 MIN_GAUGE_LENGTH = 1e-3
 
+#: A sample this many times larger than the channel's other samples (all but
+#: :data:`SPIKE_SHARE` of them), in magnitude, is no reading but a code a recorder writes
+#: when a sensor is over its range or drops out (Bluehill's 21474.8, 2^31 / 10^5; an
+#: infinity): a specimen never moves so far in one sample. A reading between zero and the
+#: others (the one sample before a hold) is never one.
+SPIKE_FACTOR = 100
+
+#: Largest share of a channel's samples that may be such codes: the rest set the scale.
+SPIKE_SHARE = 1e-3
+
 #: A gauge resting at its extreme while the force changes by more than this
 #: fraction of its range is saturated (clipped).
 CLIPPING_FORCE_FRACTION = 0.1
@@ -155,6 +165,38 @@ def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
     """Start and stop (exclusive) of each run of True in `mask`."""
     edges = np.diff(np.concatenate([[0], mask.astype(np.int8), [0]]))
     return list(zip(np.flatnonzero(edges == 1), np.flatnonzero(edges == -1), strict=True))
+
+
+def _spikes(values: np.ndarray) -> np.ndarray:
+    """Mask of the samples of `values` that are codes, not readings (:data:`SPIKE_FACTOR`),
+    in runs of at most :data:`MAX_NAN_RUN`: a longer run is a sensor at the end of its
+    range, which the channel cuts see (:func:`~pipeline.condition.breaks.find_removal`)."""
+    magnitude = np.abs(values)
+    allowed = max(1, int(values.size * SPIKE_SHARE))
+    ranked = np.sort(magnitude[~np.isnan(magnitude)])
+    if ranked.size <= allowed or ranked[-allowed - 1] == 0:
+        return np.zeros(values.size, dtype=bool)
+    spikes = magnitude > SPIKE_FACTOR * ranked[-allowed - 1]
+    for start, stop in _runs(spikes):
+        if stop - start > MAX_NAN_RUN:
+            spikes[start:stop] = False
+    return spikes
+
+
+def _blank_spikes(table: pd.DataFrame, columns: Mapping[str, str], warnings: list[str]
+                  ) -> pd.DataFrame:
+    """`table` with the samples of :func:`_spikes` in each of `columns` (canonical name ->
+    the file's) set to NaN, each told in `warnings`."""
+    for name, column in columns.items():
+        spikes = _spikes(table[name].to_numpy())
+        if spikes.any():
+            rows = ", ".join(str(row) for row in table.index[spikes][:5])
+            warnings.append(f"{column!r}: {int(spikes.sum())} sample(s) over {SPIKE_FACTOR} "
+                            "times larger than the channel's other readings "
+                            f"(sample {rows}): a code of a sensor over its range or dropping "
+                            "out, no reading: left out")
+            table.loc[spikes, name] = np.nan
+    return table
 
 
 def _drop_missing(table: pd.DataFrame, columns: list[str], warnings: list[str]) -> pd.DataFrame:
@@ -409,7 +451,10 @@ def condition_tensile(
     if not channels:
         raise SignalError("every gauge column is empty", hint="check the gauge column mapping")
     kept = (["time"] if "time" in table.columns else []) + ["force", *channels]
-    samples = _drop_missing(table[kept].astype(float), ["force", *channels], warnings)
+    samples = _blank_spikes(table[kept].astype(float),
+                            {"force": "force"} | {name: columns[name] for name in channels},
+                            warnings)
+    samples = _drop_missing(samples, ["force", *channels], warnings)
     force = samples["force"].to_numpy()
     zeroed = set()
     for name in channels:

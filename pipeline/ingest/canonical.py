@@ -674,7 +674,8 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
 
 
 #: Of several candidates for a role, the columns preferred, with why the others are not
-#: used: the testing machine's over a second instrument's; for a time, one named so over
+#: used: one that moves over one holding a value throughout (a net load never worked out,
+#: all zeros); the testing machine's over a second instrument's; for a time, one named so over
 #: one of a time unit only (a thrust stand's ``ESC signal (µs)``, a pulse width), and a
 #: time counted over clock readings (PASCO's ``Date and Time``, to the second); for a
 #: time or a count, the whole test's over one that starts again (a step's, a cycle's, one
@@ -682,6 +683,8 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
 #: for a force, the measured load over one turned to a kind of test's sign, the reading
 #: over a peak held, and one in a unit of force over one without.
 _PREFERRED = (
+    (None, lambda raw, at: not _constant(raw, at),
+     "holds one value in every row of the file: no signal, beside one that moves"),
     (None, lambda raw, at: not is_auxiliary(raw.names[at]),
      "is a second instrument's {role} beside the machine's"),
     (frozenset({"time"}), lambda raw, at: match_role(raw.names[at]) == "time",
@@ -698,6 +701,15 @@ _PREFERRED = (
     (frozenset({"force"}), lambda raw, at: unit_fits(raw.units[at], "force"),
      "has no unit of force beside one that has"),
 )
+
+
+def _constant(raw: RawColumns, index: int) -> bool:
+    """Whether column `index` holds one value in each of :data:`LONE_ROWS` rows or more of
+    the whole file; False when its readings are not at hand (a log read by ranges)."""
+    if not isinstance(raw, RawTable) or raw.rows < LONE_ROWS:
+        return False
+    array = raw.arrays[index]
+    return bool(np.fmin.reduce(array) == np.fmax.reduce(array))
 
 
 def _preferred(raw: RawColumns, live: list[int], role: str) -> list[int]:

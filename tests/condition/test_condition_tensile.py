@@ -119,6 +119,22 @@ def test_empty_gauge_column_is_left_out():
     assert "gauge_3" in run.warnings[0]
 
 
+def test_over_range_codes_in_a_gauge_are_left_out_and_the_cycles_stand():
+    """A simulated 18x64 test whose second extensometer writes two samples of Bluehill's
+    over-range code (21474.83648 mm, 2^31 / 10^5): they are no readings, so the run gives
+    the cycles of the same record without them, and says which samples it left out."""
+    truth = TensileTruth.for_chain("18x64")
+    table = simulate_tensile(truth, seed=4)
+    clean = condition_tensile(table.drop([300, 700]), truth.gauge_length,
+                              preload=truth.preload, n_cycles=3)
+    table.loc[[300, 700], "gauge_2"] = 2**31 / 1e5 * 1e-3
+    run = condition_tensile(table, truth.gauge_length, preload=truth.preload, n_cycles=3,
+                            columns={"gauge_2": "Strain 2"})
+    pd.testing.assert_frame_equal(run.cycles, clean.cycles)
+    assert "'Strain 2': 2 sample(s)" in run.warnings[0]
+    assert "(sample 300, 700)" in run.warnings[0]
+
+
 def bad(kind: str) -> pd.DataFrame:
     table = constructed_run("triangle")
     if kind == "nan":

@@ -382,6 +382,25 @@ def test_a_quantitys_symbol_before_its_unit_after_an_underscore(write):
     np.testing.assert_allclose(table["time"], [0.0, 0.1])
 
 
+def test_a_force_column_holding_zero_throughout_gives_way_to_the_one_that_moves(write):
+    # a LabVIEW tensile log's NLoad (a net load never worked out) reads 0.000000 in every
+    # row beside Load: it is no signal, so Load is the force; on fewer rows than it takes
+    # to tell, the two are still asked about
+    rows = "".join(f"0.000000\t{13.5 * i:.6f}\t{0.1 * i:.6f}\t{0.001 * i:.6f}\n"
+                   for i in range(12))
+    header = "NLoad\tLoad\tTime\tExt\n"
+    units = {"force": "lbf", "gauges": "in"}
+    table, meta = read_table(write("Lab10_spec1.dat", header + rows), units=units)
+    assert [(column.name, column.role) for column in meta.columns] == [
+        ("NLoad", None), ("Load", "force"), ("Time", "time"), ("Ext", "gauge_1")]
+    np.testing.assert_allclose(table["force"], 13.5 * np.arange(12) * 4.4482216152605)
+    assert ("column 'NLoad' holds one value in every row of the file: no signal, beside one "
+            "that moves ('Load'): not used") in meta.warnings[0]
+    short = header + "".join(rows.splitlines(keepends=True)[:9])
+    with pytest.raises(ColumnError, match="2 columns could be the force: 'NLoad', 'Load'"):
+        read_table(write("short.dat", short), units=units)
+
+
 def test_a_load_loggers_units_after_underscores_and_its_held_peak(write):
     # a real load-cell logger (HX711): '#' before every settings line, the units after an
     # underscore, and the peak held so far beside the reading
