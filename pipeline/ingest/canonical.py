@@ -681,7 +681,8 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
 #: time or a count, the whole test's over one that starts again (a step's, a cycle's, one
 #: since a counter's reset);
 #: for a force, the measured load over one turned to a kind of test's sign, the reading
-#: over a peak held, and one in a unit of force over one without.
+#: over a peak held; for a force or a time, one in a unit of the role over one without (a
+#: test stand's English ``temps``, its temperatures, beside ``elapsed (s)``).
 _PREFERRED = (
     (None, lambda raw, at: not _constant(raw, at),
      "holds one value in every row of the file: no signal, beside one that moves"),
@@ -700,6 +701,8 @@ _PREFERRED = (
      "is a peak held beside the reading itself"),
     (frozenset({"force"}), lambda raw, at: unit_fits(raw.units[at], "force"),
      "has no unit of force beside one that has"),
+    (frozenset({"time"}), lambda raw, at: unit_fits(raw.units[at], "time"),
+     "has no unit of time beside one that has"),
 )
 
 

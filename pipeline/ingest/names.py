@@ -268,7 +268,8 @@ SIGN_CONVENTION_WORDS = frozenset({"compressive", "tensile"})
 #: a pace of a quantity (a rowing machine's ``Stroke Rate (SPM)``, ``Pace``; a
 #: ``Load rate``, no load), a stress in Spanish (Bluehill's ``Tensión de tracción``: no
 #: chain's tension), a meter's setting of its display (a Keithley's ``Disp
-#: Digits``, no displacement). Such a column takes no role, not even from its unit.
+#: Digits``, no displacement), a logger's external input or trigger (a force plate's
+#: ``ExtIn1``, no extensometer). Such a column takes no role, not even from its unit.
 OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points count",
                         "reading count", "readings count", "scan count", "pip count", "temp",
                         "temperature", "temperatur", "température", "temperatura", "温度",
@@ -282,7 +283,8 @@ OTHER_QUANTITY_NAMES = ("sample count", "samples count", "point count", "points 
                         "displacement rate", "extension rate", "cycle rate", "pace", "digits",
                         "tensión de tracción", "tensión de compresión", "tensión de flexión",
                         "moment obrotowy", "momento torsor", "couple moteur", "扭矩", "トルク",
-                        "토크", "крутящий момент")
+                        "토크", "крутящий момент", "ext in", "ext trig", "external input",
+                        "external trigger")
 #: Words of another quantity only as written, with their accent: Spanish ``Tensión``, a
 #: stress (or a voltage), which without it is the English tension, a force.
 ACCENTED_OTHER_WORDS = frozenset({"tensión"})
@@ -487,6 +489,11 @@ def gauge_kind(name: str) -> str:
     return _best_match(name, _KIND_KEYWORDS) or "gauge"
 
 
+#: English temperatures named by their sensors' tags (a test stand's ``temps.T1``,
+#: ``temps_TC2``), which the French time, ``temps``, would otherwise claim.
+_TEMPERATURES = re.compile(r"temps\W*[a-z]{1,3}\W*\d+")
+
+
 def match_role(name: str) -> str | None:
     """The role a column name suggests, or None.
 
@@ -503,9 +510,12 @@ def match_role(name: str) -> str | None:
     (True, True)
     >>> match_role("SmallLVDT"), match_role("LoadCell")  # camel case, set apart
     ('gauge', 'force')
+    >>> match_role("Temps"), match_role("temps.T1"), match_role("ExtIn1")
+    ('time', None, None)
     """
-    if tokens(name)[-1:] == ("id",) or not ACCENTED_OTHER_WORDS.isdisjoint(
-            re.findall(r"\w+", unicodedata.normalize("NFC", name.casefold()))):
+    if (tokens(name)[-1:] == ("id",) or _TEMPERATURES.fullmatch(fold(name).strip())
+            or not ACCENTED_OTHER_WORDS.isdisjoint(
+                re.findall(r"\w+", unicodedata.normalize("NFC", name.casefold())))):
         return None
     role = _keyword(name)
     return (None if role in _NO_ROLE_LABELS or is_command(name) or is_derived(name)

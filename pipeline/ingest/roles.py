@@ -14,7 +14,7 @@ from pathlib import Path
 
 from pipeline.errors import ColumnError
 from pipeline.ingest.names import fold, is_unmeasured, match_role
-from pipeline.ingest.unitparse import unit_role
+from pipeline.ingest.unitparse import is_temperature_unit, unit_role
 
 #: Keys accepted in the run sheet's ``columns`` and ``units``, and the role each names.
 ROLE_KEYS = {
@@ -164,6 +164,8 @@ def find_candidates(
         if index in claimed:
             continue
         role = match_role(name) or (None if is_unmeasured(name) else unit_role(units[index]))
+        if is_temperature_unit(units[index]):
+            role = None  # a temperature, whatever its name (English temps, French time)
         if role == "gauge" and unit_role(units[index]) == "angle":
             role = "angle"  # a position in degrees is a rotary one (an encoder's)
         if role is not None and role not in explicit:

@@ -989,7 +989,8 @@ def find_table(
     names = split_fields(names_line, delimiter) if above >= 0 else [""] * width
     if delimiter == BLANKS:  # a script's names kept apart by a delimiter and blanks
         names = [name.rstrip(",;") for name in names]
-    pairs = (delimiter == "," and decimal == "." and 2 * len(names) == width
+    pairs = (delimiter == "," and decimal == "." and 2 * len(names) == width >= 4
+             and not _decimal_points(rows[data:data + TEXT_ROWS])
              and not _counts_rows(rows[data:data + TEXT_ROWS], kinds[data:data + TEXT_ROWS]))
     columns = width // 2 if pairs else width
     if len(names) > columns and not any(cell.strip() for cell in names[columns:]):
@@ -1505,6 +1506,12 @@ def _no_names_row(file: str, data: int, delimiter: str) -> LayoutError:
              + ", or name them in the run sheet by position, with their units: columns = "
                '{time = "column 1", force = "column 2"}, units = {time = "s", force = "kN"}',
     )
+
+
+def _decimal_points(rows: list[list[str]]) -> bool:
+    """Whether a cell of `rows` holds a decimal point: its numbers are not split at their
+    decimal comma."""
+    return any("." in cell for row in rows for cell in row)
 
 
 def _processing_row(rows: list[list[str]], kinds: list[str], index: int) -> bool:

@@ -277,6 +277,19 @@ def is_measure_unit(text: str) -> bool:
     return unit_fits(text, "force") or unit_fits(text, "length")
 
 
+def is_temperature_unit(text: str | None) -> bool:
+    """Whether some spelling of `text` is a unit of temperature (``"°C"``, ``"K"``).
+
+    >>> is_temperature_unit("°C"), is_temperature_unit("degF"), is_temperature_unit("s")
+    (True, True, False)
+    """
+    return any(ureg.parse_units(spelling).dimensionality == _TEMPERATURE
+               for spelling in spellings(text or ""))
+
+
+_TEMPERATURE = ureg.parse_units("K").dimensionality
+
+
 def unit_misfits(text: str | None, role: str) -> bool:
     """Whether `text` is a unit, and not one a column of `role` could be logged in.
 

@@ -78,6 +78,18 @@ def test_a_sample_number_beside_a_reading_is_no_decimal_comma_pair(write):
     np.testing.assert_allclose(table["force"], [1500.0, 1600.0, 1700.0])
 
 
+@pytest.mark.parametrize("data", [
+    "10,0\n9,3\n8,12\n6,20\n5,31\n",  # distances and forces in whole numbers
+    "0.05,12.4\n0.10,13.1\n0.15,14.0\n",  # decimal points: the comma only splits
+])
+def test_a_section_mark_over_two_columns_makes_no_decimal_comma_pairs(write, data):
+    # a real force-curve (FCV) file: a section mark, one field, over distance,force rows;
+    # 10,0 and 9,3 were joined as forces of 10.0 and 9.3
+    text = "Distance Units: mm\nForce    Units: gf\n\n[Recorded Forward]\n" + data
+    with pytest.raises(LayoutError, match="no names row above the first data row"):
+        read_table(write("example.fcv", text))
+
+
 def test_unsplittable_pairs(write):
     text = "time [s],force [kN],gauge [mm]\n0,5,1,25,0,01\n1,5,2,-25,0,02\n"
     with pytest.raises(LayoutError, match="cannot be split") as caught:

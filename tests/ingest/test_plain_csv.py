@@ -641,3 +641,27 @@ def test_a_status_line_narrower_than_the_data_is_no_names_row(write):
     table, meta = read_table(write("t.csv", "time [s],force [kN]\n0,1,7\n1,2,8\n"),
                              kind="engagement")
     np.testing.assert_allclose(table["force"], [1000.0, 2000.0])
+
+
+@pytest.mark.parametrize("names, time", [
+    # a rocket test stand's group.channel names: temps.T1 its thermocouple
+    ("time.elapsedTime (s),temps.T1,loads.L1 (N)", "time.elapsedTime"),
+    # its temperatures under the English plural, in a unit of temperature
+    ("elapsed (s),temps (°C),load (N)", "elapsed"),
+    # without a unit, beside a time that has one
+    ("elapsed (s),temps,load (N)", "elapsed"),
+])
+def test_english_temps_are_no_french_time(write, names, time):
+    text = names + "\n0.0,21.5,0\n0.1,21.6,40\n0.2,21.6,80\n0.3,21.7,40\n"
+    table, meta = read_table(write("testData.csv", text), kind="engagement")
+    assert [column.name for column in meta.columns if column.role == "time"] == [time]
+    np.testing.assert_allclose(table["time"], [0.0, 0.1, 0.2, 0.3])
+    assert not any("°C" in warning for warning in meta.warnings)
+
+
+def test_a_force_plates_external_inputs_are_no_extensometers(write):
+    # a force plate logger's trigger inputs, ExtIn1 and ExtIn2 (1 in every row), beside Fz
+    text = "Fz (N),ExtIn1,ExtIn2,Disp (mm)\n10,1,1,0.0\n20,1,1,0.1\n30,1,1,0.2\n"
+    _, meta = read_table(write("a05.csv", text), kind="tensile")
+    assert [(column.name, column.role) for column in meta.columns] == [
+        ("Fz", "force"), ("ExtIn1", None), ("ExtIn2", None), ("Disp", "gauge_1")]
