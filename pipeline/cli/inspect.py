@@ -90,19 +90,22 @@ def sample_rate(table: pd.DataFrame) -> float | None:
     """The log's sampling rate [Hz]: one over its mean time step, the gaps left out
     (steps over :data:`~pipeline.ingest.table.GAP_FACTOR` times the median), or None
     without time (or steps). Stamps rounded coarser than the steps (whole milliseconds,
-    one and two apart) give the rate of the rows, not of their median step; of a log whose
-    stamps mostly repeat with other readings (printed coarser than it samples: ten rows a
-    millisecond), its rows up to its last stamp over the time to it. Rows repeated whole
-    (a logger writing each sample thrice) are no samples."""
+    one and two apart) give the rate of the rows, not of their median step. Stamps that
+    repeat with other readings (a clock to the second at two rows a second, ten rows a
+    millisecond) count each row as a step: the rows between the first and the last change
+    of stamp, over the time between them. Rows repeated whole (a logger writing each
+    sample thrice) are no samples."""
     steps = _steps(table)
     if steps is None:
         return None
-    time = table["time"].to_numpy(dtype=float)
-    repeats = np.flatnonzero(np.diff(time) == 0) + 1
-    if repeats.size > steps.size and time[-1] > time[0]:
-        values = table.to_numpy(dtype=float)
-        if not np.all(values[repeats] == values[repeats - 1], axis=1).mean() > 0.5:
-            return float(np.flatnonzero(time == time[-1])[0] / (time[-1] - time[0]))
+    values = table.to_numpy(dtype=float)
+    every = np.diff(values[:, table.columns.get_loc("time")])
+    repeats = np.flatnonzero(every == 0) + 1
+    if repeats.size and not np.all(values[repeats] == values[repeats - 1], axis=1).mean() > 0.5:
+        changes = np.flatnonzero(every > 0)
+        between = every[changes[0] + 1:changes[-1] + 1]
+        if np.any(between > 0):
+            steps = between[between >= 0]
     return 1.0 / _mean_step(steps)
 
 
@@ -116,10 +119,11 @@ def _steps(table: pd.DataFrame) -> np.ndarray | None:
 
 
 def _mean_step(steps: np.ndarray) -> float:
-    """The mean of positive time `steps` [s], the gaps the reader reports left out."""
+    """The mean of time `steps` [s], the gaps the reader reports (over its factor times the
+    median positive step) left out."""
     from pipeline.ingest.table import GAP_FACTOR
 
-    return float(np.mean(steps[steps <= GAP_FACTOR * np.median(steps)]))
+    return float(np.mean(steps[steps <= GAP_FACTOR * np.median(steps[steps > 0])]))
 
 
 #: How far the mean time step (gaps left out) may lie from the median one before the rate

@@ -575,6 +575,9 @@ def detect_dialect(
 ) -> tuple[str, str, int]:
     """Find the delimiter and decimal mark that make the most rows numeric.
 
+    Blanks are tried only when no other delimiter makes half the rows numeric (they drop
+    empty cells): a table apart by blanks with decimal commas (``0,74 23,5``) has a row
+    or two that the commas split into numbers (``2,21 707,7``: 2, 21 707, 7).
     The dialect with the most numeric rows of one width wins, then the one that
     splits the line above its first numeric row (the names row) as wide, then the
     one reading more cells as numbers than as text, then the first in `delimiters`:
@@ -608,7 +611,7 @@ def detect_dialect(
     sample = [line for line in lines if line.strip()][-DIALECT_LINES:]
     best: tuple[tuple[int, bool, int], str, str, int] = ((0, False, 0), ",", ".", 0)
     for delimiter in delimiters:
-        if delimiter == BLANKS and best[0][0]:
+        if delimiter == BLANKS and 2 * best[0][0] >= len(sample):
             break  # blanks only when no delimiter gives a table: they drop empty cells
         rows = [split_fields(line, delimiter) for line in sample]
         if delimiter == ",":

@@ -226,9 +226,9 @@ def test_a_file_of_several_force_columns_is_skipped_saying_so_not_drafted_with_o
     # a results block left of the reading: 'Max force' was drafted as the run's force
     (tmp_path / "run1.csv").write_text(PLAIN)
     # with no force, a log of a gauge against time drafts a wear run: no guess either
-    (tmp_path / "pull.csv").write_text("Time (s),Max force (N),Min force (N),Force (N),"
-                                       "gauge [mm]\n" + "".join(f"{i},3.96,-1.15,{i / 10},{i}\n"
-                                                                for i in range(20)))
+    (tmp_path / "pull.csv").write_text(
+        "Time (s),Max force (N),Min force (N),Force (N),gauge [mm]\n"
+        + "".join(f"{i},{3.96 + i},{i - 1.15},{i / 10},{i}\n" for i in range(20)))
     result = init("--json", str(tmp_path))
     assert result.exit_code == 0, result.output
     document = json.loads(result.stdout)

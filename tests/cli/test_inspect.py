@@ -97,6 +97,19 @@ def test_stamps_coarser_than_the_samples_give_the_rows_rate(tmp_path):
     assert inspect_json(str(thrice))["sample_rate_hz"] == pytest.approx(1 / 0.013)
 
 
+def test_a_clock_to_the_second_gives_the_rows_rate_whole_seconds_counted(tmp_path):
+    # a real bending rig's log: a clock to the second, about two rows a second (stamps
+    # repeated in under half the rows), starting and ending within a second: 1 Hz was shown
+    seconds = [0, 1, 1, 2, 2, 3, 4, 4, 5, 5, 6, 6, 7, 8, 8, 9, 9, 10, 10, 11, 12, 12]
+    path = tmp_path / "1A_FLEX.csv"
+    path.write_text("time,deflection[mm],force[N]\n" + "".join(
+        f"15:03:{26 + second:02d},{row / 10},{load}\n"
+        for row, (second, load) in enumerate(zip(seconds, LOAD, strict=False))))
+    report = inspect_json(str(path))
+    # rows from the first change of stamp (second 1) to the last (second 12), over 11 s
+    assert report["sample_rate_hz"] == pytest.approx((seconds.index(12) - 1) / 11)
+
+
 @pytest.mark.parametrize("header", ["Cycles (kcycles)", "Cycles x1000"])
 def test_a_counter_in_a_unit_that_scales_it_is_told_as_a_run_would_refuse_it(tmp_path,
                                                                             header):
