@@ -575,9 +575,10 @@ def detect_dialect(
 ) -> tuple[str, str, int]:
     """Find the delimiter and decimal mark that make the most rows numeric.
 
-    Blanks are tried only when no other delimiter makes half the rows numeric (they drop
-    empty cells): a table apart by blanks with decimal commas (``0,74 23,5``) has a row
-    or two that the commas split into numbers (``2,21 707,7``: 2, 21 707, 7).
+    Blanks are tried only when no other delimiter makes half the rows numeric, and win
+    only with more than twice the numeric rows (they drop empty cells): a table apart by
+    blanks with decimal commas (``0,74 23,5``) has a row or two that the commas split into
+    numbers (``2,21 707,7``: 2, 21 707, 7).
     The dialect with the most numeric rows of one width wins, then the one that
     splits the line above its first numeric row (the names row) as wide, then the
     one reading more cells as numbers than as text, then the first in `delimiters`:
@@ -613,6 +614,7 @@ def detect_dialect(
     for delimiter in delimiters:
         if delimiter == BLANKS and 2 * best[0][0] >= len(sample):
             break  # blanks only when no delimiter gives a table: they drop empty cells
+        beaten = 2 * best[0][0] if delimiter == BLANKS else 0
         rows = [split_fields(line, delimiter) for line in sample]
         if delimiter == ",":
             rows = [row for row in rows if not _split_at_decimal_commas(row)]
@@ -624,7 +626,7 @@ def detect_dialect(
             fitting = [row for row in numeric if len(row) == width]
             score = (len(fitting), _names_as_wide(lines, delimiter, decimal, width),
                      sum(_balance(row, decimal) for row in fitting))
-            if score > best[0]:
+            if score > best[0] and score[0] > beaten:
                 best = (score, delimiter, decimal, width)
     if best[0][0] == 0:
         steady = steady_text_columns(lines, delimiters)
@@ -1020,10 +1022,12 @@ def find_table(
                "blanks or more)" if delimiter == BLANKS else ""),
         )
     if (0 < len(names) < columns and above >= 0 and units_index is None
-            and not any(match_role(cell) or split_name_unit(cell)[1] for cell in names)
+            and not any((match_role(cell) or split_name_unit(cell)[1])
+                        and not looks_like_clock(cell) for cell in names)
             and any(cell.strip() for row in rows[data:data + TEXT_ROWS]
                     for cell in row[len(names):columns])):
         # narrower than the data, naming nothing: a status or settings line, no names row
+        # (a logger's stamped message, "2025-01-17 13:06:21 - Load cell tared.", names none)
         preamble_end, above, names = data, -1, []
     if 0 < len(names) < columns and any(
             not is_missing(cell) for row in rows[data:data + TEXT_ROWS]
@@ -1560,12 +1564,14 @@ def _units_row(row: list[str], first_data: list[str], decimal: str, names: list[
     over text or clock readings are whatever the logger writes there (Graphtec:
     ``Time`` over its date and time, ``A1234567890`` over its alarms' states); a
     cell that repeats the name above it says the column has no unit (Instron
-    WaveMatrix: ``CycleCount`` under ``CycleCount``).
+    WaveMatrix: ``CycleCount`` under ``CycleCount``). A row over text or clock readings
+    only is none (a logger's stamped message, ``2025-01-17 13:06:26 - Testing started...``).
     """
-    return all(looks_like_unit(cell) or _repeats_name(cell, names, index)
-               for index, cell in enumerate(row)
-               if index >= len(first_data)
-               or not (is_missing(first_data[index]) or _over_text(first_data, index, decimal)))
+    return any(not _over_text(first_data, index, decimal) for index in range(len(row))) and all(
+        looks_like_unit(cell) or _repeats_name(cell, names, index)
+        for index, cell in enumerate(row)
+        if index >= len(first_data)
+        or not (is_missing(first_data[index]) or _over_text(first_data, index, decimal)))
 
 
 def _repeats_name(cell: str, names: list[str], index: int) -> bool:

@@ -665,3 +665,16 @@ def test_a_force_plates_external_inputs_are_no_extensometers(write):
     _, meta = read_table(write("a05.csv", text), kind="tensile")
     assert [(column.name, column.role) for column in meta.columns] == [
         ("Fz", "force"), ("ExtIn1", None), ("ExtIn2", None), ("Disp", "gauge_1")]
+
+
+def test_a_loggers_stamped_messages_are_no_names_and_units_rows(write):
+    # a real gas-spring rig's serial log: every line stamped, messages above the readings;
+    # "... - Load cell tared." was the names row (a force by its word Load) and
+    # "... - Testing started..." its units row
+    text = ("2025-01-17 13:06:19 - Parameters loaded from EEPROM.\n"
+            "2025-01-17 13:06:19 - 1000\n2025-01-17 13:06:21 - Load cell tared.\n"
+            "2025-01-17 13:06:26 - Testing started...\n"
+            + "".join(f"2025-01-17 13:06:{26 + i} - 0, {i / 100}, 255\n" for i in range(6)))
+    with pytest.raises(LayoutError, match="no names row above the first data row") as caught:
+        read_table(write("data_logger_3.txt", text))
+    assert caught.value.row == 5
