@@ -395,8 +395,8 @@ def split_name_unit(header: str) -> tuple[str, str | None]:
     separator = " / " if " / " in text else "/" if text.count("/") == 1 else None
     if separator:
         name, _, unit = text.rpartition(separator)
-        if name.strip() and spellings(unit) and not (
-                separator == "/" and _ends_in_unit_over(name, unit)):
+        if name.strip() and spellings(unit) and not (separator == "/" and (
+                _ends_in_unit_over(name, unit) or re.fullmatch(r"\s*\d+\s*", name))):
             return name.strip(), unit.strip()
     match = _COMMA_UNIT.fullmatch(text)
     if match is not None and spellings(match["unit"]):

@@ -1555,6 +1555,10 @@ def _filled_width(row: list[str]) -> int:
     return width
 
 
+#: The share of a units row's cells over numbers that must read as units when some do not.
+UNITS_SHARE = 2 / 3
+
+
 def _units_row(row: list[str], first_data: list[str], decimal: str, names: list[str]) -> bool:
     """Whether `row` is a units row under the names row `names`: a unit (or nothing) over
     every column of numbers.
@@ -1564,14 +1568,18 @@ def _units_row(row: list[str], first_data: list[str], decimal: str, names: list[
     over text or clock readings are whatever the logger writes there (Graphtec:
     ``Time`` over its date and time, ``A1234567890`` over its alarms' states); a
     cell that repeats the name above it says the column has no unit (Instron
-    WaveMatrix: ``CycleCount`` under ``CycleCount``). A row over text or clock readings
+    WaveMatrix: ``CycleCount`` under ``CycleCount``). Of a row of many, more than
+    :data:`UNITS_SHARE` of them will do, the others units the reader does not know and no
+    numbers (a wind-tunnel balance's ``steps``, ``degr._C`` beside ``Pa``, ``1/min``, ``/``). A row over text or clock readings
     only is none (a logger's stamped message, ``2025-01-17 13:06:26 - Testing started...``).
     """
-    return any(not _over_text(first_data, index, decimal) for index in range(len(row))) and all(
-        looks_like_unit(cell) or _repeats_name(cell, names, index)
-        for index, cell in enumerate(row)
-        if index >= len(first_data)
-        or not (is_missing(first_data[index]) or _over_text(first_data, index, decimal)))
+    over = [looks_like_unit(cell) or _repeats_name(cell, names, index)
+            for index, cell in enumerate(row)
+            if index >= len(first_data)
+            or not (is_missing(first_data[index]) or _over_text(first_data, index, decimal))]
+    return (any(not _over_text(first_data, index, decimal) for index in range(len(row)))
+            and (all(over) or UNITS_SHARE * len(over) < sum(over) and not any(
+                is_number(cell, decimal) for cell in row)))
 
 
 def _repeats_name(cell: str, names: list[str], index: int) -> bool:

@@ -69,8 +69,8 @@ def is_counter_unit(text: str | None) -> bool:
 #: Units-row cells that stand for no unit: Siglent oscilloscopes write ``Value`` over each
 #: channel beside ``Second`` over the time; a Campbell Scientific TOA5 file ``TS`` over its
 #: time stamp and ``RN`` over its record number; a Graphtec logger ``NO.`` over its sample
-#: number.
-NO_UNIT_CELLS = frozenset({"value", "ts", "rn", "no."})
+#: number; a wind-tunnel balance ``/`` over a run number or a Reynolds number.
+NO_UNIT_CELLS = frozenset({"value", "ts", "rn", "no.", "/"})
 
 #: A units-row cell over a sample counter that gives the interval between two samples
 #: (a Shimadzu export's ``X 200msec`` over ``Number``): the counter's step, not its unit.

@@ -1080,3 +1080,21 @@ def test_a_unit_alone_in_the_names_row_takes_the_name_over_it(write):
     assert {column.name: column.unit for column in meta.columns}["Time"] == "ms"
     assert "a unit alone in the names row is taken with the name over it: 'Time [ms]'" in (
         meta.warnings)
+
+
+def test_a_units_row_with_marks_and_words_the_reader_does_not_know_stays_one(write):
+    # a real wind-tunnel balance's export: '/' for no unit, 'degr._C', 'steps' beside Pa,
+    # 1/min and N; read as the names row, its '1/min' became a time in minutes
+    names = ["Run_nr", "Time", "Alpha", "Delta_Pb", "T", "B1", "B2", "Fx", "Fy", "rpm", "Re"]
+    units = ["/", "H:M:S", "degrees", "Pa", "degr._C", "steps", "steps", "N", "N", "1/min", "/"]
+    rows = [f"{run}\t16:{31 + run}:28\t{run - 3}\t401.4\t15.3\t120.6\t-2057.6\t{run}.5\t"
+            f"{run}.1\t471.9\t660951\n" for run in range(1, 6)]
+    text = "\t".join(names) + "\n" + "\t".join(units) + "\n" + "".join(rows)
+    table, meta = read_table(write("raw_test.txt", text), kind="engagement",
+                             columns={"force": "Fx"})
+    assert meta.header_line == 1 and meta.first_data_line == 3
+    assert [(column.name, column.role, column.unit) for column in meta.columns
+            if column.role] == [("Time", "time", "s"), ("Alpha", "angle", "degrees"),
+                                ("Fx", "force", "N")]
+    np.testing.assert_allclose(table["time"], [0.0, 60.0, 120.0, 180.0, 240.0])
+    np.testing.assert_allclose(table["force"], [1.5, 2.5, 3.5, 4.5, 5.5])

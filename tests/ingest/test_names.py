@@ -102,6 +102,7 @@ def test_every_listed_name_matches_its_own_role():
         ("wydłużenie [µm]", ("wydłużenie", "µm")),
         ("Kraft / kN", ("Kraft", "kN")),
         ("F/kN", ("F", "kN")),
+        ("1/min", ("1/min", None)),  # a unit alone, in a units row read as names: no "1"
         ("Speed/mm/s", ("Speed/mm/s", None)),
         ("Rig/Branch tension", ("Rig/Branch tension", None)),
         ("KRAFT <N>", ("KRAFT", "N")),
