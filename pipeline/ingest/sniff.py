@@ -1570,8 +1570,9 @@ def _units_row(row: list[str], first_data: list[str], decimal: str, names: list[
     cell that repeats the name above it says the column has no unit (Instron
     WaveMatrix: ``CycleCount`` under ``CycleCount``). Of a row of many, more than
     :data:`UNITS_SHARE` of them will do, the others units the reader does not know and no
-    numbers (a wind-tunnel balance's ``steps``, ``degr._C`` beside ``Pa``, ``1/min``, ``/``). A row over text or clock readings
-    only is none (a logger's stamped message, ``2025-01-17 13:06:26 - Testing started...``).
+    numbers (a wind-tunnel balance's ``steps``, ``degr._C`` beside ``Pa``, ``1/min``,
+    ``/``). A row over text or clock readings only is none (a logger's stamped message,
+    ``2025-01-17 13:06:26 - Testing started...``).
     """
     over = [looks_like_unit(cell) or _repeats_name(cell, names, index)
             for index, cell in enumerate(row)
