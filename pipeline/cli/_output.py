@@ -2,7 +2,8 @@
 
 Every text that comes from the user's inputs (file names, run-sheet keys, error
 messages quoting them) may hold square brackets, which rich would read as
-markup: it is escaped before it is printed (:func:`say`, :func:`emit`).
+markup: it is escaped before it is printed (:func:`say`, :func:`emit`). Nor are
+emoji codes read (a units cell ``H:M:S`` would show ``HⓂS``).
 """
 
 from __future__ import annotations
@@ -16,9 +17,9 @@ from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
 
-console = Console()
+console = Console(emoji=False)
 #: Messages of commands whose standard output is a JSON document go here.
-error_console = Console(stderr=True)
+error_console = Console(stderr=True, emoji=False)
 
 
 def say(tag: str, style: str, text: str, *, stderr: bool = False,

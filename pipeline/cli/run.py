@@ -537,7 +537,7 @@ class _Screen:
         """A console that keeps what is printed to it, rendered as for this screen."""
         return Console(file=_Recording(self.encoding), width=self.width,
                        color_system="truecolor" if self.coloured else None,
-                       force_terminal=self.coloured, legacy_windows=False)
+                       force_terminal=self.coloured, legacy_windows=False, emoji=False)
 
 
 class _Recording(io.StringIO):
@@ -589,7 +589,7 @@ def _processed(folder: Path, output_root: Path | None, force: bool, rehash: bool
         again = dataclasses.replace(result, redone=[], reused=list(result.run_files),
                                     removed=[])
         recorder = Console(file=io.StringIO(), width=screen.width, color_system=None,
-                           force_terminal=False, highlight=False)
+                           force_terminal=False, highlight=False, emoji=False)
         _print_result(again, out=recorder)
         write_rerun(result.output, sheet.path, result.inputs, recorder.file.getvalue(),
                     _result_json(again), 0 if again.ok else 1)

@@ -740,8 +740,10 @@ def _says_strain(name: str) -> bool:
 
 
 def _warn_misfit(raw: RawColumns, index: int, role: str) -> None:
+    si = "" if role == "cycle_count" else f" ({ROLE_SI_UNIT[role]})"  # a count has none
     raw.metadata.warnings.append(f"column {display_name(raw.names, index)!r}: unit "
-                                 f"{raw.units[index]!r} is not a unit of {role}: column not used")
+                                 f"{raw.units[index]!r} is not a unit of {role}{si}: column "
+                                 "not used")
 
 
 def _settle_units(

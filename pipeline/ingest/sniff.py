@@ -1568,12 +1568,15 @@ def _units_row(row: list[str], first_data: list[str], decimal: str, names: list[
     over text or clock readings are whatever the logger writes there (Graphtec:
     ``Time`` over its date and time, ``A1234567890`` over its alarms' states); a
     cell that repeats the name above it says the column has no unit (Instron
-    WaveMatrix: ``CycleCount`` under ``CycleCount``). Of a row of many, more than
+    WaveMatrix: ``CycleCount`` under ``CycleCount``). Letters in turn label channels
+    (:func:`_channel_letters`). Of a row of many, more than
     :data:`UNITS_SHARE` of them will do, the others units the reader does not know and no
     numbers (a wind-tunnel balance's ``steps``, ``degr._C`` beside ``Pa``, ``1/min``,
     ``/``). A row over text or clock readings only is none (a logger's stamped message,
     ``2025-01-17 13:06:26 - Testing started...``).
     """
+    if _channel_letters(row):
+        return False
     over = [looks_like_unit(cell) or _repeats_name(cell, names, index)
             for index, cell in enumerate(row)
             if index >= len(first_data)
@@ -1581,6 +1584,14 @@ def _units_row(row: list[str], first_data: list[str], decimal: str, names: list[
     return (any(not _over_text(first_data, index, decimal) for index in range(len(row)))
             and (all(over) or UNITS_SHARE * len(over) < sum(over) and not any(
                 is_number(cell, decimal) for cell in row)))
+
+
+def _channel_letters(row: list[str]) -> bool:
+    """Whether `row` labels channels by letters in turn (``t (s) | A | B | C | D``): no
+    units, though pint reads ``A`` as amperes and ``D`` as days."""
+    letters = [ord(cell.strip()) for cell in row
+               if len(cell.strip()) == 1 and cell.strip().isascii() and cell.strip().isalpha()]
+    return len(letters) >= 2 and all(b - a == 1 for a, b in zip(letters, letters[1:]))
 
 
 def _repeats_name(cell: str, names: list[str], index: int) -> bool:

@@ -249,3 +249,12 @@ def test_a_length_column_repeating_the_crosshead_shows_as_the_crosshead(tmp_path
     shown = runner.invoke(app, ["inspect", str(path)], env={"COLUMNS": "200"})
     assert ("note: 'Extension' moves with 'Crosshead' to the last digit, its zero and sign "
             "aside: one transducer written twice, counted as its kind") in shown.stdout
+
+
+def test_a_unit_between_colons_is_printed_as_written_not_as_an_emoji(tmp_path):
+    # a wind-tunnel balance's units row writes H:M:S over its clock: rich made it HⓂS
+    path = tmp_path / "raw_test.txt"
+    path.write_text("time [H:M:S],force [kN]\n0,1\n1,2\n2,3\n")
+    result = runner.invoke(app, ["inspect", str(path)], env={"COLUMNS": "200"})
+    assert "unit 'H:M:S' is not a unit of time" in result.output
+    assert "Ⓜ" not in result.output

@@ -461,7 +461,7 @@ def test_a_candidate_whose_unit_is_not_of_its_role_makes_no_ambiguity(write):
     table, meta = read_table(write("tracking.csv", TRACKING), kind="wear")
     np.testing.assert_allclose(table["force"], [4385.7, 4688.2])
     np.testing.assert_array_equal(table["cycle_count"], [1, 1])
-    assert "column 'Stress(8801:Load)': unit 'MPa' is not a unit of force: column not used" \
+    assert "column 'Stress(8801:Load)': unit 'MPa' is not a unit of force (N): column not used" \
         in meta.warnings
     assert ("column 'Cycle Energy': unit 'J' is not a unit of "
             "cycle_count: column not used") in meta.warnings
@@ -478,7 +478,7 @@ def test_speeds_none_of_which_fits_a_role_the_run_does_without_are_left_out(writ
     text = ("Time (s),Thrust (N),Motor Electrical Speed (RPM),Motor Optical Speed (RPM)\n"
             "0,1,1000,1010\n0.25,2,1500,1490\n0.5,3,1600,1610\n")
     _, meta = read_table(write("bench.csv", text), kind="engagement")
-    assert ("column 'Motor Optical Speed': unit 'RPM' is not a unit of speed: column not "
+    assert ("column 'Motor Optical Speed': unit 'RPM' is not a unit of speed (m/s): column not "
             "used") in meta.warnings
     assert not any("could be the speed" in warning for warning in meta.warnings)
 
@@ -1098,3 +1098,17 @@ def test_a_units_row_with_marks_and_words_the_reader_does_not_know_stays_one(wri
                                 ("Fx", "force", "N")]
     np.testing.assert_allclose(table["time"], [0.0, 60.0, 120.0, 180.0, 240.0])
     np.testing.assert_allclose(table["force"], [1.5, 2.5, 3.5, 4.5, 5.5])
+
+
+def test_channels_labelled_by_letters_in_turn_are_no_units_row(write):
+    # a real pressure rig's log: channels A to D under a one-word title; read as a units
+    # row (amperes, bytes, coulombs, days), D made the sensor's counts the time
+    text = ("log\nt (s) | A | B | C | D\n"
+            + "".join(f"{0.05 * (i + 1):.2f} | {33852 + i} | {35304 - i} | {70 + i} | 45244\n"
+                      for i in range(4)))
+    table, meta = read_table(write("trial1_raw.csv", text), kind="tensile", strict=False)
+    assert meta.header_line == 2
+    assert [(column.name, column.role, column.unit) for column in meta.columns][0] == (
+        "t", "time", "s")
+    assert all(column.role is None for column in meta.columns[1:])
+    np.testing.assert_allclose(table["time"], [0.05, 0.1, 0.15, 0.2])
