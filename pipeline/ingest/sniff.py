@@ -1591,7 +1591,7 @@ def _channel_letters(row: list[str]) -> bool:
     units, though pint reads ``A`` as amperes and ``D`` as days."""
     letters = [ord(cell.strip()) for cell in row
                if len(cell.strip()) == 1 and cell.strip().isascii() and cell.strip().isalpha()]
-    return len(letters) >= 2 and all(b - a == 1 for a, b in zip(letters, letters[1:]))
+    return len(letters) >= 2 and all(b - a == 1 for a, b in pairwise(letters))
 
 
 def _repeats_name(cell: str, names: list[str], index: int) -> bool:
