@@ -448,9 +448,11 @@ def build(
 
 
 #: Keys of a header that state how many rows the file holds, folded (IMADA's ``Data
-#: Quantity`` and ``DATA COUNT``, an oscilloscope's ``Record Length``).
+#: Quantity`` and ``DATA COUNT``, an oscilloscope's ``Record Length``, Kistler BioWare's
+#: ``Samples (#)``, once over each channel).
 STATED_ROWS_KEYS = frozenset({"data quantity", "data count", "record length",
-                              "number of points", "number of samples", "number of rows"})
+                              "number of points", "number of samples", "number of rows",
+                              "samples (#)"})
 
 
 def unlike_stated(preamble: Mapping[str, str], rows: int) -> list[str]:
@@ -458,7 +460,8 @@ def unlike_stated(preamble: Mapping[str, str], rows: int) -> list[str]:
     `rows` read (a file cut short at a line end shows no other sign), or fewer (a row
     past them is read as a sample: a Deben tester's end mark ``0,0,0,0,1,0,"0"``)."""
     for key, value in preamble.items():
-        text = value.strip().rstrip(",").strip()
+        said = set(value.replace(",", " ").split())  # one count, or the same over each channel
+        text = said.pop() if len(said) == 1 else ""
         if fold(key.strip()) not in STATED_ROWS_KEYS or not text.isdigit() or int(text) == rows:
             continue
         said = f"the header says {key.strip()} = {int(text)}, the file holds {rows} rows"

@@ -602,13 +602,15 @@ class TextLayout:
     name: str
     #: True when the sniffed head and table are of this layout
     matches: Callable[[Head, TableSpec], bool]
-    #: the free-text lines above the table are parsed into the metadata's preamble
+    #: the free-text lines above the table, and a table of results or settings passed over
+    #: there, are parsed into the metadata's preamble
     preamble: bool = False
 
     def header(self, head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawColumns:
         """The header of a file sniffed as `head` / `spec` in this layout (see
         :func:`text_header`)."""
-        preamble = parse_preamble(spec.preamble, spec.delimiter) if self.preamble else {}
+        preamble = (parse_preamble([*spec.preamble, *spec.passed], spec.delimiter)
+                    if self.preamble else {})
         return text_header(head, spec, self.name, preamble, columns)
 
     def read(self, head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTable:

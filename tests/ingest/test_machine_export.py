@@ -1112,3 +1112,19 @@ def test_channels_labelled_by_letters_in_turn_are_no_units_row(write):
         "t", "time", "s")
     assert all(column.role is None for column in meta.columns[1:])
     np.testing.assert_allclose(table["time"], [0.05, 0.1, 0.15, 0.2])
+
+
+def test_a_settings_table_passed_over_tells_the_rows_stated(write):
+    # a real Kistler BioWare export, cut short: its settings, one value over each channel,
+    # stand as a table above the names; they state 59118 samples, the file holds 4
+    settings = "".join(f"{key}:\t" + "\t".join([value] * 3) + "\n" for key, value in [
+        ("Device", "9260AA6"), ("Samples (#)", "59118"), ("Rate (Hz)", "1000.000000"),
+        ("First sample time (s)", "0.000000")])
+    text = ("BioWare Version 5.3.0.7 Export\n" + settings + "File Information\n"
+            "abs time (s)\tFx\tFy\tFz\n\tN\tN\tN\n"
+            + "".join(f"{i / 1000:.6f}\t0.1\t-0.2\t{i * 3.5}\n" for i in range(4)))
+    _, meta = read_table(write("KistlerCSV_example.txt", text), kind="engagement",
+                         columns={"force": "Fz"})
+    assert meta.preamble["Rate (Hz)"] == "1000.000000 1000.000000 1000.000000"
+    assert ("the header says Samples (#) = 59118, the file holds 4 rows: it may be cut short "
+            "(copy it again from the machine)") in meta.warnings
