@@ -645,7 +645,7 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
                     _warn_misfit(raw, index, role)
                 live = [index for index in live if index not in misfits]
         if role in _SINGLE and len(live) > 1 and role not in raw.candidates.explicit:
-            live = _preferred(raw, live, role)
+            live = _preferred(raw, live, role, kind)
         if role in raw.candidates.explicit and len(live) < len(indexes):
             dead = next(index for index in indexes if index in empty)
             problems.report(ColumnError(
@@ -677,18 +677,20 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
 
 
 #: Of several candidates for a role, the columns preferred, with why the others are not
-#: used: one that moves over one holding a value throughout (a net load never worked out,
-#: all zeros); the testing machine's over a second instrument's; for a time, one named so over
-#: one of a time unit only (a thrust stand's ``ESC signal (µs)``, a pulse width), and a
+#: used: for a force or a time a run uses, one that moves over one holding a value
+#: throughout (a net load never worked out, all zeros; a count may rest at one cycle, a
+#: tribometer's normal load at its setting); the testing machine's over a second
+#: instrument's; for a time, one named so over one of a time unit only (a thrust stand's ``ESC signal (µs)``, a pulse width), and a
 #: time counted over clock readings (PASCO's ``Date and Time``, to the second); for a
 #: time or a count, the whole test's over one that starts again (a step's, a cycle's, one
 #: since a counter's reset);
 #: for a force, the measured load over one turned to a kind of test's sign, the reading
 #: over a peak held; for a force or a time, one in a unit of the role over one without (a
 #: test stand's English ``temps``, its temperatures, beside ``elapsed (s)``).
+_MOVING = (frozenset({"force", "time"}), lambda raw, at: not _constant(raw, at),
+           "holds one value in every row of the file: no signal, beside one that moves")
 _PREFERRED = (
-    (None, lambda raw, at: not _constant(raw, at),
-     "holds one value in every row of the file: no signal, beside one that moves"),
+    _MOVING,
     (None, lambda raw, at: not is_auxiliary(raw.names[at]),
      "is a second instrument's {role} beside the machine's"),
     (frozenset({"time"}), lambda raw, at: match_role(raw.names[at]) == "time",
@@ -718,12 +720,14 @@ def _constant(raw: RawColumns, index: int) -> bool:
     return bool(np.fmin.reduce(array) == np.fmax.reduce(array))
 
 
-def _preferred(raw: RawColumns, live: list[int], role: str) -> list[int]:
+def _preferred(raw: RawColumns, live: list[int], role: str, kind: str) -> list[int]:
     """Of the columns `live` that could take a `role` one column takes, those of
     :data:`_PREFERRED` when some are and some are not; each column passed over is warned
-    of."""
-    for roles, keeps, why in _PREFERRED:
-        if roles is not None and role not in roles:
+    of. A column holding one value is passed over only for a role the `kind` of run uses
+    (a tribometer's normal load is one value, the friction force beside it no load)."""
+    for rule in _PREFERRED:
+        roles, keeps, why = rule
+        if roles is not None and role not in roles or rule is _MOVING and role not in USED[kind]:
             continue
         kept = [index for index in live if keeps(raw, index)]
         if not kept or len(kept) == len(live):
