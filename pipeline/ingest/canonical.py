@@ -680,8 +680,8 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
 #: used: for a force or a time a run uses, one that moves over one holding a value
 #: throughout (a net load never worked out, all zeros; a count may rest at one cycle, a
 #: tribometer's normal load at its setting); the testing machine's over a second
-#: instrument's; for a time, one named so over one of a time unit only (a thrust stand's ``ESC signal (µs)``, a pulse width), and a
-#: time counted over clock readings (PASCO's ``Date and Time``, to the second); for a
+#: instrument's; for a time, one named so over one of a time unit only (a thrust
+#: stand's ``ESC signal (µs)``, a pulse width), and a time counted over clock readings (PASCO's ``Date and Time``, to the second); for a
 #: time or a count, the whole test's over one that starts again (a step's, a cycle's, one
 #: since a counter's reset);
 #: for a force, the measured load over one turned to a kind of test's sign, the reading
