@@ -681,11 +681,11 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
 #: throughout (a net load never worked out, all zeros; a count may rest at one cycle, a
 #: tribometer's normal load at its setting); the testing machine's over a second
 #: instrument's; for a time, one named so over one of a time unit only (a thrust
-#: stand's ``ESC signal (µs)``, a pulse width), and a time counted over clock readings (PASCO's ``Date and Time``, to the second); for a
-#: time or a count, the whole test's over one that starts again (a step's, a cycle's, one
-#: since a counter's reset);
-#: for a force, the measured load over one turned to a kind of test's sign, the reading
-#: over a peak held; for a force or a time, one in a unit of the role over one without (a
+#: stand's ``ESC signal (µs)``, a pulse width), and a time counted over clock readings
+#: (PASCO's ``Date and Time``, to the second); for a time or a count, the whole test's
+#: over one that starts again (a step's, a cycle's, one since a counter's reset); for a
+#: force, the measured load over one turned to a kind of test's sign, the reading over a
+#: peak held; for a force or a time, one in a unit of the role over one without (a
 #: test stand's English ``temps``, its temperatures, beside ``elapsed (s)``).
 _MOVING = (frozenset({"force", "time"}), lambda raw, at: not _constant(raw, at),
            "holds one value in every row of the file: no signal, beside one that moves")
