@@ -645,7 +645,7 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
                     _warn_misfit(raw, index, role)
                 live = [index for index in live if index not in misfits]
         if role in _SINGLE and len(live) > 1 and role not in raw.candidates.explicit:
-            live = _preferred(raw, live, role, kind)
+            live = _preferred(raw, live, role, kind, role in sheet_units)
         if role in raw.candidates.explicit and len(live) < len(indexes):
             dead = next(index for index in indexes if index in empty)
             problems.report(ColumnError(
@@ -687,6 +687,11 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
 #: force, the measured load over one turned to a kind of test's sign, the reading over a
 #: peak held; for a force or a time, one in a unit of the role over one without (a
 #: test stand's English ``temps``, its temperatures, beside ``elapsed (s)``).
+#: The rules that go by the file's units: not for a role whose unit the run sheet gives.
+_UNITED = ((frozenset({"force"}), lambda raw, at: unit_fits(raw.units[at], "force"),
+            "has no unit of force beside one that has"),
+           (frozenset({"time"}), lambda raw, at: unit_fits(raw.units[at], "time"),
+            "has no unit of time beside one that has"))
 _MOVING = (frozenset({"force", "time"}), lambda raw, at: not _constant(raw, at),
            "holds one value in every row of the file: no signal, beside one that moves")
 _PREFERRED = (
@@ -704,10 +709,7 @@ _PREFERRED = (
      "is named as the load in one kind of test's sign, worked out from the measured one"),
     (frozenset({"force"}), lambda raw, at: not is_held_peak(raw.names, at),
      "is a peak held beside the reading itself"),
-    (frozenset({"force"}), lambda raw, at: unit_fits(raw.units[at], "force"),
-     "has no unit of force beside one that has"),
-    (frozenset({"time"}), lambda raw, at: unit_fits(raw.units[at], "time"),
-     "has no unit of time beside one that has"),
+    *_UNITED,
 )
 
 
@@ -720,14 +722,18 @@ def _constant(raw: RawColumns, index: int) -> bool:
     return bool(np.fmin.reduce(array) == np.fmax.reduce(array))
 
 
-def _preferred(raw: RawColumns, live: list[int], role: str, kind: str) -> list[int]:
+def _preferred(raw: RawColumns, live: list[int], role: str, kind: str, sheet_unit: bool
+               ) -> list[int]:
     """Of the columns `live` that could take a `role` one column takes, those of
     :data:`_PREFERRED` when some are and some are not; each column passed over is warned
     of. A column holding one value is passed over only for a role the `kind` of run uses
-    (a tribometer's normal load is one value, the friction force beside it no load)."""
+    (a tribometer's normal load is one value, the friction force beside it no load); the
+    file's units do not choose when the run sheet gives the role's (`sheet_unit`)."""
     for rule in _PREFERRED:
         roles, keeps, why = rule
-        if roles is not None and role not in roles or rule is _MOVING and role not in USED[kind]:
+        if (roles is not None and role not in roles
+                or rule is _MOVING and role not in USED[kind]
+                or rule in _UNITED and sheet_unit):
             continue
         kept = [index for index in live if keeps(raw, index)]
         if not kept or len(kept) == len(live):

@@ -678,3 +678,14 @@ def test_a_loggers_stamped_messages_are_no_names_and_units_rows(write):
     with pytest.raises(LayoutError, match="no names row above the first data row") as caught:
         read_table(write("data_logger_3.txt", text))
     assert caught.value.row == 5
+
+
+def test_the_files_units_do_not_choose_a_time_whose_unit_the_run_sheet_gives(write):
+    # the run sheet's unit is for the column the file left without one, maybe: which that
+    # is, only the run sheet's columns can say
+    text = "elapsed (s),time,load (N)\n0.0,0,0\n0.1,100,40\n0.2,200,80\n"
+    with pytest.raises(ColumnError, match="2 columns could be the time: 'elapsed', 'time'"):
+        read_table(write("testData.csv", text), kind="engagement", units={"time": "ms"})
+    table, _ = read_table(write("testData.csv", text), kind="engagement",
+                          columns={"time": "time"}, units={"time": "ms"})
+    np.testing.assert_allclose(table["time"], [0.0, 0.1, 0.2])
