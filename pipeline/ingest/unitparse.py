@@ -147,14 +147,19 @@ def spellings(text: str) -> list[str]:
         return []
     since = _SINCE.fullmatch(text)  # a clock's count from an epoch: its unit
     text = since["unit"] if since else "microstrain" if _MILLIONTHS.fullmatch(text) else text
-    if not _parses(text):  # a product written with hyphens (a rheometer's Pa-s, N-m), a
-        # square without its caret (kg/cm2), a gauge or absolute pressure's mark (bar(g))
+    if not _parses(text):  # a weight's force written out (gram-force, pound force), a
+        # product written with hyphens (a rheometer's Pa-s, N-m), a square without its caret
+        # (kg/cm2), a gauge or absolute pressure's mark (bar(g))
+        text = _FORCE_OF_WEIGHT.sub(r"\1_force", text)
         text = _PRESSURE_MARK.sub("", _SQUARE.sub(r"\1^\2", _HYPHEN.sub("*", text)))
     candidates = [text]
     if not _parses(text) or _case_says_nothing(text):
         candidates += [text.lower(), text[:1].lower() + text[1:]]
     return [spelling for spelling in dict.fromkeys(candidates) if spelling and _parses(spelling)]
 
+
+#: The force of a weight written out, its words apart (``gram-force``, ``pound force``).
+_FORCE_OF_WEIGHT = re.compile(r"\b(gram|kilogram|pound)[-\s]force\b", re.IGNORECASE)
 
 #: A word and a number apart at the end of a text: a channel's name and number.
 _CHANNEL_NUMBER = re.compile(r"[^\W\d_]\s+\d+$")

@@ -42,6 +42,9 @@ def factor(text, role):
         ("毫米", "gauge", 1e-3), ("微米", "gauge", 1e-6),
         # a fibre tester's gram-force
         ("gmf", "force", 1e-3 * STANDARD_GRAVITY), ("gf", "force", 1e-3 * STANDARD_GRAVITY),
+        # the force of a weight written out (a switch tester's gram-force)
+        ("gram-force", "force", 1e-3 * STANDARD_GRAVITY), ("pound force", "force", 4.4482216152605),
+        ("kilogram-force", "force", STANDARD_GRAVITY),
     ],
 )
 def test_si_factor(unit, role, expected):
