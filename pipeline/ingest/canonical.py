@@ -676,28 +676,33 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
     return assigned
 
 
-#: Of several candidates for a role, the columns preferred, with why the others are not
-#: used: for a force or a time a run uses, one that moves over one holding a value
-#: throughout (a net load never worked out, all zeros; a count may rest at one cycle, a
-#: tribometer's normal load at its setting); the testing machine's over a second
-#: instrument's; for a time, one named so over one of a time unit only (a thrust
-#: stand's ``ESC signal (µs)``, a pulse width), and a time counted over clock readings
-#: (PASCO's ``Date and Time``, to the second); for a time or a count, the whole test's
-#: over one that starts again (a step's, a cycle's, one since a counter's reset); for a
-#: force, the measured load over one turned to a kind of test's sign, the reading over a
-#: peak held; for a force or a time, one in a unit of the role over one without (a
-#: test stand's English ``temps``, its temperatures, beside ``elapsed (s)``).
 #: The rules that go by the file's units: not for a role whose unit the run sheet gives.
 _UNITED = ((frozenset({"force"}), lambda raw, at: unit_fits(raw.units[at], "force"),
             "has no unit of force beside one that has"),
            (frozenset({"time"}), lambda raw, at: unit_fits(raw.units[at], "time"),
             "has no unit of time beside one that has"))
+#: A column that moves over one holding a value (:func:`_constant`).
 _MOVING = (frozenset({"force", "time"}), lambda raw, at: not _constant(raw, at),
            "holds one value in every row of the file: no signal, beside one that moves")
+
+
+#: Of several candidates for a role, the columns preferred, with why the others are not
+#: used: for a force or a time a run uses, one that moves over one holding a value
+#: throughout (a net load never worked out, all zeros; a count may rest at one cycle, a
+#: tribometer's normal load at its setting); the testing machine's over a second
+#: instrument's; for a force or a time, one in a unit of the role over one without (a
+#: test stand's English ``temps``, its temperatures, beside ``elapsed (s)``; an insole's
+#: clock beside its steps' ``Contact_time``); for a time, one named so over one of a
+#: time unit only (a thrust stand's ``ESC signal (µs)``, a pulse width), and a time
+#: counted over clock readings (PASCO's ``Date and Time``, to the second); for a time or
+#: a count, the whole test's over one that starts again (a step's, a cycle's, one since a
+#: counter's reset); for a force, the measured load over one turned to a kind of test's
+#: sign, the reading over a peak held.
 _PREFERRED = (
     _MOVING,
     (None, lambda raw, at: not is_auxiliary(raw.names[at]),
      "is a second instrument's {role} beside the machine's"),
+    *_UNITED,
     (frozenset({"time"}), lambda raw, at: match_role(raw.names[at]) == "time",
      "has a unit of time but no name of one, beside a column named as the time"),
     (frozenset({"time"}), lambda raw, at: at not in raw.clocks,
@@ -709,7 +714,6 @@ _PREFERRED = (
      "is named as the load in one kind of test's sign, worked out from the measured one"),
     (frozenset({"force"}), lambda raw, at: not is_held_peak(raw.names, at),
      "is a peak held beside the reading itself"),
-    *_UNITED,
 )
 
 

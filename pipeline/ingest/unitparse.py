@@ -105,8 +105,9 @@ def is_micro_alone(text: str | None) -> bool:
 #: (:data:`MICRO_ALONE`); a ton, pint's US short ton (2000 lb) where a Spanish, Korean or
 #: Brazilian machine's ``Carga (ton)`` means the metric tonne-force, 10 % more.
 AMBIGUOUS_UNITS = {**dict.fromkeys(AMBIGUOUS_MICRO, MICRO_ALONE),
-                   **dict.fromkeys(("ton", "tons"), "a ton, the metric tonne (write t or tf), "
-                                   "the US short ton of 2000 lb or the UK long ton of 2240 lb")}
+                   **dict.fromkeys(("ton", "tons", "tonf"),
+                                   "a ton, the metric tonne (write t or tf), the US short ton "
+                                   "of 2000 lb or the UK long ton of 2240 lb")}
 
 
 def ambiguity(text: str | None) -> str | None:
@@ -362,8 +363,8 @@ _BRIDGE_OUTPUT = re.compile(r"V\s*/\s*V")
 def looks_like_unit(text: str) -> bool:
     """True if `text` reads as a unit cell of a units row (``"(mm)"``, ``"Sec"``, ``""``)."""
     stripped = text.strip()
-    if not stripped or stripped.lower() in COUNTER_UNITS | NO_UNIT_CELLS:
-        return True
+    if not stripped or stripped.lower() in COUNTER_UNITS | NO_UNIT_CELLS or ambiguity(stripped):
+        return True  # an ambiguous unit (ton) is one, refused later with its meanings
     if is_sample_interval(stripped):
         return True
     if stripped[0] + stripped[-1] in ("()", "[]"):

@@ -1128,3 +1128,22 @@ def test_a_settings_table_passed_over_tells_the_rows_stated(write):
     assert meta.preamble["Rate (Hz)"] == "1000.000000 1000.000000 1000.000000"
     assert ("the header says Samples (#) = 59118, the file holds 4 rows: it may be cut short "
             "(copy it again from the machine)") in meta.warnings
+
+
+@pytest.mark.parametrize(("unit", "newtons"), [("kp", STANDARD_GRAVITY), ("ton", None)])
+def test_a_units_row_with_a_kilopond_or_a_ton_stays_the_units_row(write, unit, newtons):
+    # an MTS Criterion export under a DAQ preamble, its load in kp (a kilopond, kgf) or in
+    # ton: not read as a unit, the units row became the names row ('ton' named the load)
+    text = ("Test: Tension Test\nTest Run: Test Run 3\n\nCrosshead\tLoad\tTime\n"
+            f"mm\t{unit}\tsec\n" + "".join(f"{i * 0.1:.3f}\t{i * 0.5:.3f}\t{i}\n"
+                                          for i in range(5)))
+    path = write("DAQ- Crosshead, Load - (Timed).txt", text)
+    if newtons is None:
+        with pytest.raises(UnitError, match="a ton, the metric tonne") as caught:
+            read_table(path)
+        assert caught.value.column == "Load"
+        return
+    table, meta = read_table(path)
+    assert [(column.name, column.unit) for column in meta.columns] == [
+        ("Crosshead", "mm"), ("Load", unit), ("Time", "sec")]
+    np.testing.assert_allclose(table["force"], 0.5 * np.arange(5) * newtons)

@@ -689,3 +689,13 @@ def test_the_files_units_do_not_choose_a_time_whose_unit_the_run_sheet_gives(wri
     table, _ = read_table(write("testData.csv", text), kind="engagement",
                           columns={"time": "time"}, units={"time": "ms"})
     np.testing.assert_allclose(table["time"], [0.0, 0.1, 0.2])
+
+
+def test_a_clock_beats_a_time_without_a_unit(write):
+    # a smart insole's app export: its clock beside each step's Contact_time (ms, no unit,
+    # up and down), which was taken as the time, read as seconds "counted"
+    text = ("App_time;Insole_timer;Contact_time;S0_force (N)\n19:58:24.290;0;880;94\n"
+            "19:58:25.308;1220;680;108\n19:58:26.309;2230;660;114\n")
+    table, meta = read_table(write("insole.csv", text), kind="engagement")
+    assert [column.name for column in meta.columns if column.role == "time"] == ["App_time"]
+    np.testing.assert_allclose(table["time"], [0.0, 1.018, 2.019])
