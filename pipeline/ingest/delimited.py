@@ -77,7 +77,7 @@ from pipeline.ingest.names import fold, header_text, match_role, split_name_unit
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import Candidates, display_name, find_candidates
-from pipeline.ingest.sniff import Head, TableSpec, require_names, split_fields
+from pipeline.ingest.sniff import Head, TableSpec, is_number, require_names, split_fields
 from pipeline.ingest.table import TableMetadata
 from pipeline.ingest.textbody import (
     Region,
@@ -595,6 +595,19 @@ def read_contiguous(head: Head, spec: TableSpec, header: RawColumns) -> RawTable
     return raw_table(parsed, region, header)
 
 
+def _settings(lines: list[str], spec: TableSpec) -> list[str]:
+    """The lines of a table passed over above the data that each give a setting: a name,
+    then one value over every channel (Kistler BioWare's ``Samples (#):``, ``59118`` in
+    each column); not a batch's results, one row a specimen."""
+    found = []
+    for line in lines:
+        name, *cells = (cell.strip() for cell in split_fields(line, spec.delimiter))
+        values = {cell for cell in cells if cell}
+        if name and not is_number(name, spec.decimal) and len(values) == 1:
+            found.append(line)
+    return found
+
+
 @dataclass(frozen=True)
 class TextLayout:
     """A delimited-text layout: its name, how it is recognised, whether it has a preamble."""
@@ -602,15 +615,15 @@ class TextLayout:
     name: str
     #: True when the sniffed head and table are of this layout
     matches: Callable[[Head, TableSpec], bool]
-    #: the free-text lines above the table, and a table of results or settings passed over
-    #: there, are parsed into the metadata's preamble
+    #: the free-text lines above the table, and the settings of a table passed over there
+    #: (:func:`_settings`), are parsed into the metadata's preamble
     preamble: bool = False
 
     def header(self, head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawColumns:
         """The header of a file sniffed as `head` / `spec` in this layout (see
         :func:`text_header`)."""
-        preamble = (parse_preamble([*spec.preamble, *spec.passed], spec.delimiter)
-                    if self.preamble else {})
+        preamble = (parse_preamble([*spec.preamble, *_settings(spec.passed, spec)],
+                                   spec.delimiter) if self.preamble else {})
         return text_header(head, spec, self.name, preamble, columns)
 
     def read(self, head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTable:
