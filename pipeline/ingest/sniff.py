@@ -1389,8 +1389,8 @@ def _settings_beside(rows: list[list[str]], decimal: str, columns: int,
             continue
         cells = [row[column].strip() if column < len(row) else "" for row in rows]
         filled = [cell for cell in cells if not is_missing(cell)]
-        reach = max((count + 1 for count, cell in enumerate(cells) if not is_missing(cell)),
-                    default=0)  # the rows down to the last filled one
+        reach = max((count + 1 for count, cell in enumerate(cells) if cell), default=0)
+        # the rows down to the last one written: an N/A below says the column goes on
         if (len(filled) >= SETTINGS_BESIDE_ROWS and reach + SETTINGS_BESIDE_ROWS <= len(cells)
                 and not any(is_number(cell, decimal) for cell in filled)):
             beside.append((column, reach))

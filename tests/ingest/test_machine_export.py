@@ -1054,6 +1054,11 @@ def test_a_comment_column_filled_to_the_end_of_the_head_is_no_setting(write):
     _, meta = read_table(write("log.csv", "\n".join(lines).replace("Comments", "Setting")
                                + "\n"), kind="engagement")
     assert any("settings written beside" in warning for warning in meta.warnings)
+    # a material written on the first rows and N/A below: the column goes on
+    lines = ["time [s],force [kN],material_type", *(f"{i},{i * 2},PLA" for i in range(3)),
+             *(f"{i},{i * 2},N/A" for i in range(3, 12))]
+    _, meta = read_table(write("log.csv", "\n".join(lines) + "\n"), kind="engagement")
+    assert not any("settings written beside" in warning for warning in meta.warnings)
 
 
 def test_a_units_row_repeating_a_name_gives_that_column_no_unit(write):
