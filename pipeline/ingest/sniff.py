@@ -1065,7 +1065,10 @@ def find_table(
     if not _advancing(clocks, rows[data:data + TEXT_ROWS]) and not any(
             match_role(name) == "time" for name in names):
         labelled = _labelled_rows(rows[data:], kinds[data:], texts, names)
-        if labelled and (results_named := [column for column in names if says_result(column)]):
+        results_named = [column for column in names if says_result(column)]
+        if not labelled and len(results_named) >= 2:  # specimens numbered, not labelled
+            labelled = _numbered_rows(rows[data:], kinds[data:], names)
+        if labelled and results_named:
             raise _results_error(labelled, results_named, name, data)
         if labelled:
             notes += (f"{labelled}: the rows may be specimens (a table of results or "
@@ -1290,6 +1293,22 @@ def _labelled_rows(rows: list[list[str]], kinds: list[str], texts: frozenset[int
             name = names[index].strip() or f"column {index + 1}"
             shown = ", ".join(map(repr, cells[:3]))
             return (f"column {name!r} gives each row a label of its own ({shown}...) and no "
+                    "column is a time")
+    return None
+
+
+def _numbered_rows(rows: list[list[str]], kinds: list[str], names: list[str]) -> str | None:
+    """What to say of a column that numbers the head's first data `rows`, three at least,
+    one by one (a results table's ``no.``: 1, 2, 3...), or None. A log numbers its samples
+    so too: only beside names of results does it make the rows specimens."""
+    data = [row for row, kind in zip(rows, kinds, strict=False) if kind == "numeric"
+            ][:TEXT_ROWS]
+    for index in range(min(map(len, data), default=0)):
+        cells = [row[index].strip() for row in data]
+        if (len(cells) >= 3 and all(cell.isdigit() for cell in cells)
+                and all(int(b) - int(a) == 1 for a, b in pairwise(cells))):
+            name = names[index].strip() or f"column {index + 1}"
+            return (f"column {name!r} numbers the rows ({', '.join(cells[:3])}...) and no "
                     "column is a time")
     return None
 

@@ -252,6 +252,22 @@ def test_a_results_table_of_specimens_dated_at_midnight_is_refused_as_such(write
     assert not any("label of its own" in warning for warning in meta.warnings)
 
 
+def test_a_results_table_of_numbered_specimens_is_refused_as_such(write):
+    # a real filament lab's table: specimens numbered 1, 2, 3 in 'no.', their results
+    # beside; its max_force_N was taken as the force channel
+    text = ("no.,width_mm,max_force_N,tensile_break_Mpa,elongation_at_break,modulus_Mpa\n"
+            "1,10,50.76,6.94,573.4,94.4\n2,10,44.5,5.485,545.1,95.4\n"
+            "3,10,44.25,6.193,531.4,87.6\n4,10,39.05,5.485,545.1,73.6\n")
+    with pytest.raises(LayoutError, match=r"column 'no.' numbers the rows \(1, 2, 3...\) .* "
+                                          r"under names of results"):
+        read_table(write("tensile_data.csv", text), kind="tensile")
+    # a log numbering its samples, without a time, beside one name of a result is read
+    log = ("No.,Force (N),Extension (mm),Modulus (MPa)\n"
+           + "".join(f"{i},{i * 2},{i / 100},0\n" for i in range(1, 6)))
+    table, _ = read_table(write("log.csv", log), kind="tensile")
+    np.testing.assert_allclose(table["force"], [2.0, 4.0, 6.0, 8.0, 10.0])
+
+
 def test_an_arduino_clock_call_names_the_time_and_its_unit(write):
     # an HX711 thrust stand's serial log: millis() beside the thrust in grams (its weight)
     text = "millis,Thrust (g)\n1278,-0.1\n1373,12.4\n1468,25.0\n"
