@@ -5,7 +5,9 @@
 
 - checks the record (NaN stretches, saturated gauges) and raises a
   :class:`~pipeline.errors.SignalError` with a hint when it is unfit; time is
-  not needed (the readers warn of repeated or reset time stamps);
+  not needed (the readers warn of repeated or reset time stamps); sets aside,
+  with a warning, the samples that are a recorder's over-range codes, not
+  readings (:data:`SPIKE_FACTOR`);
 - finds a fracture and leaves everything after it out
   (:mod:`pipeline.condition.breaks`), and cuts each channel where it stopped
   following the specimen (an extensometer taken off);
