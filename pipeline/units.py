@@ -12,9 +12,8 @@ import pint
 
 ureg = pint.UnitRegistry()
 # Laboratory spellings pint does not know by default.
-ureg.define("@alias kilogram_force = kG = KG")
-# "kp" (the kilopond, older European machines' kilogram-force).
-ureg.define("@alias kilogram_force = kp")
+# "kp": the kilopond, older European machines' kilogram-force.
+ureg.define("@alias kilogram_force = kG = KG = kp")
 # "gmf" (gram-force, as Dia-Stron's fibre testers write it).
 ureg.define("@alias gram_force = gmf")
 # "seg" (Spanish, Portuguese, Italian), "sek" (German, Polish, Scandinavian): seconds.

@@ -98,9 +98,9 @@ def sample_rate(table: pd.DataFrame) -> float | None:
     steps = _steps(table)
     if steps is None:
         return None
-    values = table.to_numpy(dtype=float)
-    every = np.diff(values[:, table.columns.get_loc("time")])
+    every = np.diff(table["time"].to_numpy(dtype=float))
     repeats = np.flatnonzero(every == 0) + 1
+    values = table.to_numpy(dtype=float) if repeats.size else None  # only then: rows whole
     if repeats.size and not np.all(values[repeats] == values[repeats - 1], axis=1).mean() > 0.5:
         changes = np.flatnonzero(every > 0)
         between = every[changes[0] + 1:changes[-1] + 1]

@@ -460,8 +460,8 @@ def unlike_stated(preamble: Mapping[str, str], rows: int) -> list[str]:
     `rows` read (a file cut short at a line end shows no other sign), or fewer (a row
     past them is read as a sample: a Deben tester's end mark ``0,0,0,0,1,0,"0"``)."""
     for key, value in preamble.items():
-        said = set(value.replace(",", " ").split())  # one count, or the same over each channel
-        text = said.pop() if len(said) == 1 else ""
+        counts = set(value.replace(",", " ").split())  # one, or the same over each channel
+        text = counts.pop() if len(counts) == 1 else ""
         if fold(key.strip()) not in STATED_ROWS_KEYS or not text.isdigit() or int(text) == rows:
             continue
         said = f"the header says {key.strip()} = {int(text)}, the file holds {rows} rows"

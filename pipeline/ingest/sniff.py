@@ -26,7 +26,7 @@ import unicodedata
 from collections import Counter
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from itertools import groupby, islice, pairwise
+from itertools import groupby, pairwise
 from pathlib import PureWindowsPath
 
 import pyarrow.csv as pacsv
@@ -1112,8 +1112,7 @@ def _refuse_interleaved(rows: list[list[str]], kinds: list[str], texts: frozense
     the same few labels over and over (``Left``, ``Right``, ``Left``...): each row a
     reading of another sensor (a long-format log), which read as one channel would zigzag
     between them."""
-    data_rows = [row for row, kind in zip(rows, kinds, strict=False) if kind == "numeric"
-                 ][:TEXT_ROWS]
+    data_rows = _head_data(rows, kinds)
     for index in sorted(texts):
         cells = [row[index].strip() for row in data_rows]
         labels = list(dict.fromkeys(cells))
@@ -1235,8 +1234,7 @@ def _text_columns(rows: list[list[str]], kinds: list[str], columns: int, decimal
     of `rows`, two at least (neither numbers, clock readings of a form read nor missing
     values: ``3/5/2024 2:03:27 PM`` is text)."""
     texts = set(range(columns))
-    data = list(islice((row for row, kind in zip(rows, kinds, strict=False)
-                        if kind == "numeric"), TEXT_ROWS))
+    data = _head_data(rows, kinds)
     for row in data:
         texts = {index for index in texts if index < len(row) and not (
             is_number(row[index], decimal) or is_missing(row[index])
@@ -1277,6 +1275,12 @@ def _names_with_numbers(row: list[str], kind: str, decimal: str, width: int) -> 
 _FILE_NAME = re.compile(r"\.(?:tiff?|png|jpe?g|bmp|raw|dng)$", re.IGNORECASE)
 
 
+def _head_data(rows: list[list[str]], kinds: list[str]) -> list[list[str]]:
+    """The first :data:`TEXT_ROWS` rows of numbers of `rows`."""
+    return [row for row, kind in zip(rows, kinds, strict=False) if kind == "numeric"
+            ][:TEXT_ROWS]
+
+
 def _labelled_rows(rows: list[list[str]], kinds: list[str], texts: frozenset[int],
                    names: list[str]) -> str | None:
     """What to say of a text column (of `texts`) that gives each of the head's first data
@@ -1284,8 +1288,7 @@ def _labelled_rows(rows: list[list[str]], kinds: list[str], texts: frozenset[int
     export's frames have), in a table without a time: such rows are likely specimens (a
     table of results or settings, a DAQ's gains per specimen), not the samples of one
     test; None without one."""
-    data = [row for row, kind in zip(rows, kinds, strict=False) if kind == "numeric"
-            ][:TEXT_ROWS]
+    data = _head_data(rows, kinds)
     for index in sorted(texts):
         cells = [row[index].strip() for row in data]
         if len(cells) >= 3 and len(set(cells)) == len(cells) and not any(
@@ -1301,8 +1304,7 @@ def _numbered_rows(rows: list[list[str]], kinds: list[str], names: list[str]) ->
     """What to say of a column that numbers the head's first data `rows`, three at least,
     one by one (a results table's ``no.``: 1, 2, 3...), or None. A log numbers its samples
     so too: only beside names of results does it make the rows specimens."""
-    data = [row for row, kind in zip(rows, kinds, strict=False) if kind == "numeric"
-            ][:TEXT_ROWS]
+    data = _head_data(rows, kinds)
     for index in range(min(map(len, data), default=0)):
         cells = [row[index].strip() for row in data]
         if (len(cells) >= 3 and all(cell.isdigit() for cell in cells)
