@@ -64,6 +64,7 @@ from pipeline.ingest.names import (
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import SHEET_KEY, display_name, role_of_key
 from pipeline.ingest.specimens import choose
+from pipeline.ingest.statedrate import stated_rate
 from pipeline.ingest.table import GAP_FACTOR, ROLES, ColumnInfo, TableMetadata
 from pipeline.ingest.unitparse import (
     FORCE_ROLES,
@@ -169,15 +170,22 @@ class Conversion:
         Raw column index of a time column left out of the table for want of a
         unit: its steps are still checked (a step back, such as specimens stacked
         one below the other, needs no unit to be seen).
+    interval : float or None
+        Time between rows [s] that the header states, for a file without a time
+        column (:mod:`pipeline.ingest.statedrate`): the table's time is built
+        from it, counted from the file's first data row.
     """
 
     columns: tuple[tuple[int, str, float], ...]
     infos: tuple[ColumnInfo, ...]
     unitless_time: int | None = None
+    interval: float | None = None
 
     def table(self, raw: RawTable) -> pd.DataFrame:
         """The canonical table of `raw` (its arrays converted in place), indexed by file row."""
         data = {}
+        if self.interval is not None:
+            data["time"] = np.arange(raw.first_row, raw.first_row + raw.rows) * self.interval
         for index, name, factor in self.columns:
             array = raw.arrays[index]
             if factor != 1.0:
@@ -248,12 +256,14 @@ def settle(
     sheet_units = _run_sheet_units(units, meta.file)
     ambiguous: set[str] = set()
     assigned = _settle_roles(raw, empty, set(sheet_units), problems, kind, ambiguous)
+    interval = _stated_interval(raw, ambiguous)
     rejected: dict[str, UnitError] = {}
     factors, found_units, strains = _settle_units(raw, assigned, sheet_units, problems, kind,
                                                   rejected)
     needs = " and ".join(" or ".join(group) for group in REQUIRED[kind])
     for group in REQUIRED[kind]:
-        if any(assigned.get(role) or role in ambiguous for role in group):
+        if any(assigned.get(role) or role in ambiguous for role in group) or (
+                interval is not None and "time" in group):
             continue
         keys = " or ".join(f"columns = {{{SHEET_KEY[role]} = \"...\"}}" for role in group)
         why = "".join(f"{reason}; " for role, reason in raw.set_aside if role in group)
@@ -287,9 +297,33 @@ def settle(
         )
         for index in range(len(raw.names)) if index not in others
     )
+    if interval is not None:
+        infos = (ColumnInfo(name=STATED_TIME, role="time", unit="s", si_unit="s"), *infos)
     unitless_time = next((index for index in assigned.get("time", []) if index not in factors),
                          None)
-    return Conversion(columns, infos, unitless_time)
+    return Conversion(columns, infos, unitless_time, interval)
+
+
+#: The name :attr:`TableMetadata.columns` gives a time built from the stated sample rate.
+STATED_TIME = "time (from the stated sample rate)"
+
+
+def _stated_interval(raw: RawColumns, ambiguous: set[str]) -> float | None:
+    """The time between rows [s] the header states (:func:`~pipeline.ingest.statedrate.
+    stated_rate`), for a file with no time column (none by name, unit or run sheet, none set
+    aside, none of several left undecided); None otherwise. Noted in the warnings, as is a
+    header stating rates that disagree."""
+    if ("time" in raw.candidates.roles or "time" in ambiguous
+            or any(role == "time" for role, _ in raw.set_aside)):
+        return None
+    meta = raw.metadata
+    stated = stated_rate(meta.preamble, meta.decimal)
+    if stated is None:
+        return None
+    meta.warnings.append(stated.note() if stated.interval is not None else
+                         f"the header states its sample rate twice, and not alike "
+                         f"({stated.said}): no time is built from it")
+    return stated.interval
 
 
 def _warn_unnamed_strains(raw: RawColumns, empty: set[int]) -> None:
