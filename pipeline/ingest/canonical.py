@@ -57,6 +57,7 @@ from pipeline.ingest.names import (
     peak_partner,
     repeats,
     run_labels,
+    says_part,
     says_sign_convention,
     says_total,
     tokens,
@@ -744,6 +745,9 @@ _PREFERRED = (
     (frozenset({"time", "cycle_count"}), lambda raw, at: says_total(raw.names[at]),
      "is named as one that starts again (a step's, a cycle's, since a reset) beside the "
      "whole test's"),
+    (frozenset({"time"}), lambda raw, at: not says_part(raw.names[at]),
+     "is named as a part's of the test (a scan's, a step's), which starts again with each, "
+     "beside one that is not"),
     (frozenset({"force"}), lambda raw, at: not says_sign_convention(raw.names[at]),
      "is named as the load in one kind of test's sign, worked out from the measured one"),
     (frozenset({"force"}), lambda raw, at: not is_held_peak(raw.names, at),

@@ -95,7 +95,7 @@ def matches(head: Head, spec: TableSpec) -> bool:
     return (head.lines[0].lstrip().startswith("MTS")
             or any(names in line and _unlabelled(line, spec.delimiter) == names
                    for line in later)
-            or any(line.strip() in openers for line in later))
+            or any(_opens(line, openers, spec.delimiter) for line in later))
 
 
 #: A field that starts as a number does.
@@ -117,10 +117,24 @@ def _unlabelled(line: str, delimiter: str) -> str:
 
 
 def _block_openers(head: Head, spec: TableSpec) -> set[str]:
-    """The lines above the names row with a letter in them, stripped: repeated below the
-    data, each opens a block."""
-    return {line.strip() for line in head.lines[:spec.header_index]
-            if any(char.isalpha() for char in line)}
+    """The first fields of the lines above the names row, where they hold a letter: a line
+    below the data that begins so, numbers or nothing after, opens a block."""
+    firsts = (_first_field(line, spec.delimiter) for line in head.lines[:spec.header_index])
+    return {first for first in firsts if any(char.isalpha() for char in first)}
+
+
+def _first_field(line: str, delimiter: str) -> str:
+    """The first field of `line`, stripped."""
+    return split_fields(line.strip(), delimiter)[0].strip()
+
+
+def _opens(line: str, openers: set[str], delimiter: str) -> bool:
+    """Whether `line` opens a block: it begins with one of `openers` (:func:`_block_openers`),
+    the numbers of a counter or nothing after (TestStar's ``Axial Counts<TAB>0``, with a
+    second count further right in some exports)."""
+    fields = split_fields(line.strip(), delimiter)
+    return fields[0].strip() in openers and all(
+        not field.strip() or field.strip().isdecimal() for field in fields[1:])
 
 
 def read(head: Head, spec: TableSpec, columns: Mapping | None = None,
@@ -142,13 +156,13 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None,
     marked = _marked_headers(head, spec, data, first_line)
     data = marked.data
     times = header.candidates.roles.get("time", [])
-    blocks = _later_blocks(head, spec, data, times[0] if len(times) == 1 else None)
+    blocks = _later_blocks(head, spec, data, times)
     tests = [block for block in blocks if block.restarts and not block.other]
     part = range(start, head.size)
     if tests:
         data, blocks, part, first_line = _one_test(head, marked, blocks, tests, start,
                                                    first_line, specimen, header.metadata,
-                                                   timed=len(times) == 1)
+                                                   timed=bool(times))
     same = [block for block in blocks if not block.other]
     header.metadata.preamble["blocks"] = str(1 + sum(block.opens for block in same))
     header.metadata.warnings += [block.note for block in blocks if block.other]
@@ -288,10 +302,11 @@ class _Block(NamedTuple):
     restarts: bool = False  #: whether its time starts again (a test of its own)
 
 
-def _later_blocks(head: Head, spec: TableSpec, data: bytes, time: int | None) -> list[_Block]:
+def _later_blocks(head: Head, spec: TableSpec, data: bytes, times: list[int]
+                  ) -> list[_Block]:
     """The blocks after the first in `data` (the file from the first block's points on):
-    each a run of header lines and the points up to the next. `time` is the column of
-    the time, if one column may be it."""
+    each a run of header lines and the points up to the next. `times` are the columns that
+    may be the time."""
     codec = head.codec if head.ascii_compatible else "utf-8"
     groups: list[list[int]] = []  # [start, end) of each run of header lines
     for match in _HEADER_LINE.finditer(data):
@@ -302,9 +317,9 @@ def _later_blocks(head: Head, spec: TableSpec, data: bytes, time: int | None) ->
     ends = [start for start, _ in groups[1:]] + [len(data)] if groups else []
     first = _FirstBlock(head.lines[spec.header_index].strip(),
                         head.lines[spec.units_index].strip() if spec.units_index is not None
-                        else None, _block_openers(head, spec), time,
-                        _number(split_fields(head.lines[spec.data_index], spec.delimiter),
-                                time, spec))
+                        else None, _block_openers(head, spec), tuple(times),
+                        tuple(_number(split_fields(head.lines[spec.data_index], spec.delimiter),
+                                      time, spec) for time in times))
     view = memoryview(data)  # the blocks' points read in place, not copied
     blocks, line, counted = [], spec.data_index + 1, 0  # the file's line at offset `counted`
     for (start, header_end), end in zip(groups, ends, strict=True):
@@ -323,8 +338,8 @@ class _FirstBlock(NamedTuple):
     names: str
     units: str | None
     openers: set[str]
-    time: int | None  #: the time's column, if one column may be it
-    start_time: float | None  #: its first reading
+    times: tuple[int, ...]  #: the columns that may be the time
+    start_times: tuple[float | None, ...]  #: their first readings
 
 
 def _block(spec: TableSpec, first: _FirstBlock, header_text: str, points: memoryview,
@@ -339,13 +354,15 @@ def _block(spec: TableSpec, first: _FirstBlock, header_text: str, points: memory
     fields = split_fields(rows[0], spec.delimiter) if rows else []
     width = len(fields) if rows else spec.width
     names = _unlabelled(first.names, spec.delimiter)
-    renamed = [line for line in header if widths[line] == spec.width and line not in openers
+    renamed = [line for line in header if widths[line] == spec.width
+               and not _opens(line, openers, spec.delimiter)
                and _unlabelled(line, spec.delimiter) != names and line != first.units]
-    opens = any(_unlabelled(line, spec.delimiter) == names or line in openers
-                for line in header)
+    opens = any(_unlabelled(line, spec.delimiter) == names
+                or _opens(line, openers, spec.delimiter) for line in header)
     where = f"lines {lines.start} to {lines.stop - 1}"
     if renamed or width != spec.width:
-        names = next((line for line in header if widths[line] == width and line not in openers),
+        names = next((line for line in header if widths[line] == width
+                      and not _opens(line, openers, spec.delimiter)),
                      header[-1] if header else "")
         return _Block(start, lines, opens, True, (
             f"{where}: a block of other columns than the first "
@@ -357,9 +374,13 @@ def _block(spec: TableSpec, first: _FirstBlock, header_text: str, points: memory
         return _Block(start, lines, opens, True, (
             f"{where}: a block of two rows, each column's largest value then its smallest, "
             "is the test's peaks, not samples: left out"))
-    time = _number(fields, first.time, spec)
-    restarts = (time is not None and first.start_time is not None
-                and time <= first.start_time) or (first.time is None and opens and bool(rows))
+    starts = [(_number(fields, time, spec), start)
+              for time, start in zip(first.times, first.start_times, strict=True)]
+    # a test of its own when every time starts again (TestStar's Scan Time starts again in
+    # each block, its Elapsed Time goes on)
+    restarts = (bool(starts) and all(time is not None and start is not None and time <= start
+                                     for time, start in starts)
+                or (not first.times and opens and bool(rows)))
     return _Block(start, lines, opens, False, "", restarts)
 
 

@@ -249,6 +249,9 @@ _MEASURING_DEVICE = re.compile(r"md_.*--", re.IGNORECASE)
 #: Words of a time or a counter that runs over the whole test (WaveMatrix's ``Total Cycles``
 #: beside the step's ``Elapsed Cycles``; a rig's ``CYCLES TOTAL`` beside ``CYCLES RESET``).
 TOTAL_WORDS = frozenset({"total", "totale", "totales"})
+#: First words of a time that starts again with a part of the test (MTS TestStar's ``Scan
+#: Time``, each block's, beside its ``Elapsed Time``; a step's, a segment's, a cycle's).
+PART_WORDS = frozenset({"scan", "step", "segment", "stage", "block", "loop", "cycle"})
 #: Words of a fracture test's crack record: its length, its opening, and the machine's
 #: readings copied where it was measured (the CCFatigue layout's ``Crack_length``,
 #: ``Crack_Displacement``, ``Crack_Load``): no chain's length, no gauge along the specimen.
@@ -616,6 +619,16 @@ def says_total(name: str) -> bool:
     """
     words = tokens(name)
     return not TOTAL_WORDS.isdisjoint(words) or any(word.startswith("gesamt") for word in words)
+
+
+def says_part(name: str) -> bool:
+    """Whether a column name opens with :data:`PART_WORDS`: a time (or count) of a part of
+    the test, which starts again with each.
+
+    >>> [says_part(name) for name in ("Scan Time", "Elapsed Time", "Step time")]
+    [True, False, True]
+    """
+    return _opens_with(name, PART_WORDS)
 
 
 def says_sign_convention(name: str) -> bool:

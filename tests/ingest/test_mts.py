@@ -40,16 +40,22 @@ def test_an_indented_first_line_is_still_an_mts_export(write):
     assert meta.layout == "mts" and len(table) == 4
 
 
-def mts_teststar(blocks: int, points: int) -> str:
+def mts_teststar(blocks: int, points: int, scan_time: bool = False) -> str:
     """An MTS TestStar export as a real one: each block opened by "Axial Counts<TAB>0", the
-    names and units over the first block only, the points counted again in each."""
+    names and units over the first block only, the points counted again in each; with
+    `scan_time`, the time within each block beside the elapsed time, and the later
+    blocks' opening lines with a second count further right (as a three-point bending
+    rig's export)."""
     lines = ["C:\\Documents and Settings\\USERS\\4.TXT\t\t\t\t", "\t\t\t\t"]
     for block in range(blocks):
-        lines.append("Axial Counts\t0\t\t\t")
+        lines.append("Axial Counts\t0\t\t\t" + ("\t0" if scan_time and block else ""))
         if block == 0:
-            lines += ["Points\tElapsed Time \tDisp 1\tLoad 1 ", "      \tSec   \tmm  \tN   "]
-        lines += [f"{point + 1}\t{(block * points + point) * 0.005:g}\t{-0.001 * point:g}"
-                  f"\t{-0.5 - 0.01 * point:g}" for point in range(points)]
+            lines += ["Points\tElapsed Time \t" + ("Scan Time \t" if scan_time else "")
+                      + "Disp 1\tLoad 1 ",
+                      "      \tSec   \t" + ("Sec   \t" if scan_time else "") + "mm  \tN   "]
+        lines += [f"{point + 1}\t{(block * points + point) * 0.005:g}\t"
+                  + (f"{point * 0.005:g}\t" if scan_time else "")
+                  + f"{-0.001 * point:g}\t{-0.5 - 0.01 * point:g}" for point in range(points)]
     return "\r\n".join(lines) + "\r\n"
 
 
@@ -59,6 +65,20 @@ def test_a_teststar_exports_block_lines_are_no_rows(write):
     assert meta.layout == "mts" and meta.preamble["blocks"] == "3" and len(table) == 600
     np.testing.assert_allclose(table["time"], 0.005 * np.arange(600), atol=1e-12)
     assert meta.time_monotonic and not any("missing" in w for w in meta.warnings)
+
+
+def test_a_teststar_exports_scan_time_starts_again_in_each_block_of_one_test(write):
+    # a bending rig's TestStar export: each block's own 'Scan Time' beside the 'Elapsed
+    # Time', and a second count on the later blocks' opening lines; read as rows, these
+    # lines were samples at time 0, and taken as names rows, the blocks as tests
+    text = mts_teststar(blocks=3, points=200, scan_time=True)
+    table, meta = read_table(write("1.TXT", text), kind="engagement")
+    assert meta.layout == "mts" and meta.preamble["blocks"] == "3" and len(table) == 600
+    np.testing.assert_allclose(table["time"], 0.005 * np.arange(600), atol=1e-12)
+    assert [column.name for column in meta.columns if column.role == "time"] == [
+        "Elapsed Time"]
+    assert any(warning.startswith("column 'Scan Time' is named as a part's of the test")
+               for warning in meta.warnings)
 
 
 def test_line_numbers_refer_to_the_file(write):
