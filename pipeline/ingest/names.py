@@ -132,7 +132,8 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
     "zh": {
         "time": ("时间", "试验时间"),
         "force": ("载荷", "负荷", "力", "试验力", "拉力", "力值", "荷载"),
-        "gauge": ("位移", "变形", "伸长", "引伸计", "横梁位移", "应变", "行程", "横梁"),
+        "gauge": ("位移", "变形", "伸长", "引伸计", "横梁位移", "应变", "行程", "横梁",
+                  "引伸计变形", "大变形", "小变形"),
         "cycle_count": ("循环计数", "循环次数", "循环"),
     },
     "ja": {
@@ -163,7 +164,8 @@ GAUGE_KINDS: dict[str, tuple[str, ...]] = {
         "maschinenweg", "trawersa", "trawersy", "tłok", "droga standardowa", "travesaño",
         "actuador", "pistón", "carrera", "course", "vérin", "travessa", "atuador", "pistão",
         "traversa", "corsa", "attuatore", "pistone", "траверса", "перемещение траверсы",
-        "ход поршня", "положение", "横梁位移", "横梁", "行程", "ストローク", "クロスヘッド変位",
+        "ход поршня", "положение", "横梁位移", "横梁", "行程", "位移", "ストローク",
+        "クロスヘッド変位",
         "traversepositie", "zuiger", "크로스헤드", "스트로크",
     ),
     "extensometer": (
@@ -171,7 +173,8 @@ GAUGE_KINDS: dict[str, tuple[str, ...]] = {
         "ansetzdehnungsaufnehmer", "maytec", "ekstensometr", "odkształcenie", "extensómetro",
         "deformación", "dial", "czujnik", "extensomètre", "déformation", "déform",
         "extensômetro", "estensometro", "deformazione", "ekstansometre", "экстензометр",
-        "引伸计", "应变", "伸び計", "rek", "gerinim", "ひずみ", "歪み", "변형률", "신장계",
+        "引伸计", "应变", "变形", "引伸计变形", "大变形", "小变形", "伸び計", "rek", "gerinim",
+        "ひずみ", "歪み", "변형률", "신장계",
         "optical", "exts",
     ),
 }

@@ -275,6 +275,10 @@ def test_what_a_french_displacement_channel_measures(name, kind):
     ("Verplaatsing", "gauge"), ("변위", "gauge"), ("크로스헤드", "crosshead"),
     # an Instron 8800's actuator in a Russian WaveMatrix export
     ("Положение(8800 (0,1):Положение)", "crosshead"),
+    # a Chinese testing machine's export: the crosshead's displacement, the extensometer's
+    # deformation (a large-deformation extensometer's too)
+    ("位移", "crosshead"), ("变形", "extensometer"), ("引伸计变形", "extensometer"),
+    ("大变形", "extensometer"),
 ])
 def test_what_a_displacement_channel_measures_in_more_languages(name, kind):
     assert gauge_kind(name) == kind
