@@ -97,7 +97,7 @@ def existing_run_file(sheet: RunSheet, run: RunDef) -> Path:
 def _reading(run: RunDef) -> dict:
     """How a run's raw file is read, as its run-sheet entry says."""
     return {"kind": READ_AS.get(run.kind, run.kind), "format": run.format, "sheet": run.sheet,
-            "specimen": run.specimen_in_file,
+            "specimen": run.specimen_in_file, "sample_rate_hz": run.sample_rate_hz,
             "columns": run.columns.model_dump(exclude_none=True) if run.columns else None,
             "units": run.units.model_dump(exclude_none=True) if run.units else None}
 

@@ -290,6 +290,8 @@ class RunDef(_Strict):
     specimen_in_file: str | int | None = None
     columns: ColumnMap | None = None
     units: UnitMap | None = None
+    #: the rate the rows were sampled at, for a file with no time column [Hz]
+    sample_rate_hz: PositiveFloat | None = None
     note: str = ""
     #: the run's values were checked by hand: plausibility flags (a probable unit slip)
     #: are shown but do not exclude the run

@@ -147,3 +147,28 @@ def test_a_wear_logs_counter_of_segments_or_of_scaled_cycles_is_refused(
         return
     with pytest.raises(UnitError, match=refused):
         _check_counter(_Sheet(), "w1", metadata)
+
+
+def test_an_engagement_log_without_time_is_read_at_the_run_sheets_sample_rate(lab, tmp_path):
+    # a logger that writes one row a sample and no time: the run sheet gives the rate
+    from pipeline.ingest import read_table
+
+    wheel = wheel_using(lab, tmp_path / "wheel", "unused")
+    sheet = wheel / "campaign.toml"
+    sheet.write_text(re.sub(r'^stiffness_from = .*$', "E0_N = 22600000", sheet.read_text(),
+                            flags=re.M))
+    whole = process_campaign(wheel, tmp_path / "tdms")
+    table, _ = read_table(next(wheel.glob("*.tdms")), kind="engagement")
+    step = np.diff(table["time"].to_numpy())
+    assert table["time"].iloc[0] == 0 and np.allclose(step, 1e-4, rtol=1e-9, atol=0)
+    rows = [f"{f},{a}" for f, a in table[["force", "angle"]].to_numpy()]
+    (wheel / "log.csv").write_text("force [N],angle [rad]\n" + "\n".join(rows) + "\n")
+    sheet.write_text(re.sub(r'^file = .*$', 'file = "log.csv"\nsample_rate_hz = 10000',
+                            sheet.read_text(), flags=re.M))
+    untimed = process_campaign(wheel, tmp_path / "csv")
+    assert whole.failures == [] and untimed.failures == []
+    for name in ("N_u1_meas", "N_u2_meas"):
+        np.testing.assert_allclose(untimed.summary[name], whole.summary[name], rtol=1e-9)
+    (run_file,) = untimed.run_files.values()
+    assert ("the file has no time column: time is built from the run sheet's sample_rate_hz = "
+            "10000") in read_dataset(run_file).attrs["ingest_warnings"]

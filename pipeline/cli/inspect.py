@@ -258,16 +258,23 @@ def command(
         "--specimen", help="Of several specimens side by side in FILE, the one shown: its "
                            "label or its place from 1 (the run sheet's specimen_in_file).")
     ] = None,
+    sample_rate_hz: Annotated[float | None, typer.Option(
+        "--sample-rate-hz",
+        help="For FILE with no time column, the rate its rows were sampled at [Hz] (the "
+             "run sheet's sample_rate_hz).")] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON (for programs).")] = False,
     debug: Annotated[bool, typer.Option("--debug", help="Show the traceback of an error.")] = False,
 ) -> None:
     """Show what the readers detect in FILE (layout, columns, units, cycles), processing nothing."""
+    if sample_rate_hz is not None and not sample_rate_hz > 0:
+        raise typer.BadParameter("give a rate above 0", param_hint="--sample-rate-hz")
     try:
         from pipeline.ingest import read_table
         from pipeline.runs import READ_AS
 
         table, metadata = read_table(file, kind=READ_AS.get(kind.value, kind.value),
-                                     specimen=specimen, strict=False)
+                                     specimen=specimen, sample_rate_hz=sample_rate_hz,
+                                     strict=False)
         report = summary(table, metadata)
         if kind in (Kind.engagement, Kind.roller_engagement) and (
                 slow := slow_for_impacts(report["sample_rate_hz"])):

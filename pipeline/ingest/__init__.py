@@ -67,6 +67,7 @@ def read_table(
     sheet: str | int | None = None,
     *,
     specimen: str | int | None = None,
+    sample_rate_hz: float | None = None,
     strict: bool = True,
 ) -> tuple[pd.DataFrame, TableMetadata]:
     """Read a raw test-machine file into the canonical table.
@@ -102,6 +103,11 @@ def read_table(
         side in the file (the same names repeated; Shimadzu Trapezium, Mecmesin
         Emperor), the one read: its label over the columns, or its place from 1 at
         the left. Such a file is refused without it.
+    sample_rate_hz : float, optional
+        Run-sheet ``sample_rate_hz`` [Hz]: the rate the rows were sampled at, for a
+        file with no time column (the time of row ``i`` is ``i / sample_rate_hz``,
+        over any rate its header states); a file with a time column is refused with
+        it.
     strict : bool
         If False, role and unit problems become warnings and the table holds
         what could be converted (used by ``chainbench inspect``).
@@ -150,11 +156,12 @@ def read_table(
 
     def read(path: Path) -> tuple[pd.DataFrame, TableMetadata]:
         with opened(path) as source:
-            return _table(source, kind, columns, units, format, sheet, specimen, strict)
+            return _table(source, kind, columns, units, format, sheet, specimen,
+                          sample_rate_hz, strict)
 
     table, metadata = read(Path(path))
     reading = {"kind": kind, "columns": columns, "units": units, "format": format,
-               "sheet": sheet, "specimen": specimen}
+               "sheet": sheet, "specimen": specimen, "sample_rate_hz": sample_rate_hz}
     return continuation.join_parts(Path(path), table, metadata, reading, read), metadata
 
 
@@ -167,6 +174,7 @@ def parse_table(
     sheet: str | int | None = None,
     *,
     specimen: str | int | None = None,
+    sample_rate_hz: float | None = None,
     strict: bool = True,
     name: str = "<buffer>",
 ) -> tuple[pd.DataFrame, TableMetadata]:
@@ -184,7 +192,7 @@ def parse_table(
         pyarrow's reading threads may hold a view of it for a moment after
         the call returns, so an ``mmap`` closed at once may refuse
         (``BufferError``): read from ``bytes``, or let the map be collected.
-    kind, columns, units, format, sheet, specimen, strict
+    kind, columns, units, format, sheet, specimen, sample_rate_hz, strict
         As for :func:`read_table`.
     name : str
         The name errors and :attr:`TableMetadata.file` give the buffer; its
@@ -206,7 +214,7 @@ def parse_table(
     """
     check_options(kind, format)
     return _table(BufferSource(buffer, name), kind, columns, units, format, sheet, specimen,
-                  strict)
+                  sample_rate_hz, strict)
 
 
 def _table(
@@ -217,8 +225,10 @@ def _table(
     format: str,
     sheet: str | int | None,
     specimen: str | int | None,
+    sample_rate_hz: float | None,
     strict: bool,
 ) -> tuple[pd.DataFrame, TableMetadata]:
     """The parse path of :func:`read_table` and :func:`parse_table`."""
     raw = read_raw(source, sniff(source, format), columns, sheet, specimen)
-    return canonical.build(raw, kind=kind, units=units, strict=strict, specimen=specimen)
+    return canonical.build(raw, kind=kind, units=units, strict=strict, specimen=specimen,
+                           sample_rate_hz=sample_rate_hz)

@@ -65,7 +65,7 @@ from pipeline.ingest.names import (
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import SHEET_KEY, display_name, role_of_key
 from pipeline.ingest.specimens import choose
-from pipeline.ingest.statedrate import stated_rate
+from pipeline.ingest.statedrate import stated_rate, unread_rate
 from pipeline.ingest.table import GAP_FACTOR, ROLES, ColumnInfo, TableMetadata
 from pipeline.ingest.unitparse import (
     FORCE_ROLES,
@@ -208,6 +208,7 @@ class Conversion:
 def settle(
     raw: RawColumns, empty: set[int], *, kind: str, units: Mapping | None = None,
     strict: bool = True, specimen: str | int | None = None,
+    sample_rate_hz: float | None = None,
 ) -> Conversion:
     """Settle the roles and SI units of a file's columns.
 
@@ -230,6 +231,9 @@ def settle(
         Run-sheet ``specimen_in_file``: of several specimens side by side, the one
         read (its label, or its place from 1 at the left); the other specimens'
         columns take no role.
+    sample_rate_hz : float, optional
+        Run-sheet ``sample_rate_hz`` [Hz]: the rows' sampling, for a file with no time
+        column (over the header's, :func:`_stated_interval`).
 
     Raises
     ------
@@ -257,7 +261,7 @@ def settle(
     sheet_units = _run_sheet_units(units, meta.file)
     ambiguous: set[str] = set()
     assigned = _settle_roles(raw, empty, set(sheet_units), problems, kind, ambiguous)
-    interval = _stated_interval(raw, ambiguous)
+    interval = _stated_interval(raw, ambiguous, sample_rate_hz, problems)
     rejected: dict[str, UnitError] = {}
     factors, found_units, strains = _settle_units(raw, assigned, sheet_units, problems, kind,
                                                   rejected)
@@ -267,8 +271,10 @@ def settle(
                 interval is not None and "time" in group):
             continue
         keys = " or ".join(f"columns = {{{SHEET_KEY[role]} = \"...\"}}" for role in group)
+        if "time" in group:
+            keys += " (or, for rows sampled at a steady rate, the rate: sample_rate_hz = ...)"
         why = "".join(f"{reason}; " for role, reason in raw.set_aside if role in group)
-        why += _spectrum_note(raw) if "time" in group else ""
+        why += _spectrum_note(raw) + unread_rate(meta.preamble) if "time" in group else ""
         why += _weight_note(raw, empty) if "force" in group else ""
         problems.report(next((rejected[role] for role in group if role in rejected), None)
                         or ColumnError(
@@ -309,16 +315,35 @@ def settle(
 STATED_TIME = "time (from the stated sample rate)"
 
 
-def _stated_interval(raw: RawColumns, ambiguous: set[str]) -> float | None:
-    """The time between rows [s] the header states (:func:`~pipeline.ingest.statedrate.
-    stated_rate`), for a file with no time column (none by name, unit or run sheet, none set
-    aside, none of several left undecided); None otherwise. Noted in the warnings, as is a
-    header stating rates that disagree."""
-    if ("time" in raw.candidates.roles or "time" in ambiguous
-            or any(role == "time" for role, _ in raw.set_aside)):
-        return None
+def _stated_interval(raw: RawColumns, ambiguous: set[str], sample_rate_hz: float | None,
+                     problems: _Problems) -> float | None:
+    """The time between rows [s] for a file with no time column (none by name, unit or run
+    sheet, none set aside, none of several left undecided): the run sheet's
+    `sample_rate_hz`'s, or the header's (:func:`~pipeline.ingest.statedrate.stated_rate`);
+    None otherwise. Noted in the warnings, as are a header stating rates that disagree and
+    a run sheet's rate unlike the header's. A run sheet's rate for a file with a time column
+    is reported (a :class:`~pipeline.errors.ColumnError`)."""
     meta = raw.metadata
+    timed = ("time" in raw.candidates.roles or "time" in ambiguous
+             or any(role == "time" for role, _ in raw.set_aside))
+    if timed:
+        if sample_rate_hz is not None:
+            problems.report(ColumnError(
+                f"the run sheet gives sample_rate_hz = {sample_rate_hz:g}, but the file has "
+                "a time column", file=meta.file, row=raw.units_line,
+                hint="sample_rate_hz is for a file with no time column: leave it out"))
+        return None
     stated = stated_rate(meta.preamble, meta.decimal)
+    if sample_rate_hz is not None:
+        interval = 1.0 / sample_rate_hz
+        unlike = (f"; the header states {stated.said}, which is not used"
+                  if stated is not None and not (stated.interval and math.isclose(
+                      stated.interval, interval, rel_tol=1e-6)) else "")
+        meta.warnings.append(
+            f"the file has no time column: time is built from the run sheet's "
+            f"sample_rate_hz = {sample_rate_hz:g} (one row each {interval:g} s, 0 at the "
+            f"first row){unlike}")
+        return interval
     if stated is None:
         return None
     meta.warnings.append(stated.note() if stated.interval is not None else
@@ -437,7 +462,7 @@ def _other_specimens(raw: RawColumns, specimen: str | int | None) -> set[int]:
 
 def build(
     raw: RawTable, *, kind: str, units: Mapping | None = None, strict: bool = True,
-    specimen: str | int | None = None,
+    specimen: str | int | None = None, sample_rate_hz: float | None = None,
 ) -> tuple[pd.DataFrame, TableMetadata]:
     """Settle roles and units of `raw` and return the canonical table.
 
@@ -445,7 +470,7 @@ def build(
     ----------
     raw : RawTable
         What the layout reader found: the whole file.
-    kind, units, strict, specimen
+    kind, units, strict, specimen, sample_rate_hz
         See :func:`settle`. The rows past the last of a `specimen` shorter than the
         file's longest, empty in its columns, are left out with a note.
 
@@ -471,7 +496,7 @@ def build(
         meta.warnings.append(empty_warning(raw.names, empty))
     lone = _lone_values(raw, empty, meta.warnings)
     conversion = settle(raw, empty | lone, kind=kind, units=units, strict=strict,
-                        specimen=specimen)
+                        specimen=specimen, sample_rate_hz=sample_rate_hz)
     table = conversion.table(raw)
     if meta.specimen is not None:
         table = _without_padding(table, raw, meta)

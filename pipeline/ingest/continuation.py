@@ -67,7 +67,7 @@ def find_parts(path: Path, metadata: TableMetadata, last_time: Callable[[], floa
         when a numbered sibling exists.
     reading : mapping
         How it was read: ``kind``, ``columns``, ``units``, ``format``, ``sheet``,
-        ``specimen``, as given to :func:`~pipeline.ingest.read_table`.
+        ``specimen``, ``sample_rate_hz``, as given to :func:`~pipeline.ingest.read_table`.
     """
     if metadata.layout not in TEXT_LAYOUTS or next(numbered_after(path), None) is None:
         return []
@@ -146,7 +146,8 @@ def first_of(path: Path, reading: Mapping) -> tuple[list[str], float] | None:
         raw = read_raw(source, sniff(source, reading["format"]), reading["columns"],
                        reading["sheet"], reading["specimen"])
         table, metadata = canonical.build(raw, kind=reading["kind"], units=reading["units"],
-                                          strict=False, specimen=reading["specimen"])
+                                          strict=False, specimen=reading["specimen"],
+                                          sample_rate_hz=reading["sample_rate_hz"])
     except IngestError:
         return None
     times = _finite_times(table)

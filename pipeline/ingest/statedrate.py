@@ -25,6 +25,7 @@ from pipeline.units import ureg
 #: Keys (folded, unit set apart) that name a sample rate [Hz] when no unit is written.
 _RATE_KEYS = re.compile(
     r"sampl(?:e|ing)s?[ _-]?(?:rate|freq(?:uency)?)|sampling[ _-]?rate|"
+    r"samples? ?(?:per ?|/ ?)s(?:ec(?:ond)?)?|"
     r"abtast(?:rate|frequenz)|サンプリング(?:周波数|レート)|采样(?:频率|率)|"
     r"(?:frecuencia|tasa) de muestreo|czestotliwosc probkowania|"
     r"frequence d'echantillonnage|frequenza di campionamento")
@@ -36,12 +37,18 @@ _INTERVAL_KEYS = re.compile(
 #: Keys that state a sample rate or interval only with a unit.
 _UNIT_KEYS = re.compile(
     r"(?:scan|acquisition|data|logging|log|recording|measuring|measurement|mess)[ _-]?"
-    r"(?:rate|interval|period)|messtakt|dt|delta[ _-]?t|time[ _-]?step|x[ _-]?increment")
+    r"(?:rate|interval|period)|messtakt|messfrequenz|interval|dt|delta[ _-]?t|time[ _-]?step|"
+    r"x[ _-]?increment")
 #: A stated value: a number and, perhaps, its unit.
 _VALUE = re.compile(r"(?P<number>\d+(?:[.,]\d+)?(?:[eE][-+]?\d+)?)\s*(?P<unit>\S.*)?")
-#: Samples per second as data-acquisition software writes it (pint reads S as a siemens).
-_PER_SECOND = re.compile(r"(?:s|sa|samples?|scans?)?\s*/\s*s(?:ec)?|sps", re.IGNORECASE)
-_FREQUENCY = ureg.hertz.dimensionality
+#: What may follow a rate or an interval: of each channel, each sample.
+_EACH = re.compile(r"\s*(?:per|/)\s*(?:ch(?:an(?:nel)?)?|samples?)\s*$", re.IGNORECASE)
+#: A frequency: hertz, or samples per second as data-acquisition software writes them (pint
+#: reads S as a siemens), with a prefix (``2 kS/s``); never another unit of 1/s (a baud, a
+#: percent per second).
+_FREQUENCY = re.compile(
+    r"(?P<prefix>[kKMm]?)(?:hz|(?:s|sa|samples?|scans?)?\s*/\s*s(?:ec(?:ond)?)?|sps)",
+    re.IGNORECASE)
 _TIME = ureg.second.dimensionality
 
 
@@ -95,35 +102,78 @@ def stated_rate(preamble: Mapping[str, str], decimal: str | None = None) -> Stat
     return StatedRate(first, said)
 
 
+#: Words of a header's key or value that may state the sampling.
+_SAMPLING_WORDS = re.compile(r"rate|freq|interval|hz\b|abtast|サンプリング|采样",
+                             re.IGNORECASE)
+
+
+def unread_rate(preamble: Mapping[str, str]) -> str:
+    """What the hint of a missing time says of a header's setting that may state the
+    sampling but is not read as such (``'Config' = 'data_rate = 2000.0 Hz ...'``), or ""."""
+    found = next(((key, value) for key, value in preamble.items()
+                  if _SAMPLING_WORDS.search(f"{key} {value}")), None)
+    if found is None:
+        return ""
+    key, value = found
+    value = value if len(value) <= 40 else value[:40] + "..."
+    return (f"the header's {key!r} = {value!r} is not read as a sample rate (a key that "
+            "names the sampling, a value in Hz or s); ")
+
+
 def _interval(key: str, value: str, decimal: str | None) -> float | None:
     """The interval [s] a key and its value state, or None if they state none."""
-    name, key_unit = split_name_unit(key)
-    name = name.strip().rstrip(":").strip()
-    names = (fold(name), name.casefold())  # folded, and as written (fold parts a kana's marks)
+    named = _named(key)
     number = _VALUE.fullmatch(value.strip())
-    if number is None or ("," in number["number"] and decimal != ","):
+    if named is None or number is None:
         return None
-    magnitude = float(number["number"].replace(",", "."))
-    unit = number["unit"] or key_unit
-    if any(_RATE_KEYS.fullmatch(form) for form in names):
-        default = "Hz"
-    elif any(_INTERVAL_KEYS.fullmatch(form) for form in names):
-        default = "s"
-    elif unit and _UNIT_KEYS.fullmatch(names[0]):
-        default = None
-    else:
+    digits = number["number"]
+    if ("," in digits and decimal != ",") or ("." in digits and decimal == ","):
+        return None  # 1,000 in a file of decimal points, 1.000 in one of commas: a thousand?
+    default, key_unit = named
+    unit = number["unit"] or key_unit or default
+    return None if unit is None else _as_interval(float(digits.replace(",", ".")), unit)
+
+
+def _named(key: str) -> tuple[str | None, str | None] | None:
+    """What a key names: the unit a value without one is in (Hz for a rate, s for an
+    interval, None for a key that needs a unit), and the unit in the key; None for a key
+    that names no sampling."""
+    key = key.strip().rstrip(":").strip()
+    default = _default_unit(key)  # the whole key first: "Samples/sec"
+    if default is not False:
+        return default, None
+    name, unit = split_name_unit(key)
+    if unit is not None and _EACH.fullmatch(unit):  # "Sample rate (per channel)"
+        unit = None
+    elif unit is not None and _as_interval(1.0, unit) is None:  # "Sample rate (max)"
         return None
-    return _as_interval(magnitude, unit or default)
+    default = _default_unit(name)
+    return None if default is False else (default, unit)
+
+
+def _default_unit(name: str) -> str | None | bool:
+    """The unit of a value stated under `name` without one: Hz, s or None (a unit is
+    needed); False when the name names no sampling."""
+    name = _EACH.sub("", name.strip().rstrip(":").strip())
+    forms = (fold(name), name.casefold())  # folded, and as written (fold parts a kana's marks)
+    if any(_RATE_KEYS.fullmatch(form) for form in forms):
+        return "Hz"
+    if any(_INTERVAL_KEYS.fullmatch(form) for form in forms):
+        return "s"
+    return None if _UNIT_KEYS.fullmatch(forms[0]) else False
 
 
 def _as_interval(magnitude: float, unit: str) -> float | None:
-    """The interval [s] of `magnitude` in `unit` (a frequency or a time), or None."""
-    if _PER_SECOND.fullmatch(unit.strip()):
-        unit = "Hz"
+    """The interval [s] of `magnitude` in `unit` (a frequency or a time, perhaps of each
+    channel or sample), or None."""
+    unit = _EACH.sub("", unit.strip().strip("()[]"))
+    if magnitude <= 0:
+        return None
+    frequency = _FREQUENCY.fullmatch(unit)
+    if frequency is not None:
+        prefix = frequency["prefix"].replace("K", "k")
+        return 1.0 / ureg.Quantity(magnitude, prefix + "Hz").to("Hz").magnitude
     for spelling in spellings(unit):
-        dimensionality = ureg.parse_units(spelling).dimensionality
-        if dimensionality == _FREQUENCY and magnitude > 0:
-            return 1.0 / ureg.Quantity(magnitude, spelling).to("Hz").magnitude
-        if dimensionality == _TIME and magnitude > 0:
+        if ureg.parse_units(spelling).dimensionality == _TIME:
             return float(ureg.Quantity(magnitude, spelling).to("s").magnitude)
     return None

@@ -317,6 +317,7 @@ def open_log(
     format: str = "auto",
     sheet: str | int | None = None,
     specimen: str | int | None = None,
+    sample_rate_hz: float | None = None,
 ) -> LogReader:
     """Open a log to read it by row ranges (see the module docstring).
 
@@ -324,7 +325,7 @@ def open_log(
     ----------
     path : str or Path
         The file.
-    kind, columns, units, format, sheet, specimen
+    kind, columns, units, format, sheet, specimen, sample_rate_hz
         As for :func:`~pipeline.ingest.read_table` (but the empty rows below a
         shorter specimen's end are read, as missing values; ``kind`` defaults to
         ``"engagement"``); role and unit problems raise, as with ``strict=True``.
@@ -355,7 +356,7 @@ def open_log(
     meta.warnings += [lone_warning(rows.header.names, index, value, line, rows.rows)
                       for index, (value, line) in lone.items()]
     conversion = settle(rows.header, empty | set(lone), kind=kind, units=units,
-                        specimen=specimen)
+                        specimen=specimen, sample_rate_hz=sample_rate_hz)
     meta.rows = rows.rows
     meta.columns = list(conversion.infos)
     meta.warnings += unlike_stated(meta.preamble, meta.rows)
@@ -363,7 +364,7 @@ def open_log(
     continuation.note_unread_parts(path, meta, reader.last_time,
                                      {"kind": kind, "columns": columns, "units": units,
                                       "format": format, "sheet": sheet,
-                                      "specimen": specimen})
+                                      "specimen": specimen, "sample_rate_hz": sample_rate_hz})
     return reader
 
 

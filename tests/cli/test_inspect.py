@@ -54,6 +54,16 @@ def test_the_sampling_rate_is_shown_and_an_engagement_log_too_slow_for_impacts_w
     assert inspect_json("--kind", "engagement", str(fast))["warnings"] == []
 
 
+def test_a_file_without_time_is_shown_at_the_rate_given(tmp_path):
+    path = tmp_path / "logger.csv"
+    path.write_text("force [kN],gauge [mm]\n" + "".join(f"{load},{load / 100}\n"
+                                                      for load in LOAD))
+    assert inspect_json("--sample-rate-hz", "5000", str(path))["sample_rate_hz"] == (
+        pytest.approx(5000.0))
+    refused = runner.invoke(app, ["inspect", "--sample-rate-hz", "0", str(path)])
+    assert refused.exit_code == 2 and "give a rate above 0" in refused.output
+
+
 def test_rows_sent_in_bursts_give_the_mean_steps_rate_told_beside_the_median_steps(tmp_path):
     # a logger sending three readings 1 ms apart every 10 ms: 300 Hz, not the median's 1 kHz
     times = [10e-3 * (i // 3) + 1e-3 * (i % 3) for i in range(60)]

@@ -77,6 +77,18 @@ def test_a_time_column_is_kept_whatever_rate_the_header_states(write):
     ({"Sample rate [Hz]": "1000", "Sample interval (ms)": "1"}, ".", 1e-3),  # agreeing
     ({"dt": "0.01"}, ".", None),  # dt with no unit: of what?
     ({"dt": "10 ms"}, ".", 0.01),
+    ({"Abtastrate": "1.000 Hz"}, ",", None),  # a thousands point among decimal commas?
+    ({"Data rate": "115200 baud"}, ".", None),  # a serial line's, no sampling
+    ({"Measuring rate": "0.5 %/s"}, ".", None),  # a strain rate
+    ({"Sample rate": "2 kS/s"}, ".", 5e-4),  # no kilosiemens
+    ({"Sampling rate [kS/s]": "2"}, ".", 5e-4),
+    ({"Scan rate": "1000 Samples/sec/channel"}, ".", 1e-3),
+    ({"Sample rate (per channel)": "1000"}, ".", 1e-3),
+    ({"Sample rate (max)": "1000"}, ".", None),  # the device's largest, not the one used
+    ({"Samples/sec": "500"}, ".", 2e-3),
+    ({"Sample interval": "0.5 msec/sample"}, ".", 5e-4),
+    ({"Interval": "0.01 s"}, ".", 0.01),  # a physiology recorder's
+    ({"Interval": "10"}, ".", None),  # of what?
 ])
 def test_stated_rate(preamble, decimal, interval):
     stated = stated_rate(preamble, decimal)
@@ -84,3 +96,29 @@ def test_stated_rate(preamble, decimal, interval):
         assert stated is None
     else:
         assert stated.interval == pytest.approx(interval, rel=1e-12)
+
+
+def test_the_run_sheets_sample_rate_builds_the_time_over_the_headers(write):
+    path = write("plate.csv", plate("Sampling rate,1000"))
+    table, meta = read_table(path, kind="engagement", sample_rate_hz=250.0, **FZ_IN_N)
+    np.testing.assert_allclose(table["time"], 4e-3 * np.arange(len(FZ)), rtol=1e-12)
+    assert ("the file has no time column: time is built from the run sheet's sample_rate_hz = "
+            "250 (one row each 0.004 s, 0 at the first row); the header states 'Sampling "
+            "rate' = 1000, which is not used") in meta.warnings
+    rows, _ = open_log(path, sample_rate_hz=250.0, **FZ_IN_N).read(3, 7)
+    np.testing.assert_allclose(rows["time"], 4e-3 * np.arange(3, 7), rtol=1e-12)
+
+
+def test_a_run_sheets_sample_rate_for_a_file_with_a_time_column_is_refused(write):
+    text = "Time (s),Fz\n0,1\n0.5,2\n1.0,3\n"
+    with pytest.raises(ColumnError, match="sample_rate_hz = 100, but the file has a time column"):
+        read_table(write("log.csv", text), kind="engagement", sample_rate_hz=100.0, **FZ_IN_N)
+
+
+def test_the_missing_time_hint_names_the_run_sheets_rate_and_a_rate_not_read(write):
+    path = write("plate.csv", plate("Config,data_rate = 2000.0 Hz"))
+    with pytest.raises(ColumnError) as caught:
+        read_table(path, kind="engagement", **FZ_IN_N)
+    assert "sample_rate_hz = ..." in caught.value.hint
+    assert ("the header's 'Config' = 'data_rate = 2000.0 Hz' is not read as a sample rate"
+            in caught.value.hint)
