@@ -71,6 +71,7 @@ from pipeline.ingest.unitparse import (
     FORCE_ROLES,
     MICRO_ALONE,
     ROLE_SI_UNIT,
+    is_counter_unit,
     is_mass_unit,
     is_micro_alone,
     is_strain_unit,
@@ -705,7 +706,8 @@ def _settle_roles(raw: RawColumns, empty: set[int], sheet_units: set[str], probl
                     _warn_misfit(raw, index, role)
                 live = [index for index in live if index not in misfits]
         if role in _SINGLE and len(live) > 1 and role not in raw.candidates.explicit:
-            live = _preferred(raw, live, role, kind, role in sheet_units)
+            live = _without_copies(raw, _preferred(raw, live, role, kind, role in sheet_units),
+                                   role)
         if role in raw.candidates.explicit and len(live) < len(indexes):
             dead = next(index for index in indexes if index in empty)
             problems.report(ColumnError(
@@ -812,6 +814,36 @@ def _preferred(raw: RawColumns, live: list[int], role: str, kind: str, sheet_uni
             f"{{{SHEET_KEY[role]} = \"...\"}})" for index in live if index not in kept]
         live = kept
     return live
+
+
+def _without_copies(raw: RawColumns, live: list[int], role: str) -> list[int]:
+    """The columns `live` but those holding the values of one before them row for row, in
+    the same unit (any count, for a counter), each warned of: one channel written twice (MTS
+    TestSuite's ``_Cycle`` index beside the ``Cycle Channel`` it copies) takes the role once.
+    All kept when the readings are not at hand (a log read by ranges)."""
+    if not isinstance(raw, RawTable):
+        return live
+    kept: list[int] = []
+    for index in live:
+        copied = next((first for first in kept if _same_unit(raw, first, index, role)
+                       and np.array_equal(raw.arrays[first], raw.arrays[index], equal_nan=True)),
+                      None)
+        if copied is None:
+            kept.append(index)
+            continue
+        raw.metadata.warnings.append(
+            f"column {display_name(raw.names, index)!r} holds the values of "
+            f"{display_name(raw.names, copied)!r} row for row: one channel written twice, "
+            f"{display_name(raw.names, copied)!r} is the {role}")
+    return kept
+
+
+def _same_unit(raw: RawColumns, first: int, second: int, role: str) -> bool:
+    """Whether two columns are in one unit as written (any count, for a counter)."""
+    if role == "cycle_count":
+        return is_counter_unit(raw.units[first]) and is_counter_unit(raw.units[second])
+    return (raw.units[first] or "").strip().casefold() == (raw.units[second] or "").strip(
+    ).casefold()
 
 
 def _says_strain(name: str) -> bool:

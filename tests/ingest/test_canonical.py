@@ -413,6 +413,23 @@ def test_a_file_holding_more_rows_than_its_header_states_is_warned_of(write, sta
         assert (message in meta.warnings) is warned
 
 
+@pytest.mark.parametrize("copy, taken", [("1,1,2,2", True), ("1,2,2,2", False)])
+def test_a_counter_written_twice_takes_the_role_once(write, copy, taken):
+    # a real MTS TestSuite export: its '_Cycle' index beside the 'Cycle Channel' it copies
+    counts = copy.split(",")
+    text = "_Cycle,Load,Time,Cycle Channel\n_Cycle,kN,sec,count\n" + rows(*(
+        (cycle, load, 0.1 * i, count)
+        for i, (cycle, load, count) in enumerate(zip("1122", (0, 1, 0, 1), counts))))
+    table, meta = read_table(write("cable.csv", text), kind="wear", strict=False)
+    assert ("cycle_count" in table) is taken
+    if taken:
+        np.testing.assert_array_equal(table["cycle_count"], [1, 1, 2, 2])
+        assert ("column 'Cycle Channel' holds the values of '_Cycle' row for row: one channel "
+                "written twice, '_Cycle' is the cycle_count") in meta.warnings
+    else:
+        assert any("2 columns could be the cycle_count" in warning for warning in meta.warnings)
+
+
 def test_of_several_columns_for_one_role_none_is_taken_when_not_strict(write):
     # a results block left of the reading: the first was shown as the force, and drafted
     text = "Max force (N),Min force (N),Force (N),gauge [mm]\n" + rows(
