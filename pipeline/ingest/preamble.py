@@ -4,7 +4,8 @@ Lines of ``key : value``, ``key: value``, ``key = value``, ``"key","value"``
 or ``key<TAB>value`` before the names row become ``key -> value`` in
 :attr:`~pipeline.ingest.table.TableMetadata.preamble`; so do a row of names
 over a row of their values (a rig's settings: ``Stop buffer (mm),Syringe
-diameter (mm)`` over ``5,20.5``).
+diameter (mm)`` over ``5,20.5``), and so does each of several settings written in
+a line (``Sampling frequency [Hz]:<TAB>100<TAB>Cycles:<TAB>3000``).
 """
 
 from __future__ import annotations
@@ -48,7 +49,8 @@ def parse_preamble(lines: list[str], delimiter: str) -> dict[str, str]:
             pairs += paired
             index += used
             continue
-        pairs.append(_key_and_value(lines[index], delimiter))
+        pairs += _settings_in_a_row(lines[index], delimiter) or [
+            _key_and_value(lines[index], delimiter)]
         index += 1
     for key, value in pairs:
         if key is None:
@@ -70,6 +72,26 @@ def _without_common_mark(lines: list[str]) -> list[str]:
     if len(filled) < 2 or len(marks) != 1 or not marks <= set(_COMMENT_MARKS):
         return lines
     return [line.lstrip()[1:] for line in lines]
+
+
+def _settings_in_a_row(line: str, delimiter: str) -> list[tuple[str, str]]:
+    """The settings of a line that writes several side by side, each ``key:`` then its
+    value in the next field (a tribometer's ``Sampling frequency [Hz]:<TAB>100<TAB>Track
+    length [mm]:<TAB>5``), or each ``key: value`` in a field of its own (``Time: 15:54:46,
+    Device: D4E9``); [] for any other line."""
+    fields = [field.strip() for field in split_fields(line, delimiter) if field.strip()]
+    if len(fields) < 2 or " : " in line:
+        return []
+    keys, values = fields[::2], fields[1::2]
+    if (len(fields) % 2 == 0 and all(key.endswith(":") for key in keys)
+            and not any(value.endswith(":") for value in values)):
+        return [(key.rstrip(":").strip(), value) for key, value in zip(keys, values,
+                                                                        strict=True)]
+    split = [(field[:at], field[at + 1:]) for field in fields
+             if 0 < (at := _key_colon(field)) < len(field) - 1]
+    if len(split) == len(fields) and all(key.strip() and value.strip() for key, value in split):
+        return [(key.strip(), value.strip()) for key, value in split]
+    return []
 
 
 def _key_and_value(line: str, delimiter: str) -> tuple[str | None, str]:

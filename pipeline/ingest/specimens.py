@@ -59,8 +59,8 @@ def choose(labels: list[str], count: int, specimen: str | int | None, said: str,
         raise SpecimensError(
             said, specimens=labels or places, file=file, row=row,
             hint=f"say which one a run reads in the run sheet ({choices}; one run per "
-                 "specimen may name the same file), or export each specimen to a file of "
-                 "its own")
+                 "specimen may name the same file; chainbench inspect --specimen shows "
+                 "one), or export each specimen to a file of its own")
     if specimen in labels:
         return labels.index(specimen)
     if str(specimen) in places:

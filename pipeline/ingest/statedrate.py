@@ -22,18 +22,21 @@ from pipeline.ingest.names import fold, split_name_unit
 from pipeline.ingest.unitparse import spellings
 from pipeline.units import ureg
 
-#: Keys (folded, unit set apart) that name a sample rate [Hz] when no unit is written.
+#: Keys (folded, unit set apart) that name a sample rate [Hz] when no unit is written, perhaps
+#: after the instrument's name (``Force Sensor Sample rate``).
 _RATE_KEYS = re.compile(
-    r"sampl(?:e|ing)s?[ _-]?(?:rate|freq(?:uency)?)|sampling[ _-]?rate|"
+    r"(?:\S.* )?(?:sampl(?:e|ing)s?[ _-]?(?:rate|freq(?:uency)?|fequency)|sampling[ _-]?rate|"
     r"samples? ?(?:per ?|/ ?)s(?:ec(?:ond)?)?|"
     r"abtast(?:rate|frequenz)|サンプリング(?:周波数|レート)|采样(?:频率|率)|"
     r"(?:frecuencia|tasa) de muestreo|czestotliwosc probkowania|"
-    r"frequence d'echantillonnage|frequenza di campionamento")
+    r"frequence d'echantillonnage|frequenza di campionamento)")
 #: Keys that name a sample interval [s] when no unit is written.
 _INTERVAL_KEYS = re.compile(
-    r"sampl(?:e|ing)[ _-]?(?:interval|period)|abtast(?:intervall|periode)|"
+    r"(?:\S.* )?(?:sampl(?:e|ing)[ _-]?(?:interval|period)|abtast(?:intervall|periode)|"
     r"サンプリング(?:間隔|周期)|采样(?:间隔|周期)|intervalo de muestreo|okres probkowania|"
-    r"periode d'echantillonnage")
+    r"periode d'echantillonnage)")
+#: Words of a key that names another rate than the one used (a device's largest).
+_NOT_USED = re.compile(r"\b(?:max|maximum|min|minimum|limit|default|nominal|max\.|min\.)\b")
 #: Keys that state a sample rate or interval only with a unit.
 _UNIT_KEYS = re.compile(
     r"(?:scan|acquisition|data|logging|log|recording|measuring|measurement|mess)[ _-]?"
@@ -156,6 +159,8 @@ def _default_unit(name: str) -> str | None | bool:
     needed); False when the name names no sampling."""
     name = _EACH.sub("", name.strip().rstrip(":").strip())
     forms = (fold(name), name.casefold())  # folded, and as written (fold parts a kana's marks)
+    if _NOT_USED.search(forms[0]):
+        return False
     if any(_RATE_KEYS.fullmatch(form) for form in forms):
         return "Hz"
     if any(_INTERVAL_KEYS.fullmatch(form) for form in forms):

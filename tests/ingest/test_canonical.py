@@ -419,7 +419,7 @@ def test_a_counter_written_twice_takes_the_role_once(write, copy, taken):
     counts = copy.split(",")
     text = "_Cycle,Load,Time,Cycle Channel\n_Cycle,kN,sec,count\n" + rows(*(
         (cycle, load, 0.1 * i, count)
-        for i, (cycle, load, count) in enumerate(zip("1122", (0, 1, 0, 1), counts))))
+        for i, (cycle, load, count) in enumerate(zip("1122", (0, 1, 0, 1), counts, strict=True))))
     table, meta = read_table(write("cable.csv", text), kind="wear", strict=False)
     assert ("cycle_count" in table) is taken
     if taken:

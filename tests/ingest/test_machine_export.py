@@ -264,6 +264,12 @@ def test_run_sheet_columns_pick_among_candidates(write):
         (["Data Collection Duration (s):,1,,,,,,", "Force Sensor Sample rate (Hz):,1000,,,,,,",
           ",,,,,,,"],
          {"Data Collection Duration (s)": "1", "Force Sensor Sample rate (Hz)": "1000"}),
+        # a real tribometer's settings side by side, each key before its value
+        (["Sampling fequency [Hz]:\t100\tx-velocity [mm/s]: \t100\tCycles:\t3000"],
+         {"Sampling fequency [Hz]": "100", "x-velocity [mm/s]": "100", "Cycles": "3000"}),
+        # a real vibration logger's: several 'key: value' fields in a line
+        (["# Time: 2024-04-21 15:54:46.333682, Device: D4E9", "# Duration: 5.0 s"],
+         {"Time": "2024-04-21 15:54:46.333682", "Device": "D4E9", "Duration": "5.0 s"}),
     ],
 )
 def test_parse_preamble(lines, expected):
@@ -420,7 +426,7 @@ def test_a_time_without_unit_is_left_out_of_a_tensile_run_not_of_an_engagement_r
 
 def test_two_times_neither_preferred_are_left_out_of_a_tensile_run_with_a_warning(write):
     # a tensile run needs no time: the ambiguity is no reason to refuse its force and gauge
-    text = "Time (s),Testzeit (s),Load (N),Extension (mm)\n0,0,1,0.1\n1,1,2,0.2\n2,2,3,0.3\n"
+    text = "Time (s),Testzeit (s),Load (N),Extension (mm)\n0,5,1,0.1\n1,6,2,0.2\n2,7,3,0.3\n"
     table, meta = read_table(write("log.csv", text), kind="tensile")
     assert list(table.columns) == ["force", "gauge_1"]
     assert sum("which tensile runs do without" in warning for warning in meta.warnings) == 1

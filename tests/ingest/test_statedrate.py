@@ -89,6 +89,9 @@ def test_a_time_column_is_kept_whatever_rate_the_header_states(write):
     ({"Sample interval": "0.5 msec/sample"}, ".", 5e-4),
     ({"Interval": "0.01 s"}, ".", 0.01),  # a physiology recorder's
     ({"Interval": "10"}, ".", None),  # of what?
+    ({"Force Sensor Sample rate (Hz)": "1000"}, ".", 1e-3),  # a real logger's
+    ({"Sampling fequency [Hz]": "100"}, ".", 0.01),  # a real tribometer's, as it spells it
+    ({"Maximum sampling rate (Hz)": "5000"}, ".", None),  # the device's, not the one used
 ])
 def test_stated_rate(preamble, decimal, interval):
     stated = stated_rate(preamble, decimal)
