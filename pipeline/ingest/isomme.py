@@ -27,14 +27,11 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping
-from dataclasses import replace
-
-import numpy as np
 
 from pipeline.errors import LayoutError
-from pipeline.ingest.delimited import TextLayout, read_contiguous
+from pipeline.ingest.delimited import TextLayout
+from pipeline.ingest.onechannel import read_samples
 from pipeline.ingest.raw import RawTable
-from pipeline.ingest.roles import Candidates
 from pipeline.ingest.sniff import Head, TableSpec
 
 LAYOUT = "isomme"
@@ -100,7 +97,6 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
     LayoutError
         If the sampling interval or the time of the first sample is no number.
     """
-    header = TEXT.header(head, spec, columns)
     settings, _ = _settings(head)
     try:
         interval, start = (float(settings[key]) for key in (INTERVAL, FIRST_TIME))
@@ -108,12 +104,4 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
         raise LayoutError(
             f"the header's {INTERVAL!r} and {FIRST_TIME!r} are no numbers ({error})",
             file=head.name, hint="check the channel file's header") from error
-    samples = replace(spec, names=spec.names[1:], units=spec.units[1:], width=1)
-    channel = replace(header, names=header.names[1:], units=header.units[1:], candidates=(
-        Candidates({"channel": [0]}, frozenset()) if 1 in header.candidates.indexes()
-        else Candidates({}, frozenset())))
-    read_samples = read_contiguous(head, samples, channel)
-    arrays = {0: start + interval * np.arange(read_samples.rows)}
-    if 0 in read_samples.arrays:
-        arrays[1] = read_samples.arrays[0]
-    return header.table(arrays=arrays, rows=read_samples.rows, line_of=read_samples.line_of)
+    return read_samples(TEXT, head, spec, columns, start, interval)

@@ -365,16 +365,17 @@ def test_blank_and_missing_cells_after_a_comma_and_a_space_are_missing_values(wr
 
 
 def test_one_column_of_numbers_is_refused_as_such(write):
-    # a real LineScale tension meter log: key=value settings, then one force per line
-    text = "LogNo=002\nUnit=kN\nSpeed=1280\nTrig=0.70\n" + "1\n1.02\n1.05\n0.98\n" * 4
+    # a logger's key=value settings (none of LineScale's, whose logs are read), then one
+    # force per line
+    text = "Device=HX711\nUnit=kN\nRate=80\n" + "1\n1.02\n1.05\n0.98\n" * 4
     with pytest.raises(LayoutError, match="one column of numbers") as caught:
-        read_table(write("logfile_long1.csv", text))
+        read_table(write("log.csv", text))
     assert "beside the force" in caught.value.hint
-    # the same meter's short log: more settings lines than readings, the readings last
-    short = ("6B:6C:05\n15.05.22\n16:14:25\nLogNo=002\nUnit=kN\nMode=REL\nRelZero=0.02\n"
-             "Speed=40\nTrig=0.70\nStop=0.00\nPre=3\nCatch=15\n0.12\n0.35\n0.61\n0.40\n0.08\n")
+    # a short log: more settings lines than readings, the readings last
+    short = ("6B:6C:05\n15.05.22\n16:14:25\nDevice=HX711\nUnit=kN\nRate=80\nGain=128\n"
+             "Offset=8412\nScale=2280\nTare=1\nFilter=0\nMode=1\n0.12\n0.35\n0.61\n0.40\n0.08\n")
     with pytest.raises(LayoutError, match="one column of numbers"):
-        read_table(write("logfile0.csv", short))
+        read_table(write("log0.csv", short))
 
 
 def test_a_lone_point_is_a_missing_value(write):

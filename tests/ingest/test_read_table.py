@@ -8,8 +8,8 @@ from pipeline.ingest import FORMATS, read_table
 
 def test_formats_listed():
     assert FORMATS == ("auto", "csv", "xlsx", "ods", "xls", "tdms", "lvm", "catman", "rigol",
-                       "tektronix", "gwinstek", "isomme", "merlin", "mts", "machine_export",
-                       "european_csv", "plain_csv")
+                       "tektronix", "gwinstek", "isomme", "linescale", "merlin", "mts",
+                       "machine_export", "european_csv", "plain_csv")
 
 
 def test_unknown_format(write):
