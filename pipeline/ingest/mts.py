@@ -51,6 +51,7 @@ from typing import NamedTuple
 
 from pipeline.errors import LayoutError
 from pipeline.ingest.delimited import raw_table, text_header
+from pipeline.ingest.names import says_part
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.sniff import Head, TableSpec, split_fields
@@ -117,24 +118,27 @@ def _unlabelled(line: str, delimiter: str) -> str:
 
 
 def _block_openers(head: Head, spec: TableSpec) -> set[str]:
-    """The first fields of the lines above the names row, where they hold a letter: a line
-    below the data that begins so, numbers or nothing after, opens a block."""
-    firsts = (_first_field(line, spec.delimiter) for line in head.lines[:spec.header_index])
-    return {first for first in firsts if any(char.isalpha() for char in first)}
+    """The lines above the names row with a letter in them, stripped, and their first fields:
+    a line below the data that is one of them, or begins with one, numbers or nothing after,
+    opens a block."""
+    lines = [line.strip() for line in head.lines[:spec.header_index]
+             if any(char.isalpha() for char in line)]
+    firsts = (_first_field(line, spec.delimiter) for line in lines)
+    return {*lines, *(first for first in firsts if any(char.isalpha() for char in first))}
 
 
 def _first_field(line: str, delimiter: str) -> str:
     """The first field of `line`, stripped."""
-    return split_fields(line.strip(), delimiter)[0].strip()
+    return (split_fields(line.strip(), delimiter) or [""])[0].strip()
 
 
 def _opens(line: str, openers: set[str], delimiter: str) -> bool:
-    """Whether `line` opens a block: it begins with one of `openers` (:func:`_block_openers`),
-    the numbers of a counter or nothing after (TestStar's ``Axial Counts<TAB>0``, with a
-    second count further right in some exports)."""
-    fields = split_fields(line.strip(), delimiter)
-    return fields[0].strip() in openers and all(
-        not field.strip() or field.strip().isdecimal() for field in fields[1:])
+    """Whether `line` opens a block: it is one of `openers` (:func:`_block_openers`), or
+    begins with one, the numbers of a counter or nothing after (TestStar's ``Axial
+    Counts<TAB>0``, with a second count further right in some exports)."""
+    fields = split_fields(line.strip(), delimiter) or [""]
+    return line.strip() in openers or (fields[0].strip() in openers and all(
+        not field.strip() or field.strip().isdecimal() for field in fields[1:]))
 
 
 def read(head: Head, spec: TableSpec, columns: Mapping | None = None,
@@ -155,14 +159,17 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None,
     first_line = spec.data_index + 1
     marked = _marked_headers(head, spec, data, first_line)
     data = marked.data
+    # the time, if one column may be it: of several, one not named as a part's (TestStar's
+    # Scan Time starts again in each block of a test, its Elapsed Time goes on)
     times = header.candidates.roles.get("time", [])
-    blocks = _later_blocks(head, spec, data, times)
+    times = [time for time in times if not says_part(header.names[time])] or times
+    blocks = _later_blocks(head, spec, data, times[0] if len(times) == 1 else None)
     tests = [block for block in blocks if block.restarts and not block.other]
     part = range(start, head.size)
     if tests:
         data, blocks, part, first_line = _one_test(head, marked, blocks, tests, start,
                                                    first_line, specimen, header.metadata,
-                                                   timed=bool(times))
+                                                   timed=len(times) == 1)
     same = [block for block in blocks if not block.other]
     header.metadata.preamble["blocks"] = str(1 + sum(block.opens for block in same))
     header.metadata.warnings += [block.note for block in blocks if block.other]
@@ -302,11 +309,10 @@ class _Block(NamedTuple):
     restarts: bool = False  #: whether its time starts again (a test of its own)
 
 
-def _later_blocks(head: Head, spec: TableSpec, data: bytes, times: list[int]
-                  ) -> list[_Block]:
+def _later_blocks(head: Head, spec: TableSpec, data: bytes, time: int | None) -> list[_Block]:
     """The blocks after the first in `data` (the file from the first block's points on):
-    each a run of header lines and the points up to the next. `times` are the columns that
-    may be the time."""
+    each a run of header lines and the points up to the next. `time` is the column of
+    the time, if one column may be it."""
     codec = head.codec if head.ascii_compatible else "utf-8"
     groups: list[list[int]] = []  # [start, end) of each run of header lines
     for match in _HEADER_LINE.finditer(data):
@@ -317,9 +323,9 @@ def _later_blocks(head: Head, spec: TableSpec, data: bytes, times: list[int]
     ends = [start for start, _ in groups[1:]] + [len(data)] if groups else []
     first = _FirstBlock(head.lines[spec.header_index].strip(),
                         head.lines[spec.units_index].strip() if spec.units_index is not None
-                        else None, _block_openers(head, spec), tuple(times),
-                        tuple(_number(split_fields(head.lines[spec.data_index], spec.delimiter),
-                                      time, spec) for time in times))
+                        else None, _block_openers(head, spec), time,
+                        _number(split_fields(head.lines[spec.data_index], spec.delimiter),
+                                time, spec))
     view = memoryview(data)  # the blocks' points read in place, not copied
     blocks, line, counted = [], spec.data_index + 1, 0  # the file's line at offset `counted`
     for (start, header_end), end in zip(groups, ends, strict=True):
@@ -338,8 +344,8 @@ class _FirstBlock(NamedTuple):
     names: str
     units: str | None
     openers: set[str]
-    times: tuple[int, ...]  #: the columns that may be the time
-    start_times: tuple[float | None, ...]  #: their first readings
+    time: int | None  #: the time's column, if one column may be it
+    start_time: float | None  #: its first reading
 
 
 def _block(spec: TableSpec, first: _FirstBlock, header_text: str, points: memoryview,
@@ -374,13 +380,9 @@ def _block(spec: TableSpec, first: _FirstBlock, header_text: str, points: memory
         return _Block(start, lines, opens, True, (
             f"{where}: a block of two rows, each column's largest value then its smallest, "
             "is the test's peaks, not samples: left out"))
-    starts = [(_number(fields, time, spec), start)
-              for time, start in zip(first.times, first.start_times, strict=True)]
-    # a test of its own when every time starts again (TestStar's Scan Time starts again in
-    # each block, its Elapsed Time goes on)
-    restarts = (bool(starts) and all(time is not None and start is not None and time <= start
-                                     for time, start in starts)
-                or (not first.times and opens and bool(rows)))
+    time = _number(fields, first.time, spec)
+    restarts = (time is not None and first.start_time is not None
+                and time <= first.start_time) or (first.time is None and opens and bool(rows))
     return _Block(start, lines, opens, False, "", restarts)
 
 
