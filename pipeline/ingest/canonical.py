@@ -60,6 +60,7 @@ from pipeline.ingest.names import (
     says_part,
     says_sign_convention,
     says_total,
+    says_weight,
     tokens,
 )
 from pipeline.ingest.raw import RawColumns, RawTable
@@ -604,14 +605,23 @@ def _spectrum_note(raw: RawColumns) -> str:
 
 def _weight_note(raw: RawColumns, empty: set[int]) -> str:
     """What the hint of a missing force says of the columns in a unit of mass whose name
-    gives no role (a load cell's ``Value [kg]``): a mass alone makes no force, but such a
-    column may be the load, as the weight of that mass; or ""."""
-    found = [index for index, unit in enumerate(raw.units) if index not in empty
-             and match_role(raw.names[index]) is None and not is_unmeasured(raw.names[index])
-             and is_mass_unit(unit)]
-    return "".join(f"column {display_name(raw.names, index)!r} is in {raw.units[index]}, a "
-                   "mass: if it is the load, name it as the force (read as the weight of that "
-                   "mass); " for index in found)
+    gives no role (a load cell's ``Value [kg]``), and of those named as a weight without a
+    unit (a load-cell logger's ``weight``): a mass alone makes no force, but such a column
+    may be the load, as the weight of that mass; or ""."""
+    notes = []
+    for index, unit in enumerate(raw.units):
+        name = raw.names[index]
+        if index in empty or match_role(name) is not None or is_unmeasured(name):
+            continue
+        shown = display_name(raw.names, index)
+        if is_mass_unit(unit):
+            notes.append(f"column {shown!r} is in {unit}, a mass: if it is the load, name it "
+                         "as the force (read as the weight of that mass); ")
+        elif unit is None and says_weight(name):
+            notes.append(f"column {shown!r} is named as a weight, with no unit: if it is the "
+                         "load, name it as the force with its unit (a mass's, kg or g, is read "
+                         "as the weight of that mass); ")
+    return "".join(notes)
 
 
 def _si_unit(name: str) -> str:

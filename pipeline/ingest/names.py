@@ -624,6 +624,21 @@ def says_total(name: str) -> bool:
     return not TOTAL_WORDS.isdisjoint(words) or any(word.startswith("gesamt") for word in words)
 
 
+#: Words of a column's name that call it a weight or a mass (a hanging-scale or a
+#: load-cell logger's ``weight``): no role, but perhaps the load.
+WEIGHT_WORDS = frozenset({"weight", "mass", "gewicht", "masse", "peso", "masa", "waga",
+                          "poids", "massa", "重量", "質量", "质量"})
+
+
+def says_weight(name: str) -> bool:
+    """Whether a column's name calls it a weight or a mass (:data:`WEIGHT_WORDS`).
+
+    >>> [says_weight(name) for name in ("weight", "Weight_g", "Load")]
+    [True, True, False]
+    """
+    return not WEIGHT_WORDS.isdisjoint(tokens(name))
+
+
 def says_part(name: str) -> bool:
     """Whether a column name opens with :data:`PART_WORDS`: a time (or count) of a part of
     the test, which starts again with each.

@@ -107,6 +107,11 @@ def test_a_column_of_one_value_beside_the_first_sample_is_no_channel(write):
     ("time [s],Value [kg],Temperature [kg]\n0,1.5,20\n1,2.5,21\n",
      "column 'Value' is in kg, a mass: if it is the load, name it as the force (read as "
      "the weight of that mass); the file has"),
+    # a real pull-test dynamometer's 'time,weight' (kg, but the file does not say)
+    ("time [s],weight\n0.0,5.35\n0.1,7.12\n",
+     "column 'weight' is named as a weight, with no unit: if it is the load, name it as the "
+     "force with its unit (a mass's, kg or g, is read as the weight of that mass); the file "
+     "has"),
 ])
 def test_the_hint_of_a_missing_role_says_what_a_column_may_be(write, text, said):
     with pytest.raises(ColumnError) as caught:
