@@ -93,7 +93,9 @@ def test_a_log_longer_than_a_chunk_is_read_from_its_file_in_chunks_with_the_same
     np.testing.assert_array_equal(a["time"], b["time"])  # the stored preview
 
 
-def test_an_engagement_log_with_a_rigs_event_lines_is_read_as_inspect_reads_it(lab, tmp_path):
+def processed_tdms_wheel(lab: Path, tmp_path: Path):
+    """A copy of the engagement campaign with its stiffness given, processed: the folder,
+    its run sheet, the result, and its TDMS log's canonical table."""
     from pipeline.ingest import read_table
 
     wheel = wheel_using(lab, tmp_path / "wheel", "unused")
@@ -102,6 +104,11 @@ def test_an_engagement_log_with_a_rigs_event_lines_is_read_as_inspect_reads_it(l
                             flags=re.M))
     whole = process_campaign(wheel, tmp_path / "tdms")
     table, _ = read_table(next(wheel.glob("*.tdms")), kind="engagement")
+    return wheel, sheet, whole, table
+
+
+def test_an_engagement_log_with_a_rigs_event_lines_is_read_as_inspect_reads_it(lab, tmp_path):
+    wheel, sheet, whole, table = processed_tdms_wheel(lab, tmp_path)
     rows = [f"{t},{f},{a}" for t, f, a in table[["time", "force", "angle"]].to_numpy()]
     rows.insert(5000, f"{table['time'][4999]},Speed set to 20 rad/s,")
     (wheel / "log.csv").write_text("time [s],force [N],angle [rad]\n" + "\n".join(rows) + "\n")
@@ -151,14 +158,7 @@ def test_a_wear_logs_counter_of_segments_or_of_scaled_cycles_is_refused(
 
 def test_an_engagement_log_without_time_is_read_at_the_run_sheets_sample_rate(lab, tmp_path):
     # a logger that writes one row a sample and no time: the run sheet gives the rate
-    from pipeline.ingest import read_table
-
-    wheel = wheel_using(lab, tmp_path / "wheel", "unused")
-    sheet = wheel / "campaign.toml"
-    sheet.write_text(re.sub(r'^stiffness_from = .*$', "E0_N = 22600000", sheet.read_text(),
-                            flags=re.M))
-    whole = process_campaign(wheel, tmp_path / "tdms")
-    table, _ = read_table(next(wheel.glob("*.tdms")), kind="engagement")
+    wheel, sheet, whole, table = processed_tdms_wheel(lab, tmp_path)
     step = np.diff(table["time"].to_numpy())
     assert table["time"].iloc[0] == 0 and np.allclose(step, 1e-4, rtol=1e-9, atol=0)
     rows = [f"{f},{a}" for f, a in table[["force", "angle"]].to_numpy()]

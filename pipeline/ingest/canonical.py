@@ -830,12 +830,15 @@ def _without_copies(raw: RawColumns, live: list[int], role: str) -> list[int]:
     """The columns `live` but those holding the values of one before them row for row, in
     the same unit (any count, for a counter), each warned of: one channel written twice (MTS
     TestSuite's ``_Cycle`` index beside the ``Cycle Channel`` it copies) takes the role once.
-    All kept when the readings are not at hand (a log read by ranges)."""
-    if not isinstance(raw, RawTable):
+    All kept when the readings are not at hand (a log read by ranges), or are too few to
+    tell a copy from a coincidence (under :data:`LONE_ROWS` rows, or one value throughout:
+    a table of results)."""
+    if not isinstance(raw, RawTable) or raw.rows < LONE_ROWS:
         return live
     kept: list[int] = []
     for index in live:
         copied = next((first for first in kept if _same_unit(raw, first, index, role)
+                       and not _constant(raw, first)
                        and np.array_equal(raw.arrays[first], raw.arrays[index], equal_nan=True)),
                       None)
         if copied is None:

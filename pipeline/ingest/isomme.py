@@ -30,7 +30,7 @@ from collections.abc import Mapping
 
 from pipeline.errors import LayoutError
 from pipeline.ingest.delimited import TextLayout
-from pipeline.ingest.onechannel import read_samples
+from pipeline.ingest.onechannel import read_samples, settings_over_samples
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.sniff import Head, TableSpec
 
@@ -38,8 +38,6 @@ LAYOUT = "isomme"
 
 #: A header line: a key, blanks, a colon and the value.
 _SETTING = re.compile(r"(?P<key>[^:\d][^:]*?)\s*:(?P<value>.*)")
-#: A sample's line: one number.
-_SAMPLE = re.compile(r"\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*")
 #: The settings that make a file an ISO-MME channel, folded, and those it is read by.
 INTERVAL, FIRST_TIME, NAME, UNIT = ("sampling interval", "time of first sample",
                                     "name of the channel", "unit")
@@ -50,16 +48,7 @@ TIME_NAME = "Time"
 def _settings(head: Head) -> tuple[dict[str, str], int | None]:
     """The header's settings (keys folded) and the index of the first sample's line (None
     when no line of one number follows the header)."""
-    settings: dict[str, str] = {}
-    for index, line in enumerate(head.lines):
-        found = _SETTING.fullmatch(line.strip())
-        if found is not None:
-            settings[found["key"].strip().casefold()] = found["value"].strip()
-        elif _SAMPLE.fullmatch(line):
-            return settings, index
-        elif line.strip():
-            return settings, None
-    return settings, None
+    return settings_over_samples(head, _SETTING)
 
 
 def matches(head: Head, spec: TableSpec | None = None) -> bool:

@@ -36,7 +36,7 @@ from collections.abc import Mapping
 
 from pipeline.errors import LayoutError
 from pipeline.ingest.delimited import TextLayout
-from pipeline.ingest.onechannel import read_samples
+from pipeline.ingest.onechannel import read_samples, settings_over_samples
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.sniff import Head, TableSpec, is_number
 
@@ -54,17 +54,9 @@ NAMES = ("Time", "Force")
 
 def _settings(head: Head) -> tuple[dict[str, str], int | None]:
     """The header's settings (keys folded) and the index of the first reading's line (None
-    when no line of one number follows the settings)."""
-    settings: dict[str, str] = {}
-    for index, line in enumerate(head.lines):
-        found = _SETTING.fullmatch(line.strip())
-        if found is not None:
-            settings[found["key"].casefold()] = found["value"]
-        elif settings and is_number(line.strip(), "."):
-            return settings, index
-        elif settings:
-            return settings, None
-    return settings, None
+    when no line of one number follows the settings); the device, date and time above them
+    are passed over."""
+    return settings_over_samples(head, _SETTING, lead=True)
 
 
 def matches(head: Head, spec: TableSpec | None = None) -> bool:

@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from dataclasses import replace
 
@@ -11,7 +12,26 @@ import numpy as np
 from pipeline.ingest.delimited import TextLayout, read_contiguous
 from pipeline.ingest.raw import RawTable
 from pipeline.ingest.roles import Candidates
-from pipeline.ingest.sniff import Head, TableSpec
+from pipeline.ingest.sniff import Head, TableSpec, is_number
+
+
+def settings_over_samples(head: Head, setting: re.Pattern, lead: bool = False
+                          ) -> tuple[dict[str, str], int | None]:
+    """The header's settings, each a line `setting` matches whole (groups ``key`` and
+    ``value``; keys folded, both stripped), and the index of the first sample's line, the
+    first of one number after them (None when another line follows them). Lines before
+    the first setting are passed over when `lead` (a device's name, a date), else they end
+    the header."""
+    settings: dict[str, str] = {}
+    for index, line in enumerate(head.lines):
+        found = setting.fullmatch(line.strip())
+        if found is not None:
+            settings[found["key"].strip().casefold()] = found["value"].strip()
+        elif is_number(line.strip(), ".") and (settings or not lead):
+            return settings, index
+        elif line.strip() and (settings or not lead):
+            return settings, None
+    return settings, None
 
 
 def read_samples(layout: TextLayout, head: Head, spec: TableSpec, columns: Mapping | None,

@@ -418,21 +418,32 @@ def test_a_file_holding_more_rows_than_its_header_states_is_warned_of(write, sta
         assert (message in meta.warnings) is warned
 
 
-@pytest.mark.parametrize("copy, taken", [("1,1,2,2", True), ("1,2,2,2", False)])
-def test_a_counter_written_twice_takes_the_role_once(write, copy, taken):
+@pytest.mark.parametrize("copied, taken", [(True, True), (False, False)])
+def test_a_counter_written_twice_takes_the_role_once(write, copied, taken):
     # a real MTS TestSuite export: its '_Cycle' index beside the 'Cycle Channel' it copies
-    counts = copy.split(",")
+    cycles = [1 + i // 4 for i in range(12)]
+    counts = cycles if copied else cycles[:5] + [cycles[5] + 1] + cycles[6:]
     text = "_Cycle,Load,Time,Cycle Channel\n_Cycle,kN,sec,count\n" + rows(*(
-        (cycle, load, 0.1 * i, count)
-        for i, (cycle, load, count) in enumerate(zip("1122", (0, 1, 0, 1), counts, strict=True))))
+        (cycle, i % 2, 0.1 * i, count)
+        for i, (cycle, count) in enumerate(zip(cycles, counts, strict=True))))
     table, meta = read_table(write("cable.csv", text), kind="wear", strict=False)
     assert ("cycle_count" in table) is taken
     if taken:
-        np.testing.assert_array_equal(table["cycle_count"], [1, 1, 2, 2])
+        np.testing.assert_array_equal(table["cycle_count"], cycles)
         assert ("column 'Cycle Channel' holds the values of '_Cycle' row for row: one channel "
                 "written twice, '_Cycle' is the cycle_count") in meta.warnings
     else:
         assert any("2 columns could be the cycle_count" in warning for warning in meta.warnings)
+
+
+@pytest.mark.parametrize("count", [12, 4])
+def test_columns_alike_by_chance_are_no_copy(write, count):
+    # a jump analysis's results: two times equal over a few rows, or one value throughout
+    times = [0.1 * (i % 3) for i in range(count)] if count < 10 else [0.5] * count
+    text = "movement_time,propulsive_time,force [N],gauge [mm]\n" + rows(*(
+        (t, t, i, i / 10) for i, t in enumerate(times)))
+    _, meta = read_table(write("results.csv", text), kind="tensile", strict=False)
+    assert any("2 columns could be the time" in warning for warning in meta.warnings)
 
 
 def test_of_several_columns_for_one_role_none_is_taken_when_not_strict(write):
