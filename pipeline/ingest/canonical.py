@@ -66,7 +66,7 @@ from pipeline.ingest.names import (
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import SHEET_KEY, display_name, role_of_key
 from pipeline.ingest.specimens import choose
-from pipeline.ingest.statedrate import stated_rate, unread_rate
+from pipeline.ingest.statedrate import built_note, stated_rate, unread_rate
 from pipeline.ingest.table import GAP_FACTOR, ROLES, ColumnInfo, TableMetadata
 from pipeline.ingest.unitparse import (
     FORCE_ROLES,
@@ -341,10 +341,8 @@ def _stated_interval(raw: RawColumns, ambiguous: set[str], sample_rate_hz: float
         unlike = (f"; the header states {stated.said}, which is not used"
                   if stated is not None and not (stated.interval and math.isclose(
                       stated.interval, interval, rel_tol=1e-6)) else "")
-        meta.warnings.append(
-            f"the file has no time column: time is built from the run sheet's "
-            f"sample_rate_hz = {sample_rate_hz:g} (one row each {interval:g} s, 0 at the "
-            f"first row){unlike}")
+        meta.warnings.append(built_note(f"the run sheet's sample_rate_hz = {sample_rate_hz:g}",
+                                        interval) + unlike)
         return interval
     if stated is None:
         return None
@@ -855,8 +853,9 @@ def _same_unit(raw: RawColumns, first: int, second: int, role: str) -> bool:
     """Whether two columns are in one unit as written (any count, for a counter)."""
     if role == "cycle_count":
         return is_counter_unit(raw.units[first]) and is_counter_unit(raw.units[second])
-    return (raw.units[first] or "").strip().casefold() == (raw.units[second] or "").strip(
-    ).casefold()
+    first_unit, second_unit = ((raw.units[index] or "").strip().casefold()
+                               for index in (first, second))
+    return first_unit == second_unit
 
 
 def _says_strain(name: str) -> bool:

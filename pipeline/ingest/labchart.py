@@ -49,8 +49,8 @@ def _header(head: Head) -> tuple[dict[str, list[str]], dict[str, int], int | Non
         if key.endswith("=") and len(key) > 1:
             values[key[:-1]] = [cell.strip() for cell in cells[1:]]
             lines[key[:-1]] = index
-        elif values and cells and all(is_number(cell.strip(), ".") for cell in cells
-                                      if cell.strip()) and any(cell.strip() for cell in cells):
+        elif values and (filled := [cell.strip() for cell in cells if cell.strip()]) and all(
+                is_number(cell, ".") for cell in filled):
             return values, lines, index
         else:
             return values, lines, None
@@ -72,18 +72,21 @@ def table_spec(head: Head) -> TableSpec:
     """Where the samples of a LabChart export sit, their names and units."""
     values, lines, first = _header(head)
     titles = values[TITLES]
-    units = [None if unit in ("", NO_UNIT) else unit for unit in values.get(UNITS, [])]
-    units += [None] * (len(titles) - len(units))
+    units = _padded([None if unit in ("", NO_UNIT) else unit
+                     for unit in values.get(UNITS, [])], len(titles), None)
     width = len(split_fields(head.lines[first], "\t"))
-    timed = width == len(titles) + 1
-    # seconds from the block's start; a time of day is left to the clock readers
-    seconds = values.get("TimeFormat", [""])[:1] in ([""], ["StartOfBlock"])
-    names = [TIME_NAME, *titles] if timed else list(titles)
-    units = [("s" if seconds else None), *units[:len(titles)]] if timed else units[:len(titles)]
-    names += [""] * (width - len(names))
-    units += [None] * (width - len(units))
+    if width == len(titles) + 1:  # the time first: in seconds from the block's start, a
+        # time of day left to the clock readers
+        seconds = values.get("TimeFormat", [""])[:1] in ([""], ["StartOfBlock"])
+        titles, units = [TIME_NAME, *titles], ["s" if seconds else None, *units]
     return TableSpec(
-        delimiter="\t", decimal=".", names=names[:width], header_index=lines[TITLES],
-        units_index=None, data_index=first, width=width, units=units[:width],
+        delimiter="\t", decimal=".", names=_padded(titles, width, ""),
+        header_index=lines[TITLES], units_index=None, data_index=first, width=width,
+        units=_padded(units, width, None),
         preamble=[line for line in head.lines[:first] if line.strip()],
     )
+
+
+def _padded(items: list, length: int, fill: object) -> list:
+    """`items` cut or padded with `fill` to `length`."""
+    return (list(items) + [fill] * length)[:length]

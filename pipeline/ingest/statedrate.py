@@ -73,8 +73,13 @@ class StatedRate:
 
     def note(self) -> str:
         """The note of a time built from :attr:`interval`."""
-        return (f"the file has no time column: time is built from the header's {self.said} "
-                f"(one row each {self.interval:g} s, 0 at the first row)")
+        return built_note(f"the header's {self.said}", self.interval)
+
+
+def built_note(source: str, interval: float) -> str:
+    """The note of a time built a row each `interval` [s] from what `source` states."""
+    return (f"the file has no time column: time is built from {source} (one row each "
+            f"{interval:g} s, 0 at the first row)")
 
 
 def stated_rate(preamble: Mapping[str, str], decimal: str | None = None) -> StatedRate | None:
