@@ -518,6 +518,8 @@ def test_a_file_without_names_gets_no_role_from_a_position(write):
     with pytest.raises(LayoutError, match="no names row") as caught:  # nothing named
         read_table(path, kind="tensile")
     assert 'columns = {time = "column 1", force = "column 2"}' in caught.value.hint
+    # a mooring chain logger's columns are raw counts: the units are not theirs to give
+    assert "raw counts or volts are converted to a force" in caught.value.hint
     # a role the run sheet names is read; the others are not guessed from their place
     with pytest.raises(ColumnError, match="no gauge column found") as missing:
         read_table(path, kind="tensile", columns={"force": "column 2"}, units={"force": "kN"})
