@@ -67,9 +67,10 @@ from pipeline.ingest.textbody import (
 
 LAYOUT = "mts"
 
-# A data line starts with a number, a missing-value token or an empty first field (not a
-# rule of dashes under a title: a BAM export's ``-----``, which opens the next export).
-_DATA_START = (r"[ \t]*(?:[-+]?\.?\d|[-+.] *(?=[\t;,|\r\n]|$)"
+# A data line starts with a number (perhaps quoted, as Shimadzu Trapezium quotes every
+# field), a missing-value token or an empty first field (not a rule of dashes under a
+# title: a BAM export's ``-----``, which opens the next export).
+_DATA_START = (r"[ \t]*(?:\"?[-+]?\.?\d|[-+.] *(?=[\t;,|\r\n]|$)"
                r"|(?i:nan|n/a|na|null) *(?=[\t;,|\r\n]|$)|(?=[\t;,|\r\n]|$))")
 _HEADER_LINE = re.compile(rb"(?m)^(?!" + _DATA_START.encode() + rb")[^\r\n]*(?:\r\n|\r|\n|\Z)")
 _DATA_LINE = re.compile(_DATA_START)
@@ -228,9 +229,10 @@ def _marked_headers(head: Head, spec: TableSpec, data: bytes, first_line: int) -
     unlabelled = _unlabelled(names, spec.delimiter)
     units = (head.lines[spec.units_index].strip()
              if spec.units_index is not None else "")
+    codec = head.codec if head.ascii_compatible else "utf-8"  # the data's, as read
     cuts = set()
     label = rb"\d+[ \t]*" if unlabelled != names else b""
-    for found in re.finditer(rb"(?m)^[ \t]*" + label + re.escape(unlabelled.encode())
+    for found in re.finditer(rb"(?m)^[ \t]*" + label + re.escape(unlabelled.encode(codec))
                              + rb"[ \t]*\r?$", data):
         if label:
             cuts.add(found.start())
@@ -240,7 +242,7 @@ def _marked_headers(head: Head, spec: TableSpec, data: bytes, first_line: int) -
             cuts.add(line_start)
     if units.strip(" \t;,|") and _DATA_LINE.match(units):
         cuts.update(found.start() for found in re.finditer(
-            rb"(?m)^[ \t]*" + re.escape(units.encode()) + rb"[ \t]*\r?$", data))
+            rb"(?m)^[ \t]*" + re.escape(units.encode(codec)) + rb"[ \t]*\r?$", data))
     ordered = sorted(cuts)
     bounds = [0, *ordered, len(data)]
     marked = b"".join(data[a:b] if index == 0 else HEADER_MARK + data[a:b]

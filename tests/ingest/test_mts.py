@@ -295,3 +295,49 @@ def test_blocks_whose_time_runs_on_are_one_test(write):
     table, meta = read_table(write("blocks.csv", appended(tests=2, points=20, runs_on=True)))
     assert meta.layout == "mts" and meta.preamble["blocks"] == "2" and len(table) == 40
     np.testing.assert_allclose(table["time"], np.arange(40) / 10)
+
+
+def trapezium(blocks: list[tuple[float, float]], names: str = '"Time","Force","Stroke"'
+              ) -> str:
+    """A Shimadzu Trapezium export (its layout, after a real loader; our numbers): the
+    test's settings and the specimens' results above, then each block under its number,
+    the names and the units, every field quoted. Each block: (first time [s], force scale
+    [N]), 30 points 0.5 s apart."""
+    lines = ['"Test Date","Test Name","Machine"', '"2019/11/01","Tensile","AG-X 300kN"', "",
+             '"","Max","Max"', '"","Force","Stroke"', '"","N","mm"', '"Name","",""',
+             '"1","143912","27.71"', '"2","139595","27.10"']
+    for number, (start, scale) in enumerate(blocks, start=1):
+        lines += ["", f'"{number}"', names, '"sec","N","mm"']
+        lines += [f'"{start + 0.5 * i:g}","{scale * i:.1f}","{0.01 * i:.3f}"'
+                  for i in range(30)]
+    return "\r\n".join(lines) + "\r\n"
+
+
+def test_a_trapezium_exports_quoted_specimens_are_read_one_at_a_time(write):
+    # its quoted numbers were no data lines to the reader: the whole file, a header,
+    # "Empty CSV file"
+    path = write("trapezium.csv", trapezium([(0.0, 100.0), (0.0, 200.0)]))
+    with pytest.raises(SpecimensError, match="the file holds 2 tests") as caught:
+        read_table(path)
+    assert caught.value.row == 45  # the second block's number
+    for specimen in (1, 2):
+        table, meta = read_table(path, specimen=specimen)
+        assert meta.layout == "mts" and len(table) == 30
+        np.testing.assert_allclose(table["force"], 100.0 * specimen * np.arange(30))
+        np.testing.assert_allclose(table["time"], 0.5 * np.arange(30))
+
+
+def test_a_trapezium_exports_japanese_cycles_whose_time_runs_on_are_one_test(write):
+    # in Shift-JIS the names row was looked for in UTF-8 and not found: the second block's
+    # number above it was read as a row of one field and the file refused
+    names = '"時間","試験力","ストローク"'
+    cycles = write("cycles.csv", trapezium([(0.0, 100.0), (15.0, 100.0), (30.0, 100.0)],
+                                           names), "cp932")
+    table, meta = read_table(cycles)
+    assert meta.encoding == "cp932" and len(table) == 90
+    np.testing.assert_allclose(table["time"], 0.5 * np.arange(90))
+    np.testing.assert_allclose(table["force"], np.tile(100.0 * np.arange(30), 3))
+    specimens = write("specimens.csv", trapezium([(0.0, 100.0), (0.0, 200.0)], names),
+                      "cp932")
+    table, _ = read_table(specimens, specimen=1)
+    np.testing.assert_allclose(table["force"], 100.0 * np.arange(30))
