@@ -76,6 +76,7 @@ from pipeline.ingest.unitparse import (
     is_mass_unit,
     is_micro_alone,
     is_strain_unit,
+    is_voltage_unit,
     si_factor,
     unit_fits,
     unit_misfits,
@@ -605,7 +606,8 @@ def _weight_note(raw: RawColumns, empty: set[int]) -> str:
     """What the hint of a missing force says of the columns in a unit of mass whose name
     gives no role (a load cell's ``Value [kg]``), and of those named as a weight without a
     unit (a load-cell logger's ``weight``): a mass alone makes no force, but such a column
-    may be the load, as the weight of that mass; or ""."""
+    may be the load, as the weight of that mass; and of those in volts (a logger's input
+    ``(1)HA-V01``), a sensor's signal that no reader turns into a force; or ""."""
     notes = []
     for index, unit in enumerate(raw.units):
         name = raw.names[index]
@@ -615,6 +617,10 @@ def _weight_note(raw: RawColumns, empty: set[int]) -> str:
         if is_mass_unit(unit):
             notes.append(f"column {shown!r} is in {unit}, a mass: if it is the load, name it "
                          "as the force (read as the weight of that mass); ")
+        elif is_voltage_unit(unit):
+            notes.append(f"column {shown!r} is in {unit}, a sensor's signal: if it is the "
+                         "load, convert it to a force with the sensor's calibration first "
+                         "(the readers apply none); ")
         elif unit is None and says_weight(name):
             notes.append(f"column {shown!r} is named as a weight, with no unit: if it is the "
                          "load, name it as the force with its unit (a mass's, kg or g, is read "

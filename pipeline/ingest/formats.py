@@ -23,6 +23,7 @@ from pipeline.ingest import (
     delimited,
     gwinstek,
     isomme,
+    keyence,
     labchart,
     linescale,
     lvm,
@@ -46,11 +47,12 @@ from pipeline.ingest.source import Source
 
 #: Text layouts, in the order they are tried on a file (an Instron Merlin export, a LabVIEW
 #: measurement file, an HBM catman export, a Rigol, Tektronix or GW Instek oscilloscope's
-#: export, an ISO-MME channel file, a LineScale log and a LabChart export are known by
-#: their first lines, before a table is looked for).
+#: export, an ISO-MME channel file, a LineScale log, a LabChart export and a KEYENCE
+#: logger's are known by their first lines, before a table is looked for).
 TEXT_LAYOUTS = {lvm.LAYOUT: lvm, catman.LAYOUT: catman.TEXT, rigol.LAYOUT: rigol,
                 tektronix.LAYOUT: tektronix.TEXT, gwinstek.LAYOUT: gwinstek.TEXT,
                 isomme.LAYOUT: isomme, linescale.LAYOUT: linescale, labchart.LAYOUT: labchart.TEXT,
+                keyence.LAYOUT: keyence.TEXT,
                 merlin.LAYOUT: merlin, mts.LAYOUT: mts,
                 **{layout.name: layout for layout in delimited.LAYOUTS}}
 
@@ -116,7 +118,8 @@ def sniff(source: Source, format: str = "auto") -> Sniffed:
     if layout == merlin.LAYOUT or (layout == "csv" and merlin.matches(head)):
         return Sniffed(merlin.LAYOUT, head)  # its table is found per specimen when read
     # known by their headers
-    for known in (lvm, catman, rigol, tektronix, gwinstek, isomme, linescale, labchart):
+    for known in (lvm, catman, rigol, tektronix, gwinstek, isomme, linescale, labchart,
+                  keyence):
         if layout == known.LAYOUT or (layout == "csv" and known.matches(head)):
             return Sniffed(known.LAYOUT, head, known.table_spec(head))
     refuse_document(head.lines, source.name)

@@ -296,6 +296,20 @@ def is_temperature_unit(text: str | None) -> bool:
 _TEMPERATURE = ureg.parse_units("K").dimensionality
 
 
+def is_voltage_unit(text: str | None) -> bool:
+    """Whether some spelling of `text` is a unit of electric potential (``"V"``, ``"mV"``):
+    a sensor's signal, before its calibration.
+
+    >>> is_voltage_unit("V"), is_voltage_unit("mV"), is_voltage_unit("N")
+    (True, True, False)
+    """
+    return any(ureg.parse_units(spelling).dimensionality == _VOLTAGE
+               for spelling in spellings(text or ""))
+
+
+_VOLTAGE = ureg.parse_units("V").dimensionality
+
+
 def unit_misfits(text: str | None, role: str) -> bool:
     """Whether `text` is a unit, and not one a column of `role` could be logged in.
 

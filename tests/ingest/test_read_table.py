@@ -8,7 +8,8 @@ from pipeline.ingest import FORMATS, read_table
 
 def test_formats_listed():
     assert FORMATS == ("auto", "csv", "xlsx", "ods", "xls", "tdms", "lvm", "catman", "rigol",
-                       "tektronix", "gwinstek", "isomme", "linescale", "labchart", "merlin", "mts",
+                       "tektronix", "gwinstek", "isomme", "linescale", "labchart", "keyence",
+                       "merlin", "mts",
                        "machine_export", "european_csv", "plain_csv")
 
 
