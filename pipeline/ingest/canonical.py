@@ -757,6 +757,9 @@ _UNITED = ((frozenset({"force"}), lambda raw, at: unit_fits(raw.units[at], "forc
             "has no unit of force beside one that has"),
            (frozenset({"time"}), lambda raw, at: unit_fits(raw.units[at], "time"),
             "has no unit of time beside one that has"))
+#: The time's symbol as a column's whole name: a time when its unit is one (a rig's
+#: ``t [ms]``, its controller's clock, beside the PC's ``Timestamp``), never by itself.
+TIME_SYMBOL = "t"
 #: A column that moves over one holding a value (:func:`_constant`).
 _MOVING = (frozenset({"force", "time"}), lambda raw, at: not _constant(raw, at),
            "holds one value in every row of the file: no signal, beside one that moves")
@@ -768,8 +771,9 @@ _MOVING = (frozenset({"force", "time"}), lambda raw, at: not _constant(raw, at),
 #: tribometer's normal load at its setting); the testing machine's over a second
 #: instrument's; for a force or a time, one in a unit of the role over one without (a
 #: test stand's English ``temps``, its temperatures, beside ``elapsed (s)``; an insole's
-#: clock beside its steps' ``Contact_time``); for a time, one named so over one of a
-#: time unit only (a thrust stand's ``ESC signal (µs)``, a pulse width), and a time
+#: clock beside its steps' ``Contact_time``); for a time, one named so (or ``t``, the time's
+#: symbol) over one of a time unit only (a thrust stand's ``ESC signal (µs)``, a pulse
+#: width), and a time
 #: counted over clock readings (PASCO's ``Date and Time``, to the second); for a time or
 #: a count, the whole test's over one that starts again (a step's, a cycle's, one since a
 #: counter's reset); for a force, the measured load over one turned to a kind of test's
@@ -779,7 +783,8 @@ _PREFERRED = (
     (None, lambda raw, at: not is_auxiliary(raw.names[at]),
      "is a second instrument's {role} beside the machine's"),
     *_UNITED,
-    (frozenset({"time"}), lambda raw, at: match_role(raw.names[at]) == "time",
+    (frozenset({"time"}), lambda raw, at: (match_role(raw.names[at]) == "time"
+                                           or fold(raw.names[at]).strip() == TIME_SYMBOL),
      "has a unit of time but no name of one, beside a column named as the time"),
     (frozenset({"time"}), lambda raw, at: at not in raw.clocks,
      "holds clock readings beside a time counted in seconds"),

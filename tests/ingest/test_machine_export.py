@@ -444,6 +444,18 @@ def test_a_column_named_as_the_time_is_preferred_to_one_of_a_time_unit_only(writ
                                   "one") for warning in meta.warnings)
 
 
+def test_a_column_named_t_in_a_unit_of_time_is_the_time_over_a_pcs_clock(write):
+    # a real rig's log: the PC's Timestamp, when lines arrived (in bursts, repeated, gaps),
+    # and its controller's clock t [ms], a row each 100 ms; the PC's stretched 15.4 s to 19
+    text = "Timestamp,t [ms],Load [N]\n" + "".join(
+        f"16:01:{51 + (i + i // 3) // 10:02d}.{(i + i // 3) % 10}000,{6634078 + 100 * i},"
+        f"{0.5 * i:.1f}\n" for i in range(40))
+    table, meta = read_table(write("ignition.csv", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], 6634.078 + 0.1 * np.arange(40))
+    assert any(warning.startswith("column 'Timestamp' holds clock readings beside")
+               for warning in meta.warnings)
+
+
 def test_a_time_counted_in_seconds_is_preferred_to_clock_readings(write):
     # PASCO Capstone: a date and time to the second beside the time of a 40 Hz run
     text = '"Date and Time Run 5","Time (s) Run 5","Force (N) Run 5"\n' + "".join(
