@@ -654,6 +654,13 @@ def detect_dialect(
                 hint="save the table with bare numbers (a spreadsheet's number format "
                      "without % or a unit) and the unit in the names row, e.g. "
                      "'Elongation [%]'")
+        if _quoted_lines(sample):
+            raise LayoutError(
+                "each line is one quoted cell (" + repr(sample[-1].strip()[:40]) + "...): "
+                "the table was saved as one column of text, its fields inside the quotes",
+                file=name,
+                hint="remove the quote at the start and at the end of each line (a text "
+                     "editor's replace), or export the table again without quoting it")
         if not any(_has_two_numbers(line) for line in sample):
             named = _data_file_named(lines, name)
             lone = any(is_number(cell, decimal) for line in sample for delimiter in DELIMITERS
@@ -698,6 +705,17 @@ def _names_as_wide(lines: list[str], delimiter: str, decimal: str, width: int) -
         if line.strip():
             above = line
     return above is not None and len(split_fields(above, delimiter)) == width
+
+
+#: A line that is one quoted cell holding a number and fields apart by delimiters (two at
+#: least: ``"1,5"`` is one number with a decimal comma).
+_QUOTED_LINE = re.compile(r'\s*"(?=[^"]*\d)[^"]*[;,\t][^"]*[;,\t][^"]*"\s*')
+
+
+def _quoted_lines(sample: list[str]) -> bool:
+    """Whether most of `sample`'s lines are each one quoted cell holding a row's fields
+    (``"2,1762e-03;-26,875e-03;..."``: a table saved through a spreadsheet as one column)."""
+    return sum(bool(_QUOTED_LINE.fullmatch(line)) for line in sample) > len(sample) / 2
 
 
 def _one_column_of_numbers(sample: list[str]) -> bool:

@@ -378,6 +378,18 @@ def test_one_column_of_numbers_is_refused_as_such(write):
         read_table(write("log0.csv", short))
 
 
+def test_a_table_saved_as_one_quoted_cell_a_line_is_refused_as_such(write):
+    # a real transient recorder's export (Elsys TranAX, in German) passed through a
+    # program that quoted each line whole: refused as text lines only, with a hint to
+    # export the test again
+    text = ('"Samplerate;10000000 Hz"\r\n"Zeit;Signal;Signal;"\r\n"s;V;V;"\r\n'
+            + "".join(f'"2,{17620 + i}0000e-03;-26,{8750 + i}e-03;-29,3750e-03"\r\n'
+                      for i in range(12)))
+    with pytest.raises(LayoutError, match="each line is one quoted cell") as caught:
+        read_table(write("marble.CSV", text))
+    assert "remove the quote at the start and at the end of each line" in caught.value.hint
+
+
 def test_a_lone_point_is_a_missing_value(write):
     # a real low-cycle fatigue table (SAS export): "." where a half cycle has no value
     text = ('"Cycle","Data State","Max Stress Mpa","Min Stress Mpa","Time Max Stress Sec"\n'
