@@ -93,15 +93,17 @@ def sample_rate(table: pd.DataFrame) -> float | None:
     one and two apart) give the rate of the rows, not of their median step. Stamps that
     repeat with other readings (a clock to the second at two rows a second, ten rows a
     millisecond) count each row as a step: the rows between the first and the last change
-    of stamp, over the time between them. Rows repeated whole (a logger writing each
-    sample thrice) are no samples."""
+    of stamp, over the time between them. Rows repeated whole, every one (a logger writing
+    each sample thrice), are no samples; some repeated whole among others are a coarse
+    reading's (an oscilloscope's stamps to three digits, twelve rows a stamp, beside an
+    8-bit channel that rests on a value for rows on end)."""
     steps = _steps(table)
     if steps is None:
         return None
     every = np.diff(table["time"].to_numpy(dtype=float))
     repeats = np.flatnonzero(every == 0) + 1
     values = table.to_numpy(dtype=float) if repeats.size else None  # only then: rows whole
-    if repeats.size and not np.all(values[repeats] == values[repeats - 1], axis=1).mean() > 0.5:
+    if repeats.size and not np.all(values[repeats] == values[repeats - 1]):
         changes = np.flatnonzero(every > 0)
         between = every[changes[0] + 1:changes[-1] + 1]
         if np.any(between > 0):

@@ -105,6 +105,13 @@ def test_stamps_coarser_than_the_samples_give_the_rows_rate(tmp_path):
     thrice.write_text("time [s],force [kN]\n" + "".join(
         f"{row // 3 * 0.013:.3f},{LOAD[row // 3]}\n" for row in range(60)))
     assert inspect_json(str(thrice))["sample_rate_hz"] == pytest.approx(1 / 0.013)
+    # a real Hopkinson bar's scope export: stamps to three digits, ten rows a stamp, and
+    # a coarse reading that rests on a value for rows on end (two rows in three alike):
+    # taken for rows written thrice, the rate shown was the stamps', ten times too low
+    coarse = tmp_path / "raw_voltage.csv"
+    coarse.write_text("Time/s,force [kN]\n" + "".join(
+        f"{-1.98e-4 + 1e-6 * (row // 10):.2e},{0.01 * (row // 3)}\n" for row in range(60)))
+    assert inspect_json(str(coarse))["sample_rate_hz"] == pytest.approx(1e7)
 
 
 def test_a_clock_to_the_second_gives_the_rows_rate_whole_seconds_counted(tmp_path):
