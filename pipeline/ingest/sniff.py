@@ -659,8 +659,9 @@ def detect_dialect(
                 "each line is one quoted cell (" + repr(sample[-1].strip()[:40]) + "...): "
                 "the table was saved as one column of text, its fields inside the quotes",
                 file=name,
-                hint="remove the quote at the start and at the end of each line (a text "
-                     "editor's replace), or export the table again without quoting it")
+                hint="export the table again without quoting it, or give the run a copy "
+                     "of the file with the quote at the start and at the end of each line "
+                     "removed (a text editor's replace), keeping the file as it came")
         if not any(_has_two_numbers(line) for line in sample):
             named = _data_file_named(lines, name)
             lone = any(is_number(cell, decimal) for line in sample for delimiter in DELIMITERS

@@ -387,7 +387,8 @@ def test_a_table_saved_as_one_quoted_cell_a_line_is_refused_as_such(write):
                       for i in range(12)))
     with pytest.raises(LayoutError, match="each line is one quoted cell") as caught:
         read_table(write("marble.CSV", text))
-    assert "remove the quote at the start and at the end of each line" in caught.value.hint
+    assert "a copy of the file with the quote at the start and at the end of each line " \
+        "removed" in caught.value.hint
 
 
 def test_a_lone_point_is_a_missing_value(write):
