@@ -97,6 +97,12 @@ BACKWARDS_RISE = 0.01
 #: noise for a sample now and then (a machine's displacement read to 0.03 mm).
 BACKWARDS_SAMPLES = 3
 
+#: A channel that misbehaves before it has risen by this fraction of what it rises to the
+#: force's maximum, and follows the force after, was seating (:func:`_seated`): knife edges
+#: settle by a few µm, a sixth of a short extensometer's elastic travel; one that slips
+#: later in the test has risen by more.
+SEATING = 0.25
+
 #: A channel that stands still for this fraction of the record while another channel
 #: moves by :data:`OTHERS_MOVE` of its range has frozen.
 STILL_WINDOW = 0.05
@@ -299,6 +305,70 @@ def _freeze(force: np.ndarray, channel: np.ndarray, tolerance: float, rise: floa
     return None
 
 
+def _misbehaviour(whole: np.ndarray, reading: np.ndarray, others: Sequence[np.ndarray],
+                  loaded: int, peak: int) -> tuple[int, str, float] | None:
+    """The first sample and kind of the channel `reading`'s first misbehaviour (module
+    docstring), judged from sample `loaded` with the force `whole` rising to its maximum
+    at `peak`, and the tolerance it was judged within; None if it has none."""
+    force = whole[loaded : peak + 1]  # the force keeps rising up to its maximum
+    channel = reading[loaded : peak + 1]
+    if force.size < 3:
+        return None
+    tolerance = channel_tolerance(channel)
+    backwards = _backwards(force, channel, tolerance, BACKWARDS_RISE * whole[peak])
+    jump = _jump(channel, tolerance)
+    followed = min((position for position in (backwards, jump) if position is not None),
+                   default=channel.size)
+    if followed >= MIN_FOLLOWED:  # a reading off the specimen widens the range: not its own
+        tolerance = min(tolerance, channel_tolerance(channel[:followed]))
+    rise = FREEZE_RISE * whole[peak]
+    # past the maximum the specimen still lengthens while the force falls (necking); so fast
+    # can it fall before the fracture that a channel that follows moves less than a share
+    # of its range meanwhile: one taken off stands within its noise, to the fracture
+    falling = _freeze(whole[peak] - whole[peak:], reading[peak:],
+                      channel_tolerance(channel, share_of_range=0.0), rise, -np.inf,
+                      to_end=True)
+    frozen = _freeze(force, channel, tolerance, rise, 0.1 * whole[peak])
+    witnesses = [other for other in others if _follows(force, other[loaded : peak + 1])]
+    # standing still is told within the noise: a share of the range may be the whole elastic
+    # strain of an extensometer read to a plastic strain of 30 %, moving with the crosshead
+    still = _still_while_others_move(reading[loaded:], [other[loaded:] for other in witnesses],
+                                     channel_tolerance(channel, share_of_range=0.0))
+    found = [
+        (loaded + position, reason)
+        for position, reason in ((backwards, "runs backwards"), (jump, "jumps"),
+                                 (frozen, "freezes"), (still, "freezes"))
+        if position is not None
+    ] + ([] if falling is None else [(peak + falling, "freezes")])
+    if not found:
+        return None
+    position, reason = min(found, key=lambda item: item[0])
+    return position, reason, tolerance
+
+
+def _seated(whole: np.ndarray, reading: np.ndarray, loaded: int, peak: int, position: int,
+            reason: str, tolerance: float) -> int | None:
+    """Where the channel `reading` is judged again when its misbehaviour at `position` (of
+    `reason`, judged from `loaded` within `tolerance`) was its seating: before it, it had
+    risen by under :data:`SEATING` of what it rises to the force's maximum at `peak`, and
+    from where it rises past its reading before it, it follows the force's rising envelope
+    up to the maximum (:func:`_follows`). Knife edges settle so while the first load comes
+    on: a real modulus test's extensometer ran back by 6 µm at 25 % of the maximum, then
+    read 430 kN/mm cycle after cycle. None when it was no seating: the misbehaviour
+    stands."""
+    if reason == "jumps" or position >= peak:
+        return None
+    start = reading[loaded]
+    before = float(np.max(reading[loaded : position + 1])) - start
+    if not before < SEATING * (reading[peak] - start):
+        return None
+    past = position + np.flatnonzero(reading[position:peak] > start + before + tolerance)
+    if not past.size:
+        return None
+    rising = past[0] + _envelope(whole[past[0] : peak + 1])  # over load cycles too
+    return int(past[0]) if _follows(whole[rising], reading[rising]) else None
+
+
 def _still_while_others_move(channel: np.ndarray, others: Sequence[np.ndarray],
                              tolerance: float) -> int | None:
     """First window of :data:`STILL_WINDOW` of the record over which the channel stays
@@ -388,45 +458,21 @@ def find_removal(oriented_force: np.ndarray, oriented_channel: np.ndarray,
     Removal(position=60, reason='runs backwards', cause='taken off or slipped')
     """
     whole = np.asarray(oriented_force, dtype=float)
+    reading = np.asarray(oriented_channel, dtype=float)
     peak = int(np.argmax(whole))
     below = np.flatnonzero(whole[:peak] < LOADED * whole[peak])
-    loaded = int(below[-1]) + 1 if below.size else 0
-    force = whole[loaded : peak + 1]  # the force keeps rising up to its maximum
-    channel = np.asarray(oriented_channel[loaded : peak + 1], dtype=float)
-    if force.size < 3:
-        return None
-    tolerance = channel_tolerance(channel)
-    backwards = _backwards(force, channel, tolerance, BACKWARDS_RISE * whole[peak])
-    jump = _jump(channel, tolerance)
-    followed = min((position for position in (backwards, jump) if position is not None),
-                   default=channel.size)
-    if followed >= MIN_FOLLOWED:  # a reading off the specimen widens the range: not its own
-        tolerance = min(tolerance, channel_tolerance(channel[:followed]))
-    rise = FREEZE_RISE * whole[peak]
-    # past the maximum the specimen still lengthens while the force falls (necking); so fast
-    # can it fall before the fracture that a channel that follows moves less than a share
-    # of its range meanwhile: one taken off stands within its noise, to the fracture
-    falling = _freeze(whole[peak] - whole[peak:], oriented_channel[peak:],
-                      channel_tolerance(channel, share_of_range=0.0), rise, -np.inf,
-                      to_end=True)
-    frozen = _freeze(force, channel, tolerance, rise, 0.1 * whole[peak])
-    witnesses = [other for other in others if _follows(force, other[loaded : peak + 1])]
-    # standing still is told within the noise: a share of the range may be the whole elastic
-    # strain of an extensometer read to a plastic strain of 30 %, moving with the crosshead
-    still = _still_while_others_move(np.asarray(oriented_channel[loaded:], dtype=float),
-                                     [other[loaded:] for other in witnesses],
-                                     channel_tolerance(channel, share_of_range=0.0))
-    found = [
-        (loaded + position, reason)
-        for position, reason in ((backwards, "runs backwards"), (jump, "jumps"),
-                                 (frozen, "freezes"), (still, "freezes"))
-        if position is not None
-    ] + ([] if falling is None else [(peak + falling, "freezes")])
-    if not found:
-        return None
-    position, reason = min(found, key=lambda item: item[0])
+    start = int(below[-1]) + 1 if below.size else 0
+    while True:
+        found = _misbehaviour(whole, reading, others, start, peak)
+        if found is None:
+            return None
+        resumed = _seated(whole, reading, start, peak, *found)
+        if resumed is None:
+            break
+        start = resumed
+    position, reason, tolerance = found
     if reason == "freezes":
-        position = _frozen_since(np.asarray(oriented_channel, dtype=float), position, tolerance)
-    if reason == "jumps" and _decade(np.asarray(oriented_channel, dtype=float), position):
+        position = _frozen_since(reading, position, tolerance)
+    if reason == "jumps" and _decade(reading, position):
         return Removal(position=int(position), reason=reason, cause=DECADE_CAUSE)
     return Removal(position=int(position), reason=reason)

@@ -123,6 +123,39 @@ def test_a_real_slow_fracture_is_the_sample_before_the_fall():
     assert find_fracture(np.concatenate([ramp, fall]) * 1e3) == ramp.size
 
 
+def _seating_then_cycles(yields: bool = True) -> tuple[np.ndarray, np.ndarray]:
+    """A real modulus test's record [N], [m] (Walter+Bai, 10 Hz; our noise): from 1.6 kN
+    into yield at 17 kN (170 µm; or not, as a stiffer specimen), then cycles between 5 and
+    17 kN; the extensometer's knife
+    edges settle while the first load comes on: it reads 4 µm up, 6 µm back by 6 kN, then
+    follows at 430 kN/mm."""
+    rng = np.random.default_rng(3)
+    first = np.linspace(1.6e3, 17e3, 800)
+    cycle = np.concatenate([np.linspace(17e3, 5e3, 240), np.linspace(5e3, 17e3, 240)])
+    force = np.concatenate([first, cycle, cycle])
+    plastic = np.maximum.accumulate(np.clip((force - 12e3) / 5e3, 0.0, None) ** 2 * 145e-6
+                                    * yields)
+    extensometer = (force - 6e3) / 430e6 + plastic
+    extensometer[:200] = np.interp(np.arange(200), [0, 50, 120, 199],
+                                   [0.0, 4e-6, -2e-6, extensometer[199]])
+    noise = rng.normal(0.0, 2e-7, force.size)
+    return force + rng.normal(0.0, 5.0, force.size), np.round((extensometer + noise) / 1e-7) * 1e-7
+
+
+def test_an_extensometer_seating_as_the_first_load_comes_on_is_not_taken_off():
+    # it was cut from its first sample as running backwards, and E0 came from the machine's
+    # travel, 16 times too low
+    force, extensometer = _seating_then_cycles()
+    assert find_removal(force, extensometer) is None
+    # so in cycles below the yield: the 4 µm are a sixth of the elastic travel
+    assert find_removal(*_seating_then_cycles(yields=False)) is None
+    # one that hangs where it fell, never to follow the force again, was taken off
+    hanging = extensometer.copy()
+    hanging[50:] = -2e-6 + np.random.default_rng(4).normal(0.0, 2e-7, force.size - 50)
+    removal = find_removal(force, hanging)
+    assert removal is not None and removal.position <= 60
+
+
 def test_a_fracture_after_necking_is_the_sample_before_the_break():
     # the last samples of a real steel plate's pull at 1 Hz [kN]: necking sheds 1 to 3 kN a
     # sample, faster and faster, then the plate breaks from 111.88 kN; the fracture had
