@@ -78,7 +78,8 @@ CYCLE_VARIABLES = {
     "hysteresis_energy": ("J", "energy dissipated in the cycle"),
     "permanent_set": ("m", "permanent elongation after the cycle"),
     "permanent_strain": ("1", "permanent strain after the cycle"),
-    "peak_force": ("N", "peak force of the cycle"),
+    "peak_force": ("N", "peak force of the cycle: the median from the loading's end to the "
+                   "unloading's start (its hold at the top)"),
 }
 
 #: Columns of :attr:`TensileRun.channels` that are stored, in order.
