@@ -102,6 +102,8 @@ from pipeline.ingest.unitparse import (
 #: The preamble settings an oscilloscope gives its time axis's unit under (Tektronix; Rohde
 #: & Schwarz's RTH writes the singular).
 HORIZONTAL_UNITS = ("Horizontal Units", "Horizontal Unit")
+#: ... and its channels' unit, when it writes one for all.
+VERTICAL_UNITS = ("Vertical Units", "Vertical Unit")
 #: The keys of a preamble row that gives each channel's unit, folded (a DTS SLICE export's
 #: ``Engineering Unit``, a Kyowa PCD-400A's ``単位``, a Rohde & Schwarz RTH oscilloscope's
 #: ``Vertical Unit``).
@@ -196,14 +198,20 @@ _PREFIXES = {"nano": "n", "micro": "µ", "milli": "m", "kilo": "k", "mega": "M"}
 def _time_unit_of_the_scope(names: list[str], units: list[str | None],
                             preamble: dict[str, str], warnings: list[str]) -> list[str | None]:
     """`units`, a time column without one given the preamble's :data:`HORIZONTAL_UNITS`
-    (a Tektronix oscilloscope's ``TIME,CH1`` under its settings), with a note."""
+    (a Tektronix oscilloscope's ``TIME,CH1`` under its settings), and the channels without
+    one its single :data:`VERTICAL_UNITS` (``Vertical Units,V``: a force channel in volts
+    is then told as such), with a note."""
     key = next((key for key in HORIZONTAL_UNITS if preamble.get(key, "").strip()), None)
     if key is None:
         return units
     axis = preamble[key].strip()
-    given = [axis if unit is None and match_role(name) == "time" else unit
-             for name, unit in zip(names, units, strict=True)]
-    warnings += [f"column {name!r}: unit {axis!r} from the preamble's {key}"
+    vertical = next((key for key in VERTICAL_UNITS if preamble.get(key, "").strip()), None)
+    level = preamble[vertical].strip() if vertical else ""
+    given = [axis if unit is None and match_role(name) == "time"
+             else level if unit is None and name.strip() and len(level.split()) == 1
+             else unit for name, unit in zip(names, units, strict=True)]
+    warnings += [f"column {name!r}: unit {new!r} from the preamble's "
+                 f"{key if new == axis else vertical}"
                  for name, unit, new in zip(names, units, given, strict=True) if unit != new]
     return given
 

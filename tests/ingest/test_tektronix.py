@@ -3,6 +3,7 @@
 import numpy as np
 import pytest
 
+from pipeline.errors import ColumnError
 from pipeline.ingest import open_log, read_table
 
 SETTINGS = [
@@ -53,6 +54,20 @@ def test_a_newer_scopes_time_without_unit_takes_the_settings(write):
                              columns={"force": "CH1"}, units={"force": "kN"})
     np.testing.assert_allclose(table["time"], [-2.0e-4, -1.9996e-4])
     assert "column 'TIME': unit 's' from the preamble's Horizontal Units" in meta.warnings
+
+
+def test_a_scopes_vertical_units_are_its_channels_and_told_as_no_force(write):
+    # a real TBS1052C export: TIME,CH1 under settings that give both units; CH1 was left
+    # without one, and the missing force's hint said nothing of volts
+    text = ("Model,TBS1052C\n\nHorizontal Units,S\nSample Interval,0.0008\nVertical "
+            "Units,V\nLabel,\nTIME,CH1\n-8.000e-01,-1.32\n-7.992e-01,-0.44\n"
+            "-7.984e-01,-1\n")
+    with pytest.raises(ColumnError) as caught:
+        read_table(write("TEK00000.CSV", text), kind="engagement")
+    assert "column 'CH1' is in V, a sensor's signal" in caught.value.hint
+    _, meta = read_table(write("TEK00000.CSV", text), kind="engagement",
+                         columns={"force": "CH1"}, units={"force": "kN"})
+    assert "column 'CH1': unit 'V' from the preamble's Vertical Units" in meta.warnings
 
 
 def test_a_rohde_schwarz_scopes_singular_horizontal_unit_gives_the_time_its_unit(write):
