@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from pipeline.condition.breaks import find_fracture, find_removal
+from pipeline.condition.breaks import FRACTURE_DROP, find_fracture, find_removal
 from pipeline.condition.channels import Copy, choose_channels, compared_slopes, find_derived
 from pipeline.condition.segmentation import BRANCHES, Segmentation, load_sign, segment_cycles
 from pipeline.condition.tares import join_tares
@@ -247,6 +247,20 @@ def _joined(channel: pd.Series, force: np.ndarray, column: str, warnings: list[s
                         f"readings before are moved by the {step} it dropped, to join those "
                         "after")
     return pd.Series(joined, index=channel.index, name=channel.name) if tares else channel
+
+
+def _no_fracture_note(oriented_force: np.ndarray) -> list[str]:
+    """The note of a single pull whose force ends well below its maximum with no fracture
+    found (:func:`~pipeline.condition.breaks.find_fracture`): a tear, a test stopped and
+    unloaded, or a record cut before the break; the figures at fracture are not given.
+    Empty when it ends within :data:`~pipeline.condition.breaks.FRACTURE_DROP` of it."""
+    maximum, last = float(np.max(oriented_force)), float(oriented_force[-1])
+    if not maximum > 0 or last >= (1.0 - FRACTURE_DROP) * maximum:
+        return []
+    return [f"no fracture found: the force ends at {last / 1e3:.4g} kN, {last / maximum:.0%} "
+            f"of its maximum ({maximum / 1e3:.4g} kN), after falling with no sudden drop (a "
+            "gradual tear, a test stopped and unloaded, or a record cut before the break): "
+            "nothing is given at fracture"]
 
 
 def _permanent_strains(strain: np.ndarray, segmentation: Segmentation) -> np.ndarray:
@@ -481,6 +495,8 @@ def condition_tensile(
     if n_cycles == 1 and segmentation.n_cycles > 1:
         warnings.append(f"the run sheet says cycles = 1, the log has {segmentation.n_cycles} "
                         "loadings: E0 from the first loading only")
+    if fracture is None and single_pull:
+        warnings += _no_fracture_note(sign * force)
 
     for name in channels:
         _check_clipping(force[:end], samples[name].to_numpy()[:end], columns[name],
