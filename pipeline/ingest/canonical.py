@@ -869,6 +869,25 @@ def _same_unit(raw: RawColumns, first: int, second: int, role: str) -> bool:
     return first_unit == second_unit
 
 
+#: The readings of a spreadsheet's date serials: days since 1899-12-30, from 1954 to 2119.
+_DATE_SERIALS = (20_000.0, 80_000.0)
+_DATE_SERIALS_HINT = (" (its numbers look like a spreadsheet's dates and times, days since "
+                      '1899: units = {time = "d"})')
+
+
+def _date_serials(raw: RawColumns, index: int) -> bool:
+    """Whether column `index` reads as a spreadsheet's date serials, rising by fractions of
+    a day (``45352,4166666667``: a time saved through a spreadsheet as a number); False
+    when its readings are not at hand (a log read by ranges)."""
+    if not isinstance(raw, RawTable) or index not in raw.arrays:
+        return False
+    values = raw.arrays[index][np.isfinite(raw.arrays[index])]
+    steps = np.diff(values)
+    return bool(values.size > 2 and _DATE_SERIALS[0] <= values.min()
+                and values.max() <= _DATE_SERIALS[1] and np.all(steps >= 0)
+                and 0 < values[-1] - values[0] < 30)
+
+
 def _says_strain(name: str) -> bool:
     """Whether a gauge column's name makes it a strain (:data:`STRAIN_WORDS`)."""
     return not STRAIN_WORDS.isdisjoint(tokens(name))
@@ -933,7 +952,9 @@ def _settle_units(
                     file=file, row=raw.units_line, column=name,
                     hint=STRAIN_WITHOUT_UNIT_HINT if role == "gauge" and _says_strain(name)
                     else f'the file gives none: set it in the run sheet, units = '
-                         f'{{{SHEET_KEY[role]} = "..."}}',
+                         f'{{{SHEET_KEY[role]} = "..."}}'
+                         + (_DATE_SERIALS_HINT if role == "time" and _date_serials(raw, index)
+                            else ""),
                 )
                 if role in DISPENSABLE.get(kind, ()) and role not in raw.candidates.explicit:
                     raw.metadata.warnings.append(

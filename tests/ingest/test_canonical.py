@@ -496,3 +496,17 @@ def test_a_force_taken_by_its_unit_alone_is_warned_of(write, kind):
             ) in meta.warnings
     _, named = read_table(write("indent.csv", text), kind=kind, columns={"force": "Zzz"})
     assert not any("by its unit" in warning for warning in named.warnings)
+
+
+def test_a_time_saved_as_a_spreadsheets_date_serials_is_told_as_such(write):
+    # a real Bluehill export re-saved through a spreadsheet, its time turned into dates and
+    # times (days since 1899): the hint asked for a unit without a word on what it is
+    text = "Datum/Uhrzeit;Kraft [kN]\n" + "".join(
+        f"{45352.4166666667 + i * 0.02 / 86400:.10f};{0.005 * i:.4f}\n".replace(".", ",")
+        for i in range(20))
+    with pytest.raises(UnitError, match="no unit for the time column") as caught:
+        read_table(write("zack.csv", text), kind="engagement")
+    assert 'days since 1899: units = {time = "d"}' in caught.value.hint
+    table, _ = read_table(write("zack.csv", text), kind="engagement", units={"time": "d"})
+    # to the 8.6 µs of the serials' tenth decimal of a day
+    np.testing.assert_allclose(np.diff(table["time"]), 0.02, atol=1e-5)
