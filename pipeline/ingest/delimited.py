@@ -73,7 +73,14 @@ from pipeline.ingest.clock import (
     is_unread_clock,
     stops_at_minute,
 )
-from pipeline.ingest.names import fold, header_text, match_role, split_name_unit
+from pipeline.ingest.names import (
+    fold,
+    header_text,
+    is_clock_part,
+    is_unmeasured,
+    match_role,
+    split_name_unit,
+)
 from pipeline.ingest.preamble import parse_preamble
 from pipeline.ingest.raw import RawColumns, RawTable
 from pipeline.ingest.roles import Candidates, display_name, find_candidates
@@ -414,7 +421,7 @@ def text_header(
         spec, find_candidates(names, units, columns, file=head.name,
                               header_line=names_line(spec)),
         names, split_fields(head.lines[spec.data_index], spec.delimiter), meta.warnings)
-    candidates = _unnamed_clock_as_time(spec, names, candidates, meta.warnings)
+    candidates = _clock_as_time(spec, names, candidates, meta.warnings)
     clocks = time_clocks(spec, candidates, names, units, meta.warnings)
     return RawColumns(names=names, units=units, candidates=candidates, metadata=meta,
                       units_line=units_line(spec), clocks=clocks, set_aside=set_aside)
@@ -449,18 +456,24 @@ def _why_set_aside(name: str, cell: str, what: str) -> str:
     return f"column {name!r} holds {what} ({cell!r}...), not numbers"
 
 
-def _unnamed_clock_as_time(spec: TableSpec, names: list[str], candidates: Candidates,
-                           warnings: list[str]) -> Candidates:
-    """`candidates`, and where no column may be the time, the one column without a name
-    whose cells are clock readings as the time (PicoLog writes ``""`` over its time
-    stamps), with a note."""
-    unnamed = [index for index in spec.clocks if not names[index].strip()
-               and index not in candidates.indexes()]
-    if "time" in candidates.roles or "time" in candidates.explicit or len(unnamed) != 1:
+def _clock_as_time(spec: TableSpec, names: list[str], candidates: Candidates,
+                   warnings: list[str]) -> Candidates:
+    """`candidates`, and where no column may be the time, the one column whose cells are
+    clock readings and whose name gives it no role as the time, with a note: one without a
+    name (PicoLog writes ``""`` over its time stamps), one named as a part of a clock whose
+    cells hold the whole reading (a Spanish logger's ``Hora``, ``19:22:30,584``, beside
+    its ``Fecha``), one whose name the readers do not know (``Uhrzeit``, ``Clock``). A
+    name of another quantity (``last_changed``) keeps it from the role."""
+    clocks = [index for index in spec.clocks if index not in candidates.indexes()
+              and match_role(names[index]) is None
+              and (is_clock_part(names[index]) or not is_unmeasured(names[index]))]
+    if "time" in candidates.roles or "time" in candidates.explicit or len(clocks) != 1:
         return candidates
-    warnings.append(f"column {display_name(names, unnamed[0])!r}, which has no name, holds "
-                    "clock readings: taken as the time")
-    return Candidates(candidates.roles | {"time": unnamed}, candidates.explicit)
+    said = ("whose name the readers do not take for a time" if names[clocks[0]].strip()
+            else "which has no name")
+    warnings.append(f"column {display_name(names, clocks[0])!r}, {said}, holds clock "
+                    "readings: taken as the time")
+    return Candidates(candidates.roles | {"time": clocks}, candidates.explicit)
 
 
 def time_clocks(spec: TableSpec, candidates: Candidates, names: list[str],

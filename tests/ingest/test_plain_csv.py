@@ -325,6 +325,23 @@ def test_an_unnamed_column_of_clock_readings_is_the_time(write):
     roles = {column.name: column.role for column in meta.columns}
     assert roles["Single-ended 12 Ave."] is None  # a statistic, not Instron's extensometer
 
+
+@pytest.mark.parametrize(("date", "clock"), [("Fecha", "Hora"), ("Date", "Heure"),
+                                             ("Datum", "Uhrzeit"), ("Tarih", "Saat")])
+def test_a_column_of_clock_readings_named_as_none_of_a_time_is_the_time(write, date, clock):
+    # a real load-cell log's stamps, split into a date and a clock as Spanish, French,
+    # German and Turkish loggers name them: no time was found, the hour's name (Hora,
+    # Heure) being that of one part of a clock, the others none the readers know
+    text = f"{date};{clock};Fuerza [N]\n" + "".join(
+        f"02.04.2024;19:22:{30 + i:02d},{584 + 2 * i:03d};0,{392 + i:03d}\n" for i in range(5))
+    table, meta = read_table(write("log.csv", text), kind="engagement")
+    np.testing.assert_allclose(table["time"], np.arange(5) * 1.002, atol=1e-9)
+    assert (f"column {clock!r}, whose name the readers do not take for a time, holds clock "
+            "readings: taken as the time") in meta.warnings
+    # a name of another quantity keeps it from the role
+    with pytest.raises(ColumnError, match="no time column found"):
+        read_table(write("log.csv", text.replace(clock, "last_changed", 1)), kind="engagement")
+
 def test_tabs_with_empty_cells_stay_tabs_not_blanks():
     # found by the round-trip property: read as blanks, the empty cells would vanish and
     # shift the fields; blanks are the delimiter only when no other gives a table
