@@ -168,6 +168,50 @@ def find_copies(readings: dict[str, np.ndarray]) -> dict[str, Copy]:
     return copies
 
 
+def find_switch(strain: np.ndarray, lengths: dict[str, np.ndarray]) -> tuple[int, Copy] | None:
+    """Where a strain channel, its own before, turns into a length channel divided by a
+    length to its end (Bluehill goes on with the crosshead's travel once the extensometer
+    is taken off, in the extensometer's column), and how; None if it never does.
+
+    Parameters
+    ----------
+    strain : numpy.ndarray
+        The strain channel's readings [1], NaN where missing.
+    lengths : dict of numpy.ndarray
+        The length channels' readings [m], same samples.
+
+    Returns
+    -------
+    tuple of (int, Copy) or None
+        The first sample of the copy (:data:`MIN_COPY_SAMPLES` at least to the end, to
+        within their rounding, :func:`find_copies`) and what it copies.
+
+    Examples
+    --------
+    >>> extension = np.round(np.linspace(0.0, 2e-3, 80) + 1e-5 * np.sin(np.arange(80)), 7)
+    >>> strain = np.round(0.8 * extension / 0.05 + 2e-5 * np.cos(np.arange(80)), 5)
+    >>> strain[50:] = np.round((extension[50:] - 4e-5) / 0.05, 5)
+    >>> position, copy = find_switch(strain, {"gauge_1": extension})
+    >>> position, copy.formula(copy.source)
+    (50, 'gauge_1 over 50 mm')
+    """
+    for source, length in lengths.items():
+        tail = slice(strain.size - MIN_COPY_SAMPLES, None)
+        if (_copy_scale(strain[tail], length[tail]) is None
+                or _copy_scale(strain, length) is not None):  # a whole copy: find_copies'
+            continue
+        low, high = 0, tail.start  # the tail from `high` is a copy, from `low` not
+        while high - low > 1:
+            middle = (low + high) // 2
+            if _copy_scale(strain[middle:], length[middle:]) is None:
+                low = middle
+            else:
+                high = middle
+        scale = _copy_scale(strain[high:], length[high:])
+        return high, Copy(source, 1.0 / abs(scale))
+    return None
+
+
 def find_duplicates(readings: dict[str, np.ndarray], kinds: dict[str, str]) -> dict[str, str]:
     """The length channels that repeat another's readings: one transducer written twice.
 

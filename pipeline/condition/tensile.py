@@ -30,8 +30,19 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from pipeline.condition.breaks import FRACTURE_DROP, find_fracture, find_removal
-from pipeline.condition.channels import Copy, choose_channels, compared_slopes, find_derived
+from pipeline.condition.breaks import (
+    FRACTURE_DROP,
+    Removal,
+    find_fracture,
+    find_removal,
+)
+from pipeline.condition.channels import (
+    Copy,
+    choose_channels,
+    compared_slopes,
+    find_derived,
+    find_switch,
+)
 from pipeline.condition.segmentation import BRANCHES, Segmentation, load_sign, segment_cycles
 from pipeline.condition.tares import join_tares
 from pipeline.errors import SignalError
@@ -349,14 +360,23 @@ def _settle_copies(copies: Mapping[str, Copy], strains: dict[str, np.ndarray],
 
 def _cut_removed(force: np.ndarray, strains: dict[str, np.ndarray],
                  readings: dict[str, np.ndarray], loading: slice, sign: int,
-                 columns: Mapping[str, str], warnings: list[str]) -> dict:
+                 columns: Mapping[str, str], warnings: list[str],
+                 gauge_length: float | None) -> dict:
     """Cut each channel where it stopped following the specimen within `loading` (the first
     loading of a cyclic test, a single pull up to its fracture), judged on its own and
-    against the other channels' `readings`."""
+    against the other channels' `readings`; a strain channel also where it turns into a
+    length channel over the `gauge_length` [m] (:func:`_switched`)."""
     removals = {}
+    lengths = {key: value[loading] for key, value in readings.items() if key.startswith("gauge_")}
     for name, strain in strains.items():
         others = [sign * other[loading] for key, other in readings.items() if key != name]
         removal = find_removal(sign * force[loading], sign * strain[loading], others)
+        switch = _switched(strain[loading], lengths, gauge_length, name)
+        if switch is not None and (removal is None or switch[0] <= removal.position):
+            removal = Removal(switch[0], f"turns into {columns[switch[1].source]!r} over "
+                              f"{switch[1].length * 1e3:.4g} mm",
+                              cause="the extensometer taken off, the software going on with "
+                                    "another channel in its column")
         if removal is None:
             continue
         removals[name] = removal
@@ -367,6 +387,21 @@ def _cut_removed(force: np.ndarray, strains: dict[str, np.ndarray],
             f"while the specimen lengthens ({removal.cause}): its data from there on "
             "are not used")
     return removals
+
+
+def _switched(strain: np.ndarray, lengths: dict[str, np.ndarray], gauge_length: float | None,
+              name: str) -> tuple[int, Copy] | None:
+    """Where strain channel `name` turns into a length channel over the `gauge_length` [m]
+    (:func:`~pipeline.condition.channels.find_switch`), to within
+    :data:`GAUGE_LENGTH_TOLERANCE`: a software's strain source once the extensometer is
+    taken off. Any other length is none: two channels that move in proportion, as a
+    necking specimen's extensometer and crosshead do, agree over some samples by chance."""
+    if not name.startswith("strain_") or gauge_length is None:
+        return None
+    switch = find_switch(strain, lengths)
+    if switch is None or abs(switch[1].length / gauge_length - 1) > GAUGE_LENGTH_TOLERANCE:
+        return None
+    return switch
 
 
 def _label_after(segmentation: Segmentation, size: int, single_pull: bool,
@@ -509,7 +544,7 @@ def condition_tensile(
     first = slice(0, int(segmentation.turns[0, 1]) + 1)  # up to the first peak
     readings = {name: samples[name].to_numpy() for name in channels}
     removals = _cut_removed(force, strains, readings, slice(0, end) if single_pull else first,
-                            sign, columns, warnings)
+                            sign, columns, warnings, gauge_length)
     for strain in strains.values():
         strain[end:] = np.nan
     loading = np.zeros(force.size, dtype=bool)

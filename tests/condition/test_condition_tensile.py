@@ -281,6 +281,27 @@ def test_a_strain_worked_out_from_the_crosshead_is_the_crosshead_whatever_its_na
                for warning in run.warnings)
 
 
+def test_an_extensometers_strain_that_turns_into_the_crosshead_is_cut_where_it_does():
+    # a real Bluehill export: once the extensometer was taken off, the software went on
+    # writing the crosshead's Extension over 26 mm in the extensometer's column; read as
+    # the extensometer's, its strain at the maximum force was the crosshead's
+    truth = PullTruth.for_chain("18x64")
+    log = simulate_pull(truth, 2)
+    crosshead = np.round(log["crosshead"].to_numpy(), 7)
+    strain = np.round(log["extensometer"].to_numpy() / truth.gauge_length, 6)
+    strain[900:] = np.round((crosshead[900:] - 0.004) / truth.gauge_length, 6)
+    table = pd.DataFrame({"time": log["time"], "force": log["force"], "gauge_1": crosshead,
+                          "strain_1": strain})
+    run = condition_tensile(table, truth.gauge_length, n_cycles=1, **BLUEHILL)
+    assert run.channels.loc["strain_1", "removed_at"] == 900
+    assert run.channels.loc["strain_1", "removal"] == "turns into 'Extension' over 320 mm"
+    assert any(warning.startswith("channel 'Tensile strain' turns into 'Extension' over 320 mm"
+                                  " at ") for warning in run.warnings)
+    # over another length than the gauge's, the two agree by chance (proportional travel)
+    run = condition_tensile(table, 0.9 * truth.gauge_length, n_cycles=1, **BLUEHILL)
+    assert run.channels.loc["strain_1", "removal"] != "turns into 'Extension' over 320 mm"
+
+
 def test_a_true_strain_worked_out_from_the_crosshead_is_used_as_its_engineering_strain():
     # with no gauge length for 'Extension', the file's true strain ln(1 + extension / 50 mm)
     # is what there is: E0 from it is E0 from the extension over 50 mm
