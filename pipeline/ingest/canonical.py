@@ -259,7 +259,7 @@ def settle(
             file=meta.file, row=meta.header_line,
             hint="read another specimen (specimen_in_file in the run sheet)")
     empty = empty | others
-    _refuse_a_table_of_peaks(raw)
+    _refuse_a_table_of_peaks(raw, kind)
     problems = _Problems(strict, meta.warnings)
     sheet_units = _run_sheet_units(units, meta.file)
     ambiguous: set[str] = set()
@@ -402,16 +402,18 @@ def _warn_by_unit_alone(raw: RawColumns, role: str, columns: list[int]) -> None:
                 f"columns = {{{key}}}")
 
 
-def _refuse_a_table_of_peaks(raw: RawColumns) -> None:
+def _refuse_a_table_of_peaks(raw: RawColumns, kind: str) -> None:
     """Refuse a table of one row per cycle: its force columns, or its gauge columns, are
     each cycle's peaks and valleys (and amplitudes, means); or, beside a count of cycles,
     each a maximum alone (``Cycles,Max Load,Max Position``). Unless the run sheet names
-    the force or the gauges."""
+    the force or the gauges. A wear run, which does without the force, may read such a
+    table (a WaveMatrix trends export: the elongation one row per cycle) once the run sheet
+    names which of its gauge columns is the elongation: its hint says so."""
     roles = raw.candidates.roles
     counted = bool(roles.get("cycle_count"))
     if {"force", "gauge"} & set(raw.candidates.explicit):  # the run sheet says
         return
-    for role in ("force", "gauge"):
+    for role in ("gauge",) if kind == "wear" else ("force", "gauge"):
         measured = roles.get(role, [])
         if not measured:
             continue
@@ -426,9 +428,13 @@ def _refuse_a_table_of_peaks(raw: RawColumns) -> None:
         else:
             continue
         raise LayoutError(
-            f"{said}: the file is a table of one row per cycle, not the samples of a log",
+            f"{said}: the file is a table of one row per cycle"
+            + ("" if kind == "wear" else ", not the samples of a log"),
             file=raw.metadata.file, row=raw.metadata.header_line,
-            hint="export the test's raw data (every sample) rather than its trends or peaks "
+            hint="a wear run reads one row per cycle: name the column that is the "
+                 "elongation, the cycle's maximum or minimum as the lab measures it, "
+                 'columns = {gauges = "..."}' if kind == "wear" else
+                 "export the test's raw data (every sample) rather than its trends or peaks "
                  f"table; only if those columns are sampled readings, name the {role} column "
                  f"in the run sheet, columns = {{{SHEET_KEY[role]} = \"...\"}}",
         )

@@ -294,6 +294,21 @@ def test_a_table_of_each_cycles_peaks_is_not_read_as_a_log(write):
     assert "raw data" in caught.value.hint
 
 
+def test_a_wear_run_reads_a_table_of_each_cycles_peaks_once_the_elongation_is_named(write):
+    # a wear run needs no force: the force's extremes were refused, with the hint to export
+    # every sample, though one row per cycle is what a wear log is
+    with pytest.raises(LayoutError, match="'Position des Aktuators:Maximum' and 'Position des "
+                                          "Aktuators:Minimum' are a cycle's extremes: the file "
+                                          "is a table of one row per cycle") as caught:
+        read_table(write("trends.csv", TRENDS), kind="wear")
+    assert caught.value.hint.startswith("a wear run reads one row per cycle: name the column "
+                                        "that is the elongation")
+    table, _ = read_table(write("trends.csv", TRENDS), kind="wear",
+                          columns={"gauges": ["Position des Aktuators:Maximum"]})
+    np.testing.assert_allclose(table["gauge_1"], [17.3591376954666e-3, 17.2344483349125e-3])
+    np.testing.assert_allclose(table["cycle_count"], [1, 2])
+
+
 def test_a_table_of_each_cycles_gauge_extremes_is_not_read_as_a_log(write):
     # a real Instron 8800 low-cycle fatigue table without its load channel: the position's
     # and the strain's extremes, and the strain's amplitude, one row per cycle
