@@ -170,7 +170,8 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None,
     if tests:
         data, blocks, part, first_line = _one_test(head, marked, blocks, tests, start,
                                                    first_line, specimen, header.metadata,
-                                                   timed=len(times) == 1)
+                                                   timed=len(times) == 1,
+                                                   delimiter=spec.delimiter)
     same = [block for block in blocks if not block.other]
     header.metadata.preamble["blocks"] = str(1 + sum(block.opens for block in same))
     header.metadata.warnings += [block.note for block in blocks if block.other]
@@ -269,7 +270,7 @@ def _line_before(data: bytes, offset: int) -> tuple[int, str]:
 
 def _one_test(head: Head, marked: _Marked, blocks: list[_Block], tests: list[_Block],
               start: int, first_line: int, specimen: str | int | None,
-              metadata, timed: bool) -> tuple[bytes, list[_Block], range, int]:
+              metadata, timed: bool, delimiter: str) -> tuple[bytes, list[_Block], range, int]:
     """Of tests one below the other (`tests`: the later blocks whose time starts again, or
     that repeat the names without a time to tell, when not `timed`), the one `specimen`
     names: its part of the marked data (the file from offset `start` on, whose first line
@@ -291,6 +292,11 @@ def _one_test(head: Head, marked: _Marked, blocks: list[_Block], tests: list[_Bl
     chosen = choose([], len(tests) + 1, specimen, said, "from the top", file=head.name,
                     row=lines[0])
     metadata.specimen = str(chosen + 1)
+    if chosen:  # the settings above its own block are its own (the top's, the first test's)
+        after = tests[chosen - 2].start if chosen > 1 else -1
+        own = [line for block in blocks if after < block.start <= tests[chosen - 1].start
+               for line in block.settings]
+        metadata.preamble.update(parse_preamble(own, delimiter))
     low = tests[chosen - 1].start if chosen else 0
     high = tests[chosen].start if chosen < len(tests) else len(marked.data)
     kept = [block._replace(start=block.start - low) for block in blocks
@@ -309,6 +315,9 @@ class _Block(NamedTuple):
     other: bool  #: whether it holds other columns than the first block
     note: str  #: the warning that it is left out, when it is
     restarts: bool = False  #: whether its time starts again (a test of its own)
+    #: its header's settings, as ``key: value`` lines (a tribometer's step: ``Data Count =
+    #: 107``, ``Started at: 12:22:00.384``), those of its own test
+    settings: tuple[str, ...] = ()
 
 
 def _later_blocks(head: Head, spec: TableSpec, data: bytes, time: int | None) -> list[_Block]:
@@ -385,7 +394,9 @@ def _block(spec: TableSpec, first: _FirstBlock, header_text: str, points: memory
     time = _number(fields, first.time, spec)
     restarts = (time is not None and first.start_time is not None
                 and time <= first.start_time) or (first.time is None and opens and bool(rows))
-    return _Block(start, lines, opens, False, "", restarts)
+    settings = tuple(line for line in header if line and line != first.units
+                     and _unlabelled(line, spec.delimiter) != names)
+    return _Block(start, lines, opens, False, "", restarts, settings)
 
 
 def _number(fields: list[str], column: int | None, spec: TableSpec) -> float | None:

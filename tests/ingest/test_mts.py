@@ -341,3 +341,31 @@ def test_a_trapezium_exports_japanese_cycles_whose_time_runs_on_are_one_test(wri
                       "cp932")
     table, _ = read_table(specimens, specimen=1)
     np.testing.assert_allclose(table["force"], 100.0 * np.arange(30))
+
+
+def cetr(counts: tuple[int, ...]) -> str:
+    """A CETR UMT tribometer's export of steps (its layout; our numbers): the run's
+    settings, then each step's own (its count of rows, its start) over its names and
+    units, each step timed from 0."""
+    lines = ["Created by CETR Data Viewer ver.2.19.106 05/12/22 14:43:46",
+             f"Total number of steps = {len(counts)}", ""]
+    for step, count in enumerate(counts, start=1):
+        lines += [f"Step No. {step}", "", f"Data Count   = {count}",
+                  f"Started at: 12:2{step}:58.029 12 May 2022", "",
+                  "Fx,Fz,Z,T,Ff,COF", "g,g,mm,sec,g,", ""]
+        lines += [f"7.68,-198.96,-0.69{i % 10},{0.02 * i:.4f},7.68,0.0386" for i in range(count)]
+        lines.append("")
+    return "\n".join(lines)
+
+
+def test_a_later_steps_own_settings_are_its_preamble(write):
+    # a real CETR export's second step was given the first's: its count of 110 rows
+    # against the 107 read said "it may be cut short", and its start was the first's
+    path = write("HT-2n-6-4 2_001.csv", cetr((110, 107)))
+    table, meta = read_table(path, kind="wear", specimen=2, strict=False)
+    assert len(table) == 107
+    assert meta.preamble["Data Count"] == "107"
+    assert meta.preamble["Started at"] == "12:22:58.029 12 May 2022"
+    assert not any("cut short" in warning for warning in meta.warnings)
+    _, first = read_table(path, kind="wear", specimen=1, strict=False)
+    assert first.preamble["Data Count"] == "110"
