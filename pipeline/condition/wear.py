@@ -227,8 +227,11 @@ def _wear(tau: ArrayLike, values: ArrayLike, column: str, *, pitches: int, pitch
     nominal = _section_length(pitches, pitch, reference)
     tau, values = _readings(tau, values, abscissa=abscissa, column=column)
     elongation = values - nominal if column == "length" else values
-    _check_length(nominal + elongation, nominal, column)
     origin = elongation[0] if reference == "first" else 0.0
+    # a gauge read from its first reading may stand anywhere (a stage at -114.6 mm): the
+    # readings from there are checked; a length is the section's, whatever the reference
+    _check_length(nominal + elongation - (origin if column == "elongation" else 0.0),
+                  nominal, column)
     table = pd.DataFrame({abscissa: tau, "elongation": (elongation - origin) / pitches})
     table["relative_elongation"] = table["elongation"] / pitch
     return WearLog(table=table, pitch=float(pitch), reference=reference)

@@ -51,6 +51,18 @@ def test_elongation_given_directly_over_cycles():
     np.testing.assert_allclose(first.elongation, GROWTH - GROWTH[0], rtol=1e-12, atol=1e-18)
 
 
+def test_a_gauge_read_from_its_first_reading_may_stand_anywhere():
+    # a real rig's stage position read as the gauge, -114.6 mm at the start: read from its
+    # first reading the elongation is the steps from there; it was refused as making the
+    # section 0.55 times its nominal length, the check made on the readings as they stand
+    stage = -0.1146 + PITCHES * GROWTH
+    log = wear_from_elongation(TIME, stage, pitches=PITCHES, pitch=PITCH, reference="first")
+    np.testing.assert_allclose(log.elongation, GROWTH - GROWTH[0], rtol=1e-9, atol=1e-15)
+    # against the nominal section the stand is an elongation: that is refused
+    raises(UnitError, wear_from_elongation, TIME, stage, pitches=PITCHES, pitch=PITCH,
+           reference="nominal")
+
+
 def test_one_pitch_elongation():
     log = wear_from_elongation(TIME, GROWTH, pitches=1, pitch=PITCH, reference="nominal")
     np.testing.assert_allclose(log.elongation, GROWTH)
