@@ -261,17 +261,23 @@ def _joined(channel: pd.Series, force: np.ndarray, column: str, warnings: list[s
 
 
 def _no_fracture_note(oriented_force: np.ndarray) -> list[str]:
-    """The note of a single pull whose force ends well below its maximum with no fracture
-    found (:func:`~pipeline.condition.breaks.find_fracture`): a tear, a test stopped and
-    unloaded, or a record cut before the break; the figures at fracture are not given.
-    Empty when it ends within :data:`~pipeline.condition.breaks.FRACTURE_DROP` of it."""
+    """The note of a single pull whose record ends with the force fallen from its maximum
+    but still carried, with no fracture found (:func:`~pipeline.condition.breaks.find_fracture`):
+    a record cut before the break, or a test stopped while the force fell; the figures at
+    fracture are not given. Empty when it ends within
+    :data:`~pipeline.condition.breaks.FRACTURE_DROP` of the maximum, or below
+    :data:`UNLOADED` of it: a pull brought back there was unloaded (a proof-load test)."""
     maximum, last = float(np.max(oriented_force)), float(oriented_force[-1])
-    if not maximum > 0 or last >= (1.0 - FRACTURE_DROP) * maximum:
+    if not maximum > 0 or not UNLOADED * maximum < last < (1.0 - FRACTURE_DROP) * maximum:
         return []
     return [f"no fracture found: the force ends at {last / 1e3:.4g} kN, {last / maximum:.0%} "
             f"of its maximum ({maximum / 1e3:.4g} kN), after falling with no sudden drop (a "
-            "gradual tear, a test stopped and unloaded, or a record cut before the break): "
-            "nothing is given at fracture"]
+            "record cut before the break, or a test stopped while the force fell): nothing "
+            "is given at fracture"]
+
+
+#: A single pull whose force ends below this fraction of its maximum was unloaded.
+UNLOADED = 0.1
 
 
 def _permanent_strains(strain: np.ndarray, segmentation: Segmentation) -> np.ndarray:
