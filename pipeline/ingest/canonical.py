@@ -278,7 +278,7 @@ def settle(
             keys += " (or, for rows sampled at a steady rate, the rate: sample_rate_hz = ...)"
         why = "".join(f"{reason}; " for role, reason in raw.set_aside if role in group)
         why += _spectrum_note(raw) + unread_rate(meta.preamble) if "time" in group else ""
-        why += _weight_note(raw, empty) if "force" in group else ""
+        why += _load_note(raw, empty) if "force" in group else ""
         problems.report(next((rejected[role] for role in group if role in rejected), None)
                         or ColumnError(
             f"no {' or '.join(group)} column found ({kind} runs need {needs})",
@@ -608,7 +608,7 @@ def _spectrum_note(raw: RawColumns) -> str:
             "record; ")
 
 
-def _weight_note(raw: RawColumns, empty: set[int]) -> str:
+def _load_note(raw: RawColumns, empty: set[int]) -> str:
     """What the hint of a missing force says of the columns in a unit of mass whose name
     gives no role (a load cell's ``Value [kg]``), and of those named as a weight without a
     unit (a load-cell logger's ``weight``): a mass alone makes no force, but such a column

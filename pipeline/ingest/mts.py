@@ -170,8 +170,7 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None,
     if tests:
         data, blocks, part, first_line = _one_test(head, marked, blocks, tests, start,
                                                    first_line, specimen, header.metadata,
-                                                   timed=len(times) == 1,
-                                                   delimiter=spec.delimiter)
+                                                   timed=len(times) == 1)
     same = [block for block in blocks if not block.other]
     header.metadata.preamble["blocks"] = str(1 + sum(block.opens for block in same))
     header.metadata.warnings += [block.note for block in blocks if block.other]
@@ -270,7 +269,7 @@ def _line_before(data: bytes, offset: int) -> tuple[int, str]:
 
 def _one_test(head: Head, marked: _Marked, blocks: list[_Block], tests: list[_Block],
               start: int, first_line: int, specimen: str | int | None,
-              metadata, timed: bool, delimiter: str) -> tuple[bytes, list[_Block], range, int]:
+              metadata, timed: bool) -> tuple[bytes, list[_Block], range, int]:
     """Of tests one below the other (`tests`: the later blocks whose time starts again, or
     that repeat the names without a time to tell, when not `timed`), the one `specimen`
     names: its part of the marked data (the file from offset `start` on, whose first line
@@ -296,7 +295,7 @@ def _one_test(head: Head, marked: _Marked, blocks: list[_Block], tests: list[_Bl
         after = tests[chosen - 2].start if chosen > 1 else -1
         own = [line for block in blocks if after < block.start <= tests[chosen - 1].start
                for line in block.settings]
-        metadata.preamble.update(parse_preamble(own, delimiter))
+        metadata.preamble.update(parse_preamble(own, metadata.delimiter))
     low = tests[chosen - 1].start if chosen else 0
     high = tests[chosen].start if chosen < len(tests) else len(marked.data)
     kept = [block._replace(start=block.start - low) for block in blocks

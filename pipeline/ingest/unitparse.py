@@ -289,11 +289,7 @@ def is_temperature_unit(text: str | None) -> bool:
     >>> is_temperature_unit("°C"), is_temperature_unit("degF"), is_temperature_unit("s")
     (True, True, False)
     """
-    return any(ureg.parse_units(spelling).dimensionality == _TEMPERATURE
-               for spelling in spellings(text or ""))
-
-
-_TEMPERATURE = ureg.parse_units("K").dimensionality
+    return _of_dimension(text, _TEMPERATURE)
 
 
 def is_voltage_unit(text: str | None) -> bool:
@@ -303,11 +299,16 @@ def is_voltage_unit(text: str | None) -> bool:
     >>> is_voltage_unit("V"), is_voltage_unit("mV"), is_voltage_unit("N")
     (True, True, False)
     """
-    return any(ureg.parse_units(spelling).dimensionality == _VOLTAGE
+    return _of_dimension(text, _VOLTAGE)
+
+
+def _of_dimension(text: str | None, dimensionality: object) -> bool:
+    """Whether some spelling of `text` is a unit of `dimensionality` (pint's)."""
+    return any(ureg.parse_units(spelling).dimensionality == dimensionality
                for spelling in spellings(text or ""))
 
 
-_VOLTAGE = ureg.parse_units("V").dimensionality
+_TEMPERATURE, _VOLTAGE = (ureg.parse_units(unit).dimensionality for unit in ("K", "V"))
 
 
 def unit_misfits(text: str | None, role: str) -> bool:
