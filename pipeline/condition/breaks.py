@@ -12,7 +12,9 @@ Fracture (:func:`find_fracture`)
     * at least :data:`SUDDEN` times any fall before it over as many samples
       (so a cyclic test's controlled unloadings, however fast, are not);
     * over within :data:`FRACTURE_SPAN` samples (an unloading, however fast
-      at first, goes on falling for longer);
+      at first, goes on falling for longer), counted at the rate the loading was
+      logged at (a machine that logs faster once it detects the break, as
+      Bluehill does at 2 ms after 0.1 s, writes a fall of 0.3 s in 25 samples);
     * never half recovered (the next cycle of a cyclic test rises again; after
       a fracture the force stays down, or rises a little where only part of
       the specimen broke);
@@ -170,10 +172,36 @@ def _falls(force: np.ndarray, window: int) -> np.ndarray:
     return np.where(np.isfinite(lowest), force - lowest, 0.0)
 
 
-def _is_fracture(force: np.ndarray, start: int, falls: np.ndarray, settled: float) -> bool:
+def _loading_intervals(time: np.ndarray | None, size: int, peak: int) -> np.ndarray:
+    """Position of each sample counted in the sample intervals of the loading (up to the
+    force's maximum at `peak`): a step under half the loading's median step counts as its
+    share of it, any other as one sample. Without a time strictly rising after the maximum
+    (none given, or stamps rounded so that rows repeat them) the samples are counted."""
+    positions = np.arange(size, dtype=float)
+    if time is None or size < 3 or peak < 2:
+        return positions
+    steps = np.diff(np.asarray(time, dtype=float))
+    typical = np.median(steps[:peak])
+    after = steps[peak:]
+    if not (typical > 0 and np.all(np.isfinite(after)) and np.all(after > 0)):
+        return positions
+    counted = np.where(steps < typical / 2, steps / typical, 1.0)
+    counted[:peak] = 1.0
+    return np.concatenate([[0.0], np.cumsum(counted)])
+
+
+def _within(positions: np.ndarray, start: int, intervals: float) -> int:
+    """End (exclusive) of the samples within `intervals` loading intervals after `start`."""
+    return int(np.searchsorted(positions, positions[start] + intervals, side="right"))
+
+
+def _is_fracture(force: np.ndarray, start: int, falls: np.ndarray, settled: float,
+                 positions: np.ndarray) -> bool:
     """The fall from `start` is a fracture (see the module docstring); `settled` [N] is the
-    fall over :data:`FRACTURE_SAMPLES` below which the force has stopped falling."""
-    stopped = np.flatnonzero(falls[start + 1 : start + FRACTURE_SPAN + 2] <= settled)
+    fall over :data:`FRACTURE_SAMPLES` below which the force has stopped falling, and
+    `positions` count the samples in the loading's intervals (:func:`_loading_intervals`)."""
+    span = _within(positions, start, FRACTURE_SPAN + 1)
+    stopped = np.flatnonzero(falls[start + 1 : span] <= settled)
     if not stopped.size:
         return False
     stop = start + 2 + int(stopped[0]) + FRACTURE_SAMPLES
@@ -189,13 +217,16 @@ def _is_fracture(force: np.ndarray, start: int, falls: np.ndarray, settled: floa
     return falls[start] >= SUDDEN * earlier and not recovers and not carries
 
 
-def find_fracture(oriented_force: np.ndarray) -> int | None:
+def find_fracture(oriented_force: np.ndarray, time: np.ndarray | None = None) -> int | None:
     """Position of the last sample before fracture, or None when the specimen did not break.
 
     Parameters
     ----------
     oriented_force : numpy.ndarray
         Force in the direction of the load [N], finite, in time order.
+    time : numpy.ndarray, optional
+        Time of each sample [s]. A fall logged faster than the loading (a machine's break
+        capture) is then judged in the loading's sample intervals; without it, in samples.
 
     Returns
     -------
@@ -222,12 +253,13 @@ def find_fracture(oriented_force: np.ndarray) -> int | None:
     candidates = peak + np.flatnonzero((falls[peak:] >= threshold)
                                        & (force[peak:] >= NEAR_MAXIMUM * maximum))
     settled = max(3.0 * noise_level(force), 0.005 * maximum)
-    start = next((int(i) for i in candidates if _is_fracture(force, int(i), falls, settled)),
-                 None)
+    positions = _loading_intervals(time, force.size, peak)
+    start = next((int(i) for i in candidates
+                  if _is_fracture(force, int(i), falls, settled, positions)), None)
     if start is None:
         return None
-    bottom = start + 1 + int(np.argmin(force[start + 1 : start + 2 + FRACTURE_SPAN
-                                             + FRACTURE_SAMPLES]))
+    reach = _within(positions, start, 1 + FRACTURE_SPAN + FRACTURE_SAMPLES)
+    bottom = start + 1 + int(np.argmin(force[start + 1 : reach]))
     # the last sample before the fall: a fall over several samples (a slow log) begins
     # with the first step down of at least its share of a fracture's fall that is SUDDEN
     # times the step before it (a necking specimen sheds load faster and faster: a real

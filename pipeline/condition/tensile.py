@@ -525,7 +525,8 @@ def condition_tensile(
         warnings.append("the force is negative as it loads (a compression test, or a "
                         "machine that logs tension negative): forces, elongations and E0 are "
                         "read in the direction of the load, as magnitudes")
-    fracture = find_fracture(sign * force)
+    time = samples["time"].to_numpy() if "time" in samples.columns else None
+    fracture = find_fracture(sign * force, time)
     end = force.size if fracture is None else fracture + 1
     if fracture is not None:
         warnings.append(f"fracture at {abs(force[fracture]) / 1e3:.4g} kN (sample "

@@ -188,6 +188,25 @@ def test_a_record_that_ends_while_the_force_falls_is_a_fracture():
     assert find_fracture(np.concatenate([ramp, fall])) == ramp.size - 1
 
 
+def test_a_fracture_captured_at_a_higher_rate_is_judged_at_the_loading_rate():
+    # the last samples of a real Bluehill rivet pull [s], [N]: logged every 0.1 s, then every
+    # 2 to 6 ms once the machine detected the break; the fall of 0.3 s took 25 samples, more
+    # than a fracture's span, and the fracture was put 90 N down the fall
+    ramp = np.linspace(20.0, 836.56421, 224)
+    fall = [837.21625, 832.08575, 810.53033, 780.02155, 747.41772, 716.48602, 680.17712,
+            639.9696, 597.08087, 552.56342, 507.28903, 462.02939, 417.42111, 374.01321,
+            332.23926, 292.44891, 254.89337, 219.74986, 187.14401, 157.13211, 129.72896,
+            93.43412, 62.68209, 37.13066, 10.47543, -15.95855, 0.55094, -0.5131, -0.52896,
+            -0.36868, -0.32585, -0.07868, -0.17596, -0.16034]
+    capture = np.cumsum([0.027, 0.003] + [0.002] * 16 + [0.003] * 3 + [0.004, 0.006])
+    time = np.concatenate([np.arange(227) * 0.1, 22.6 + capture,
+                           22.681 + 0.1 * np.arange(1, 9)])
+    force = np.concatenate([ramp, fall])
+    assert force[find_fracture(force, time)] == pytest.approx(837.2, abs=30.0)
+    # stamps rounded so that rows repeat them say nothing of the rate: samples are counted
+    assert find_fracture(force, np.round(time, 0)) == find_fracture(force)
+
+
 def test_a_pull_stopped_near_its_maximum_is_no_fracture():
     # the force shed by the relaxation falls as suddenly as a slow log's fracture, and
     # stops within as many samples; the specimen still carries 85 %: it did not break
