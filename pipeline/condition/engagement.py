@@ -208,12 +208,16 @@ def check_uniform(time: np.ndarray, step: float, file: str | Path | None = None,
     if not (steps.min() >= 0.5 * step and steps.max() <= 1.5 * step):  # also catches NaN
         deviation = np.abs(steps - step)
         worst = int(np.argmax(np.where(np.isfinite(deviation), deviation, np.inf)))
+        missed = steps[worst] / step - 1
+        lost = (f"{round(missed)} sample(s) missing there (the logger dropped them); "
+                if missed > 0.5 and abs(missed - round(missed)) < 0.1 else "")
         raise SignalError(
-            f"the log is not uniformly sampled: time goes from {time[worst]!r} to "
-            f"{time[worst + 1]!r} s (samples {first + worst + 1} to {first + worst + 2}) where "
-            f"the mean step is {step:.6g} s", file=file, column="time",
-            hint="a gap or a repeated block in the recording; export the log again or cut it "
-                 "into uniformly sampled pieces")
+            f"the log is not uniformly sampled: time goes from {time[worst]:.9g} to "
+            f"{time[worst + 1]:.9g} s (samples {first + worst + 1} to {first + worst + 2}) "
+            f"where the mean step is {step:.6g} s", file=file, column="time",
+            hint=f"{lost}a gap or a repeated block in the recording: an engagement log must be "
+                 "sampled at one rate throughout (a data acquisition card's own clock); export "
+                 "the log again or cut it into uniformly sampled pieces")
 
 
 def spectrum_segment(sample_rate: float, period: float) -> int:
@@ -261,9 +265,12 @@ def natural_frequency_estimate(force: np.ndarray, sample_rate: float, period: fl
         low, high = 0.6 * near / (2 * np.pi), min(high, 1.6 * near / (2 * np.pi))
     band = np.flatnonzero((frequency >= low) & (frequency <= high))
     if band.size == 0:
+        where = (f"no spectrum between {low:.4g} and {high:.4g} Hz to find the branch's "
+                 "ringing in" if low < high else
+                 f"the branch's ringing, expected above {low:.4g} Hz, lies beyond what "
+                 f"{sample_rate:.4g} samples a second can show (up to {high:.4g} Hz)")
         raise SignalError(
-            f"no spectrum between {low:.4g} and {high:.4g} Hz to find the branch's ringing in",
-            file=file, hint="the sampling rate is too low for this speed; log at "
+            where, file=file, hint="the sampling rate is too low for this branch and speed; log at "
                             f"{ADVISED_SAMPLE_RATE / 1e3:g} kHz or more")
     peak = band[np.argmax(power[band])]
     f_peak = frequency[peak]

@@ -285,12 +285,18 @@ def _slack(events: EngagementEvents, geo: WindowGeometry, file: str | Path | Non
     """
     reach = MAX_ONSET_SHIFT * 2 * np.pi / (0.7 * events.natural_frequency)
     if WINDOW_PRE * events.tau < reach + 2 / geo.rate:
+        stated = events.stated_period / 2
+        measured = ("" if math.isclose(events.tau, stated, rel_tol=0.02) else
+                    f" (half the seating period measured in the log; the run sheet's speed "
+                    f"and teeth give {stated:.3g} s: the log's strikes do not come at the "
+                    "stated speed, or what was taken for them is no strike)")
         raise FitError(
             f"the strikes come too fast for their ringing to be told apart: tau = "
-            f"{events.tau:.3g} s against a ringing period of "
+            f"{events.tau:.3g} s{measured} against a ringing period of "
             f"{2 * np.pi / events.natural_frequency:.3g} s", file=file,
             hint="the extraction needs tau = pi / (z omega) above about one ringing period of "
-                 "the branch; check the speed and teeth in the run sheet")
+                 "the branch; check the speed and teeth in the run sheet, and that the force "
+                 "column is the branch tension of a chain running over the wheel")
     return int(math.ceil((reach + events.onset_resolution) * geo.rate)) + 1
 
 

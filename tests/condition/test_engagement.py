@@ -14,6 +14,7 @@ from hypothesis import strategies as st
 from pipeline.condition.engagement import (
     MIN_PERIODS,
     SpeedMismatchWarning,
+    natural_frequency_estimate,
     sampling,
 )
 from pipeline.engagement_log import detect_events, extract_impacts
@@ -111,6 +112,25 @@ def test_log_too_short_for_the_measured_speed():
     with pytest.raises(SignalError, match="measured seating periods"), \
             pytest.warns(SpeedMismatchWarning):
         detect_events(table, z=8, omega=20.0)
+
+
+def test_a_dropped_sample_is_named_in_the_refusal():
+    # a real logger skipped one sample (its time stepped 10 ms where it steps 5 ms); the
+    # message printed numpy's reprs of the times
+    table, _ = log(duration=0.5)
+    table = table.drop(index=2000).reset_index(drop=True)
+    with pytest.raises(SignalError, match="not uniformly sampled") as error:
+        detect_events(table, z=8, omega=20.0)
+    assert "np.float64" not in str(error.value)
+    assert error.value.hint.startswith("1 sample(s) missing there")
+
+
+def test_a_ringing_beyond_the_sampling_rate_is_named_as_such():
+    # a 200 Hz log of a branch expected to ring at about 150 Hz: the band searched ran from
+    # 88 Hz up to 80 Hz, and was told as "no spectrum between 88.35 and 80 Hz"
+    force = np.random.default_rng(0).normal(size=4000)
+    with pytest.raises(SignalError, match="lies beyond what 200 samples a second can show"):
+        natural_frequency_estimate(force, 200.0, 0.1, near=2 * math.pi * 147.25)
 
 
 @pytest.mark.parametrize("defect, match", [

@@ -8,9 +8,10 @@ import math
 import numpy as np
 import pytest
 
+from pipeline.condition.engagement import EngagementEvents
 from pipeline.engagement_log import detect_events, extract_impacts
 from pipeline.errors import FitError
-from pipeline.fit.impact import EXCLUSIONS, Ringing
+from pipeline.fit.impact import EXCLUSIONS, Ringing, plan_extraction
 from pipeline.simulate.engagement import EngagementSettings, simulate_engagement
 
 #: The accuracy asked of a run's medians at SNR >= 10 (docs/quality.md).
@@ -192,3 +193,24 @@ def test_nothing_to_fit_is_a_fit_error():
     with pytest.raises(FitError, match="no engagement event can be fitted") as error:
         extract_impacts(table, events, file="E8.tdms")
     assert error.value.file == "E8.tdms" and error.value.hint
+
+
+def test_strikes_too_fast_at_a_period_off_the_run_sheet_say_so():
+    # a real rocket motor's thrust, run as an engagement log: the "seatings" found every
+    # 0.027 s where the run sheet's speed gives 0.105 s; the hint told only to check the
+    # sheet, which was right
+    onsets = np.arange(10) * 0.0266
+    events = EngagementEvents(
+        impact1_time=onsets, impact2_time=onsets + 0.0133, seating_period=0.0266,
+        stated_period=2 * math.pi / (6 * 10.0), omega=39.4, stated_omega=10.0, z=6,
+        sample_rate=2000.0, start_time=0.0, n_samples=1763,
+        natural_frequency=2 * math.pi / 0.0122, source="force", onset_resolution=5e-4)
+    with pytest.raises(FitError, match="run sheet's speed and teeth give 0.0524 s") as error:
+        plan_extraction(events, None)
+    assert "branch tension" in error.value.hint
+    # at the stated period, nothing is said of it
+    stated = dataclasses.replace(events, seating_period=events.stated_period,
+                                 natural_frequency=2 * math.pi / 0.06)
+    with pytest.raises(FitError) as error:
+        plan_extraction(stated, None)
+    assert "run sheet's speed" not in str(error.value)
