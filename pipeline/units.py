@@ -48,6 +48,10 @@ for _definition in ("秒 = second", "毫秒 = millisecond", "分钟 = minute", "
                     "牛 = newton", "牛顿 = newton", "千牛 = kilonewton", "千牛顿 = kilonewton",
                     "米 = meter", "毫米 = millimeter", "微米 = micrometer", "厘米 = centimeter"):
     ureg.define(_definition)
+# Japanese and Korean units of time (a Korean machine's 시간(초): the time in seconds).
+for _definition in ("ミリ秒 = millisecond", "分 = minute", "時間 = hour", "초 = second",
+                    "밀리초 = millisecond", "분 = minute", "시 = hour"):
+    ureg.define(_definition)
 Q_ = ureg.Quantity
 
 #: Standard acceleration of gravity [m/s^2] (CGPM 1901); 1 kgf = 9.80665 N.

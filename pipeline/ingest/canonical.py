@@ -32,6 +32,7 @@ row-range reader of :mod:`pipeline.ingest.stream`): the same values either way.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -608,6 +609,11 @@ def _spectrum_note(raw: RawColumns) -> str:
             "record; ")
 
 
+#: An accelerometer's axis (a drop-test logger's ``ax``, ``AccY``), whose ``g`` is gravity's,
+#: no gram: never offered as a load in grams.
+_ACCELEROMETER_AXIS = re.compile(r"(?:a|acc|accel)[\s_.-]?[xyz]", re.IGNORECASE)
+
+
 def _load_note(raw: RawColumns, empty: set[int]) -> str:
     """What the hint of a missing force says of the columns in a unit of mass whose name
     gives no role (a load cell's ``Value [kg]``), and of those named as a weight without a
@@ -620,7 +626,7 @@ def _load_note(raw: RawColumns, empty: set[int]) -> str:
         if index in empty or match_role(name) is not None or is_unmeasured(name):
             continue
         shown = display_name(raw.names, index)
-        if is_mass_unit(unit):
+        if is_mass_unit(unit) and not _ACCELEROMETER_AXIS.fullmatch(name.strip()):
             notes.append(f"column {shown!r} is in {unit}, a mass: if it is the load, name it "
                          "as the force (read as the weight of that mass); ")
         elif is_voltage_unit(unit):

@@ -123,6 +123,16 @@ def test_the_hint_of_a_missing_role_says_what_a_column_may_be(write, text, said)
     assert said in caught.value.hint
 
 
+def test_an_accelerometer_in_g_is_not_offered_as_a_load(write):
+    # a real WitMotion drop-test logger's ax(g): the hint offered it as the load, read as the
+    # weight of grams (its 6.4 g shock as 0.063 N)
+    text = "Time(s)\tax(g)\tay(g)\taz(g)\n0.000\t-0.26\t-0.56\t1.06\n0.005\t-0.25\t-0.55\t1.05\n"
+    with pytest.raises(ColumnError) as caught:
+        read_table(write("drop.txt", text), kind="engagement")
+    assert "a mass" not in caught.value.hint
+    assert "ax" in caught.value.hint  # still listed among the file's columns
+
+
 def test_time_backwards_and_gaps_are_warnings(write):
     text = HEADER + rows(*[(t, 1, 0) for t in (0.0, 0.1, 0.2, 0.15, 0.3, 0.4, 9.0, 9.1)])
     _, meta = read_table(write("t.csv", text))

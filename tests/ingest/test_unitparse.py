@@ -40,6 +40,9 @@ def factor(text, role):
         # Chinese unit names
         ("秒", "time", 1.0), ("毫秒", "time", 1e-3), ("千牛", "force", 1e3), ("牛", "force", 1.0),
         ("毫米", "gauge", 1e-3), ("微米", "gauge", 1e-6),
+        # Japanese and Korean units of time
+        ("ミリ秒", "time", 1e-3), ("分", "time", 60.0), ("초", "time", 1.0),
+        ("밀리초", "time", 1e-3), ("분", "time", 60.0),
         # a fibre tester's gram-force
         ("gmf", "force", 1e-3 * STANDARD_GRAVITY), ("gf", "force", 1e-3 * STANDARD_GRAVITY),
         # the force of a weight written out (a switch tester's gram-force)
