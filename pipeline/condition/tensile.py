@@ -25,7 +25,7 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import pandas as pd
@@ -260,15 +260,17 @@ def _joined(channel: pd.Series, force: np.ndarray, column: str, warnings: list[s
     return pd.Series(joined, index=channel.index, name=channel.name) if tares else channel
 
 
-def _no_fracture_note(oriented_force: np.ndarray) -> list[str]:
+def _no_fracture_note(oriented_force: np.ndarray, gave_way: bool) -> list[str]:
     """The note of a single pull whose record ends with the force fallen from its maximum
     but still carried, with no fracture found (:func:`~pipeline.condition.breaks.find_fracture`):
     a record cut before the break, or a test stopped while the force fell; the figures at
     fracture are not given. Empty when it ends within
     :data:`~pipeline.condition.breaks.FRACTURE_DROP` of the maximum, or below
-    :data:`UNLOADED` of it: a pull brought back there was unloaded (a proof-load test)."""
+    :data:`UNLOADED` of it unless the specimen `gave_way` (:func:`_lengthens_as_it_falls`): a
+    pull brought back there was unloaded (a proof-load test)."""
     maximum, last = float(np.max(oriented_force)), float(oriented_force[-1])
-    if not maximum > 0 or not UNLOADED * maximum < last < (1.0 - FRACTURE_DROP) * maximum:
+    low = 0.0 if gave_way else UNLOADED * maximum
+    if not maximum > 0 or not low < last < (1.0 - FRACTURE_DROP) * maximum:
         return []
     return [f"no fracture found: the force ends at {last / 1e3:.4g} kN, {last / maximum:.0%} "
             f"of its maximum ({maximum / 1e3:.4g} kN), after falling with no sudden drop (a "
@@ -278,6 +280,10 @@ def _no_fracture_note(oriented_force: np.ndarray) -> list[str]:
 
 #: A single pull whose force ends below this fraction of its maximum was unloaded.
 UNLOADED = 0.1
+
+#: A single pull's last fall of the force that lengthens the specimen by more than this
+#: fraction of what its loading did is no unloading (:func:`_lengthens_as_it_falls`).
+FAILING_LENGTHENING = 0.01
 
 
 def _permanent_strains(strain: np.ndarray, segmentation: Segmentation) -> np.ndarray:
@@ -410,6 +416,21 @@ def _switched(strain: np.ndarray, lengths: dict[str, np.ndarray], gauge_length: 
     return switch
 
 
+def _lengthens_as_it_falls(segmentation: Segmentation, oriented_strain: np.ndarray) -> bool:
+    """Whether the fall of the force back to its lower level that ends the record's last
+    cycle lengthens the specimen (`oriented_strain`, in the direction of the load) by over
+    :data:`FAILING_LENGTHENING` of what its loading did: the specimen giving way while the
+    machine pulls on (a real rope's crimp slipping from 222 N to 22 N as the crosshead ran
+    on by 4 mm), no unloading, whose stiffness, loop and set would be meaningless."""
+    if not segmentation.n_cycles or not segmentation.complete[-1]:
+        return False
+    load_start, _, unload_start, unload_end = segmentation.turns[-1]
+    ends = [oriented_strain[index] for index in (load_start, unload_start, unload_end)]
+    if not np.all(np.isfinite(ends)):
+        return False
+    return ends[2] - ends[1] > FAILING_LENGTHENING * (ends[1] - ends[0]) > 0
+
+
 def _label_after(segmentation: Segmentation, size: int, single_pull: bool,
                  fracture: int | None) -> tuple[np.ndarray, np.ndarray]:
     """Cycle and branch of every sample: the segmentation's, then ``after_fracture``;
@@ -537,8 +558,6 @@ def condition_tensile(
     if n_cycles == 1 and segmentation.n_cycles > 1:
         warnings.append(f"the run sheet says cycles = 1, the log has {segmentation.n_cycles} "
                         "loadings: E0 from the first loading only")
-    if fracture is None and single_pull:
-        warnings += _no_fracture_note(sign * force)
 
     for name in channels:
         _check_clipping(force[:end], samples[name].to_numpy()[:end], columns[name],
@@ -571,6 +590,11 @@ def condition_tensile(
     used = np.column_stack([strains[name] for name in choice.used])
     strain = used.mean(axis=1)
     length = np.nan if gauge_length is None else float(gauge_length)
+    failing = single_pull and _lengthens_as_it_falls(segmentation, sign * strain)
+    if failing:  # no unloading: the last cycle is not complete
+        segmentation = replace(segmentation, valleys=[*segmentation.valleys[:-1], None])
+    if fracture is None and single_pull:
+        warnings += _no_fracture_note(sign * force, failing)
     cycle, branch = _label_after(segmentation, force.size, single_pull, fracture)
     samples = samples.assign(
         strain=strain,
@@ -585,7 +609,7 @@ def condition_tensile(
     elongation = samples["elongation"].to_numpy()
     for number, (load_start, load_end, unload_start, unload_end) in enumerate(segmentation.turns):
         path = slice(load_start, unload_end + 1)
-        energies.append(loop_energy(force[path], elongation[path]))
+        energies.append(np.nan if failing else loop_energy(force[path], elongation[path]))
         peaks.append(float(np.median(oriented_force[load_end : unload_start + 1])))
         rest = segmentation.valleys[number]
         valleys.append(float(np.median(

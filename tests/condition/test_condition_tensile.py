@@ -384,10 +384,41 @@ def test_a_single_pull_that_falls_with_no_fracture_found_says_so(end, said):
     rise = np.linspace(0.0, 30e3, 300)
     fall = np.linspace(30e3, end * 30e3, 100)
     force = np.concatenate([rise, fall])
-    table = pd.DataFrame({"force": force, "gauge_1": np.arange(force.size) * 1e-5})
+    elongation = np.arange(force.size) * 1e-5  # necking on, or the test stopped
+    if end < 0.1:  # unloaded: the elastic part comes back
+        elongation[300:] = elongation[299] - (30e3 - fall) / 1e7
+    table = pd.DataFrame({"force": force, "gauge_1": elongation})
     run = condition_tensile(table, gauge_length=0.1, n_cycles=1)
     notes = [text for text in run.warnings if text.startswith("no fracture found")]
     assert notes == ([f"no fracture found: the force ends at {end * 30:.4g} kN, {end:.0%} of "
                       "its maximum (30 kN), after falling with no sudden drop (a record cut "
                       "before the break, or a test stopped while the force fell): nothing is "
                       "given at fracture"] if said else [])
+
+
+@pytest.mark.parametrize("gives_way", [True, False])
+def test_a_single_pull_that_gives_way_has_no_unloading(gives_way):
+    # a real rope pull (MTS, 10 Hz): its crimp slipped, the force falling from 222 N to 22 N
+    # while the crosshead ran on by 4 mm; the fall was fitted as an unloading, E0 -5.1 kN,
+    # with a loop energy and a permanent set of 8 mm. A proof-load test brought back down
+    # (its elongation returning by the elastic part) keeps its unloading.
+    rise = np.linspace(0.0, 222.0, 880)
+    fall = np.linspace(222.0, 22.0, 760)
+    force = np.concatenate([rise, fall, np.full(20, 22.0)])
+    up = rise / 51.0e3  # 51 N/mm [m]
+    back = up[-1] + (4e-3 if gives_way else -3e-3) * np.linspace(0.0, 1.0, 760)
+    elongation = np.concatenate([up, back, np.full(20, back[-1])])
+    table = pd.DataFrame({"time": np.arange(force.size) * 0.1, "force": force,
+                          "gauge_1": elongation})
+    run = condition_tensile(table, gauge_length=0.2, n_cycles=1)
+    branches = set(run.samples["branch"])
+    assert ("unloading" in branches) is not gives_way
+    assert ("beyond_peak" in branches) is gives_way
+    cycle = run.cycles.iloc[0]
+    assert bool(np.isnan(cycle["permanent_set"])) is gives_way
+    assert bool(np.isnan(cycle["hysteresis_energy"])) is gives_way
+    # ending at a tenth of its maximum, a pull that gave way was not unloaded: no fracture
+    noted = any(text.startswith("no fracture found") for text in run.warnings)
+    assert noted is gives_way
+    if not gives_way:  # the valley's median holds the last steps of the fall too
+        assert cycle["permanent_set"] == pytest.approx(up[-1] - 3e-3, abs=0.02e-3)
