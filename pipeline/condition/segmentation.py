@@ -40,6 +40,11 @@ BRANCHES = ("preload", "loading", "hold", "unloading", "beyond_peak", "after_fra
 #: Schmitt-trigger levels as fractions of the force range (lower, upper).
 TRIGGER_LEVELS = (0.3, 0.7)
 
+#: Loadings before the first one to the upper trigger level count as cycles when they rise by
+#: this fraction of the whole force range (a preload is some 2 to 5 % of it; a chain's proof
+#: load, some 60 % of its breaking force; a stiffness test's cycles, 10 to 30 %).
+EARLIER_SHARE = 0.1
+
 #: Width of the moving average used to locate the turning points [samples].
 SMOOTHING = 5
 
@@ -128,6 +133,32 @@ def _schmitt(smooth: np.ndarray) -> tuple[np.ndarray, np.ndarray, float, float]:
     return rising, falling, float(low), float(span)
 
 
+def _edges(smooth: np.ndarray, least: float | None = None
+           ) -> tuple[np.ndarray, np.ndarray, float, float]:
+    """The edges of :func:`_schmitt`, with those of the loadings to a lower force before the
+    first one it finds (a proof load before the pull to break: three real loadings to 32 %
+    of the maximum were no cycle of the two-level trigger set on the whole range).
+
+    The record before the first loading rises through the lower level is triggered again at
+    its own levels, and so on; its loadings that come back down, and rise by `least` [N]
+    at least (:data:`EARLIER_SHARE` of the whole range), are loadings too (a ramp to the
+    preload is none)."""
+    rising, falling, low, span = _schmitt(smooth)
+    least = EARLIER_SHARE * span if least is None else least
+    if not rising.size or not span >= least:
+        return rising, falling, low, span
+    below = np.flatnonzero(smooth[: rising[0]] <= low + TRIGGER_LEVELS[0] * span)
+    if not below.size:
+        return rising, falling, low, span
+    head_rising, head_falling, _, head_span = _edges(smooth[: below[-1] + 1], least)
+    if not head_rising.size or head_span < least:
+        return rising, falling, low, span
+    head_falling = head_falling[head_falling > head_rising[0]]
+    complete = head_falling.size  # each rising edge is followed by a falling one but the last
+    return (np.concatenate([head_rising[:complete], rising]),
+            np.concatenate([head_falling, falling]), low, span)
+
+
 def count_cycles(force: np.ndarray) -> int:
     """Number of load cycles in a force record (cheap; used by ``chainbench inspect``).
 
@@ -141,7 +172,8 @@ def count_cycles(force: np.ndarray) -> int:
     -------
     int
         Excursions of the oriented force above 70 % of its range, each after a
-        visit below 30 % (or at the start); none when the range is within ten times
+        visit below 30 % (or at the start), and the loadings to a lower force before
+        them (:func:`_edges`); none when the range is within ten times
         the noise, or that of the rounding of a force logged in steps (a gauge's
         whole counts: 0, 2, 0, 2 gf is no load cycle).
 
@@ -156,7 +188,7 @@ def count_cycles(force: np.ndarray) -> int:
     if force.size < 3:
         return 0
     smooth = uniform_filter1d(load_sign(force) * force, SMOOTHING, mode="nearest")
-    rising, _, _, span = _schmitt(smooth)
+    rising, _, _, span = _edges(smooth)
     steps = np.abs(np.diff(force))
     steps = steps[steps > 0]
     rounding = float(steps.min()) / np.sqrt(12.0) if steps.size else 0.0
@@ -216,7 +248,7 @@ def segment_cycles(
             column="force",
             hint="check the force column and its unit, and the preload of the run",
         )
-    rising, falling, _, span = _schmitt(smooth)
+    rising, falling, _, span = _edges(smooth)
     if not span > 10 * noise or rising.size == 0:
         raise SignalError(
             "no load cycle found in the force record",

@@ -75,6 +75,24 @@ def test_unfinished_last_cycle_is_flagged():
     assert segmentation.complete.tolist() == [True, False]
 
 
+@pytest.mark.parametrize("share", [0.32, 0.625])
+def test_loadings_to_a_lower_force_before_the_pull_to_break_are_cycles(share):
+    # a real MTS 793 record: three loadings to 137 kN (32 % of the maximum), each unloaded
+    # to 1 kN, then a pull to 426 kN; read as one pull, and refused with cycles = 4 as if
+    # the test were not all logged. A chain's proof load is some 62.5 % of its break.
+    earlier = cyclic_force(cycles=3, low=1e3, high=share * 426e3, hold=20, noise=200.0)
+    pull = np.linspace(1e3, 426e3, 400) + np.random.default_rng(1).normal(0.0, 200.0, 400)
+    force = np.concatenate([earlier, pull])
+    segmentation = segment_cycles(force, n_cycles=4)
+    assert segmentation.n_cycles == count_cycles(force) == 4
+    peaks = [force[start : stop + 1].max() for start, _, _, stop in segmentation.turns]
+    np.testing.assert_allclose(peaks, [share * 426e3] * 3 + [426e3], rtol=0.01)
+    # a ramp to the preload and a hold there, before a pull, is no loading
+    preload = np.concatenate([np.linspace(0.0, 0.05 * 426e3, 50), np.full(100, 0.05 * 426e3),
+                              np.linspace(0.05 * 426e3, 426e3, 400)])
+    assert count_cycles(preload) == 1
+
+
 def test_ramp_from_zero_to_the_preload_stays_preload():
     force = np.concatenate([np.linspace(0.0, 10e3, 50), cyclic_force(cycles=2)])
     segmentation = segment_cycles(force, preload=10e3)
