@@ -15,11 +15,13 @@ reader names the kind from the column name, see
 Channels are averaged only when they measure the same thing: the run sheet
 says so (``average_gauges = true``), or they are of one kind and their
 stiffnesses agree within :data:`SAME_SLOPE_TOLERANCE` (two gauges on either
-side of a chain differ by its bending; the mean cancels it). Otherwise one
-channel is used: of the kind first in :data:`PREFERENCE`, the stiffer one when
-in doubt (a channel that includes more of the machine reads more elongation),
-and every channel left out is named in a warning with its stiffness relative
-to the one used. Never a silent average of different kinds.
+side of a chain differ by its bending; the mean cancels it): of the channels
+of the kind first in :data:`PREFERENCE`, the most that agree so are averaged
+(three transducers around a specimen, one of them off: the other two), the
+stiffer ones on a tie. Where none agree, one channel is used: the stiffest
+(a channel that includes more of the machine reads more elongation). Every
+channel left out is named in a warning with its stiffness relative to the
+ones used. Never a silent average of different kinds.
 
 A strain column may be no measurement of its own but a length channel of the
 file divided by a length (Bluehill's ``Tensile strain``, a NanoSuite's
@@ -301,8 +303,18 @@ def _rounding(values: np.ndarray) -> float:
     return 0.0
 
 
-def _agree(slopes: list[float]) -> bool:
-    return min(slopes) >= (1.0 - SAME_SLOPE_TOLERANCE) * max(slopes)
+def _agreeing(group: list[str], slopes: dict[str, float]) -> list[str]:
+    """The most channels of `group` whose stiffnesses agree within
+    :data:`SAME_SLOPE_TOLERANCE`, the stiffer ones on a tie (one channel: the stiffest); in
+    the group's order."""
+    ordered = sorted(group, key=lambda name: slopes[name], reverse=True)
+    best: list[str] = []
+    for start, name in enumerate(ordered):
+        agree = [other for other in ordered[start:]
+                 if slopes[other] >= (1.0 - SAME_SLOPE_TOLERANCE) * slopes[name]]
+        if len(agree) > len(best):
+            best = agree
+    return [name for name in group if name in best]
 
 
 def choose_channels(
@@ -357,10 +369,8 @@ def choose_channels(
              "says (average_gauges = true)"] if len(usable) > 1 else []))
     kind = next(kind for kind in PREFERENCE if any(kinds[name] == kind for name in usable))
     group = [name for name in usable if kinds[name] == kind]
-    if average is None and len(group) > 1 and _agree([slopes[name] for name in group]):
-        used = group
-    else:
-        used = [max(group, key=lambda name: slopes[name])]
+    used = _agreeing(group, slopes) if average is None else [
+        max(group, key=lambda name: slopes[name])]
     reference = np.mean([slopes[name] for name in used])
     for name in usable:
         if name in used:
@@ -371,8 +381,8 @@ def choose_channels(
                f"{100 * SAME_SLOPE_TOLERANCE:g} %")
         warnings.append(
             f"E0 from {' + '.join(label[n] for n in used)}, {label[name]} not used "
-            f"({why}): its stiffness is {slopes[name] / reference:.3g} x that of the channel "
-            "used")
+            f"({why}): its stiffness is {slopes[name] / reference:.3g} x "
+            + ("that of the channel used" if len(used) == 1 else "the mean of those used"))
     return Choice(used, slopes, warnings + _crosshead_warnings(used, kinds, columns))
 
 

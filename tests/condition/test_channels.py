@@ -1,12 +1,12 @@
 """Tests of pipeline.condition.channels: strain columns worked out from a length channel,
-length columns that repeat another."""
+length columns that repeat another, the channels E0 is taken from."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from pipeline.condition.channels import find_copies, find_duplicates
+from pipeline.condition.channels import choose_channels, find_copies, find_duplicates
 from pipeline.simulate.pull import PullTruth, simulate_pull
 
 #: The gauge length a Bluehill method divides the crosshead's extension by [m].
@@ -135,3 +135,25 @@ def test_a_length_column_on_a_line_of_another_slope_is_no_repeat():
 def test_strain_columns_are_not_compared_as_repeats():
     extension, _ = extension_and_strain(6)
     assert find_duplicates({"gauge_1": extension, "strain_1": extension.copy()}, {}) == {}
+
+
+def test_of_three_transducers_the_two_that_agree_are_averaged():
+    # a real MTS 793 modulus test's three transducers around a specimen (stiffnesses 1,
+    # 0.991 and 0.762 of the stiffest): the stiffest alone was used, 12.6 % above the mean
+    slopes = {"gauge_1": 1.0e8, "gauge_2": 0.991e8, "gauge_3": 0.762e8}
+    kinds = dict.fromkeys(slopes, "gauge")
+    columns = {"gauge_1": "1281068", "gauge_2": "1944 B", "gauge_3": "2157"}
+    choice = choose_channels(slopes, kinds, columns)
+    assert choice.used == ["gauge_1", "gauge_2"]
+    assert choice.warnings == [
+        "E0 from '1281068' (gauge) + '1944 B' (gauge), '2157' (gauge) not used (the gauge "
+        f"channels' stiffnesses disagree beyond 20 %): its stiffness is {0.762 / 0.9955:.3g} x "
+        "the mean of those used"]
+    # two that disagree: the stiffer; all that agree: all of them
+    assert choose_channels({"gauge_1": 1e8, "gauge_3": 0.7e8}, kinds, columns).used == ["gauge_1"]
+    agreeing = {"gauge_1": 1e8, "gauge_2": 0.9e8, "gauge_3": 0.85e8}
+    assert choose_channels(agreeing, kinds, columns).used == ["gauge_1", "gauge_2", "gauge_3"]
+    # of two pairs that agree within themselves, the stiffer pair
+    pairs = {"gauge_1": 1e8, "gauge_2": 0.9e8, "gauge_3": 0.6e8, "gauge_4": 0.55e8}
+    kinds["gauge_4"], columns["gauge_4"] = "gauge", "Weg"
+    assert choose_channels(pairs, kinds, columns).used == ["gauge_1", "gauge_2"]
