@@ -508,6 +508,7 @@ def build(
     table = conversion.table(raw)
     if meta.specimen is not None:
         table = _without_padding(table, raw, meta)
+    table = _without_end_mark(table, raw, meta)
     meta.time_monotonic, meta.time_gaps = conversion.checked_rows(table, raw, meta.warnings)
     meta.rows = len(table)
     meta.columns = list(conversion.infos)
@@ -517,27 +518,51 @@ def build(
 
 #: Keys of a header that state how many rows the file holds, folded (IMADA's ``Data
 #: Quantity`` and ``DATA COUNT``, an oscilloscope's ``Record Length``, Kistler BioWare's
-#: ``Samples (#)``, once over each channel).
+#: ``Samples (#)``, once over each channel; a Kyowa recorder's ``集録データ数/CH``, rows
+#: recorded a channel).
 STATED_ROWS_KEYS = frozenset({"data quantity", "data count", "record length",
                               "number of points", "number of samples", "number of rows",
-                              "samples (#)"})
+                              "samples (#)", fold("集録データ数/CH")})
+
+
+def _stated_rows(preamble: Mapping[str, str]) -> tuple[str, int] | None:
+    """The key and the number of rows the header states (:data:`STATED_ROWS_KEYS`)."""
+    for key, value in preamble.items():
+        counts = set(value.replace(",", " ").split())  # one, or the same over each channel
+        text = counts.pop() if len(counts) == 1 else ""
+        if fold(key.strip()) in STATED_ROWS_KEYS and text.isdigit():
+            return key.strip(), int(text)
+    return None
 
 
 def unlike_stated(preamble: Mapping[str, str], rows: int) -> list[str]:
     """A warning when the header states (:data:`STATED_ROWS_KEYS`) more rows than the
     `rows` read (a file cut short at a line end shows no other sign), or fewer (a row
-    past them is read as a sample: a Deben tester's end mark ``0,0,0,0,1,0,"0"``)."""
-    for key, value in preamble.items():
-        counts = set(value.replace(",", " ").split())  # one, or the same over each channel
-        text = counts.pop() if len(counts) == 1 else ""
-        if fold(key.strip()) not in STATED_ROWS_KEYS or not text.isdigit() or int(text) == rows:
-            continue
-        said = f"the header says {key.strip()} = {int(text)}, the file holds {rows} rows"
-        if int(text) > rows:
-            return [f"{said}: it may be cut short (copy it again from the machine)"]
-        return [f"{said}: the rows past the stated ones are read as samples (an end mark, "
-                "or another test's rows): check the last rows"]
-    return []
+    past them is read as a sample)."""
+    stated = _stated_rows(preamble)
+    if stated is None or stated[1] == rows:
+        return []
+    said = f"the header says {stated[0]} = {stated[1]}, the file holds {rows} rows"
+    if stated[1] > rows:
+        return [f"{said}: it may be cut short (copy it again from the machine)"]
+    return [f"{said}: the rows past the stated ones are read as samples (an end mark, "
+            "or another test's rows): check the last rows"]
+
+
+def _without_end_mark(table: pd.DataFrame, raw: RawTable, meta: TableMetadata
+                      ) -> pd.DataFrame:
+    """`table` without its last row when that is the one past the rows the header states
+    and holds nothing but zeros: the software's end mark (a Deben tester's
+    ``0,0,0,0,1,0,"0"``, read as a sample, made a stopped test's fracture at its end)."""
+    stated = _stated_rows(meta.preamble)
+    if stated is None or len(table) != stated[1] + 1:
+        return table
+    last = table.iloc[-1].to_numpy(dtype=float)
+    if not np.all((last == 0.0) | np.isnan(last)):
+        return table
+    meta.warnings.append(f"the row at {raw.where(len(table) - 1)}, past the {stated[1]} the "
+                         f"header states ({stated[0]}), holds only zeros: an end mark, left out")
+    return table.iloc[:-1]
 
 
 def _without_padding(table: pd.DataFrame, raw: RawTable, meta: TableMetadata) -> pd.DataFrame:

@@ -420,16 +420,34 @@ def test_a_file_holding_fewer_rows_than_its_header_states_is_warned_of(write, st
         assert (message in meta.warnings) is warned
 
 
+def test_a_kyowa_recorders_stated_rows_are_checked(write):
+    # a real Kyowa PCD-400A export states the rows it recorded a channel
+    text = '"集録データ数/CH",45100\n' + HEADER + rows((0, 1, 2), (1, 2, 3), (2, 3, 4))
+    _, meta = read_table(write("kyowa.csv", text))
+    assert ("the header says 集録データ数/CH = 45100, the file holds 3 rows: it may be cut "
+            "short (copy it again from the machine)") in meta.warnings
+
+
 @pytest.mark.parametrize("stated, warned", [(2, True), (3, False)])
 def test_a_file_holding_more_rows_than_its_header_states_is_warned_of(write, stated, warned):
-    # a Deben tester's export states its points, then writes an end mark as one more row
-    text = f"Number of points,{stated},,\n" + HEADER + rows((0, 1, 2), (1, 2, 3), (0, 0, 0))
+    # another test's row past the points the export states
+    text = f"Number of points,{stated},,\n" + HEADER + rows((0, 1, 2), (1, 2, 3), (2, 3, 4))
     path = write("NANO_K_1.csv", text)
     message = (f"the header says Number of points = {stated}, the file holds 3 rows: the rows "
                "past the stated ones are read as samples (an end mark, or another test's "
                "rows): check the last rows")
     for meta in (read_table(path)[1], open_log(path).metadata):
         assert (message in meta.warnings) is warned
+
+
+def test_an_end_mark_past_the_stated_rows_is_left_out(write):
+    # a real Deben tester's export states its points, then writes an end mark of zeros as
+    # one more row: read as a sample, it made a test stopped at 19.5 N end in a fracture
+    text = "Number of points,2,,\n" + HEADER + rows((0, 1, 2), (1, 2, 3), (0, 0, 0))
+    table, meta = read_table(write("NANO_K_1.csv", text))
+    assert len(table) == meta.rows == 2 and table["force"].iloc[-1] == 2e3
+    assert meta.warnings == ["the row at line 5, past the 2 the header states (Number of "
+                             "points), holds only zeros: an end mark, left out"]
 
 
 @pytest.mark.parametrize("copied, taken", [(True, True), (False, False)])
