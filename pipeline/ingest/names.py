@@ -25,6 +25,7 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
             "exts", "deflection", "position", "stroke", "crosshead", "lvdt", "dial", "strain",
             "actuator", "piston", "clip gauge", "ave", "video extensometer", "travel",
             "stretch", "chain stretch", "grip to grip separation", "grip separation",
+            "grip to grip",
         ),
         "angle": ("angle", "encoder", "rotation"),
         "cycle_count": ("cycle", "cycles", "cycle count", "segment count", "stroke count",
@@ -154,11 +155,12 @@ COLUMN_NAMES: dict[str, dict[str, tuple[str, ...]]] = {
 #: crosshead or actuator (it includes the machine's own compliance; "Machine
 #: Displacement"), or the specimen itself (an extensometer, a strain; "AVE" is
 #: Instron's video extensometer). Other gauge names ("Extension", "Weg 1",
-#: "Wydłużenie") say neither and are of kind ``"gauge"``.
+#: "Wydłużenie") say neither and are of kind ``"gauge"``. testXpert's ASCII export cuts
+#: names to 14 or 20 characters (``Grip to grip s``).
 GAUGE_KINDS: dict[str, tuple[str, ...]] = {
     "crosshead": (
         "crosshead", "cross head", "stroke", "position", "actuator", "piston", "machine",
-        "standard travel", "grip to grip separation", "grip separation",
+        "standard travel", "grip to grip separation", "grip separation", "grip to grip",
         "écartement entre outils",
         "traverse", "traversenweg", "standardweg", "standardwegaufnehmer", "kolbenweg",
         "maschinenweg", "trawersa", "trawersy", "tłok", "droga standardowa", "travesaño",

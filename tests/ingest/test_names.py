@@ -249,6 +249,14 @@ def test_a_channel_along_the_specimen_is_not_transverse(name):
     assert match_role(name) == "gauge" and not is_transverse(name)
 
 
+@pytest.mark.parametrize("name", ["Grip to grip s", "Grip to grip separat"])
+def test_a_testxpert_name_cut_to_its_column_width_keeps_its_role_and_kind(name):
+    # real testXpert II and III ASCII exports cut names to 14 and 20 characters: the
+    # crosshead's travel took no role, and a strain column equal to it passed for an
+    # extensometer's
+    assert match_role(name) == "gauge" and gauge_kind(name) == "crosshead"
+
+
 @pytest.mark.parametrize(("name", "kind"), [
     ("Course_Traverse", "crosshead"), ("Position vérin", "crosshead"),
     # ZwickRoell testXpert's crosshead gauge, in English and French
