@@ -313,30 +313,7 @@ def window_sensitivity(force: np.ndarray, strain: np.ndarray, window: tuple[floa
 def yield_onset(force: np.ndarray, strain: np.ndarray) -> float:
     """Force [N] below which a loading branch is still on its linear region.
 
-    The tangent slope is measured by least squares on force bands of
-    :data:`TANGENT_BAND` of the branch's range, every :data:`TANGENT_STEP`.
-    Over a toe it rises, on the linear region it is at its largest, and past
-    the onset of yield it falls. The onset is the lower edge of the first band
-    above the steepest one whose slope is more than :data:`YIELD_SLOPE_DROP`
-    below the steepest, and by more than three standard errors of the two.
-    Bands at the start whose slope the next band does not hold (falls more
-    than :data:`YIELD_SLOPE_DROP` below), within :data:`SEATING_SPAN` of the
-    range and followed by :data:`SEATED_BANDS` bands of one slope (within
-    :data:`YIELD_SLOPE_DROP`), are left out of that search: a start
-    steeper than what follows, an extensometer's knife edges seating, is no
-    linear region, as a toe flatter than what follows is none.
-
-    Parameters
-    ----------
-    force : numpy.ndarray
-        Force on the branch [N], in the direction of the load.
-    strain : numpy.ndarray
-        Strain on the branch [1], same orientation.
-
-    Returns
-    -------
-    float
-        The onset force [N]; ``inf`` when the branch stays linear to its top.
+    The upper end of :func:`linear_region`.
 
     Examples
     --------
@@ -347,45 +324,90 @@ def yield_onset(force: np.ndarray, strain: np.ndarray) -> float:
     >>> round(yield_onset(force, strain), 1)
     52.5
     """
+    return linear_region(force, strain)[1]
+
+
+def _seated_band(slope: np.ndarray, near_start: np.ndarray) -> int:
+    """The first band of the straight stretch after a steeper start, or 0 without one.
+
+    The first band among `near_start` from which :data:`SEATED_BANDS` bands hold one slope
+    (within :data:`YIELD_SLOPE_DROP` of the first), when a band before it is steeper than
+    that by more than :data:`YIELD_SLOPE_DROP`: an extensometer's knife edges seating, at
+    once or over several bands (a real pull's tangent slope fell by 3 to 4 % a band over its
+    first tenth, then held). A start flatter than the stretch, a toe, is none.
+    """
+    for band in np.flatnonzero(near_start):
+        plateau = slope[band : band + SEATED_BANDS]
+        with np.errstate(invalid="ignore"):
+            flat = plateau.size == SEATED_BANDS and bool(np.all(
+                np.abs(plateau - plateau[0]) <= YIELD_SLOPE_DROP * plateau[0]))
+        if flat:
+            before = slope[:band][np.isfinite(slope[:band])]
+            steeper = before.size > 0 and before.max() > (1.0 + YIELD_SLOPE_DROP) * plateau[0]
+            return int(band) if steeper else 0
+    return 0
+
+
+def linear_region(force: np.ndarray, strain: np.ndarray) -> tuple[float, float]:
+    """Forces [N] between which a loading branch is on its linear region.
+
+    The tangent slope is measured by least squares on force bands of
+    :data:`TANGENT_BAND` of the branch's range, every :data:`TANGENT_STEP`.
+    Over a toe it rises, on the linear region it is at its largest, and past
+    the onset of yield it falls. The onset is the lower edge of the first band
+    above the steepest one whose slope is more than :data:`YIELD_SLOPE_DROP`
+    below the steepest, and by more than three standard errors of the two.
+    A start steeper than a straight stretch that follows it (:func:`_seated_band`:
+    :data:`SEATED_BANDS` bands of one slope, starting within :data:`SEATING_SPAN` of
+    the range), an extensometer's knife edges seating, is no linear region, as a toe
+    flatter than what follows is none: the region starts at the stretch, and its
+    steepest band is looked for from there.
+
+    Parameters
+    ----------
+    force : numpy.ndarray
+        Force on the branch [N], in the direction of the load.
+    strain : numpy.ndarray
+        Strain on the branch [1], same orientation.
+
+    Returns
+    -------
+    (float, float)
+        The lowest force of the region (the branch's lowest, or the straight stretch's
+        start after a steeper start) and the onset of yield (``inf`` when the branch
+        stays linear to its top) [N].
+    """
     low, span = float(force.min()), float(np.ptp(force))
     if not span > 0:
-        return np.inf
+        return low, np.inf
     lower = low + np.arange(0.0, 1.0 - TANGENT_BAND + 1e-9, TANGENT_STEP) * span
     slope, variance, _ = _Windows(force, strain).fit(lower, lower + TANGENT_BAND * span)
     if not np.any(np.isfinite(slope)):
-        return np.inf
-    with np.errstate(invalid="ignore"):
-        held = np.append(slope[1:] >= (1.0 - YIELD_SLOPE_DROP) * slope[:-1], True)
-    seated = int(np.argmax(held))  # the first band whose slope the next one holds
-    plateau = slope[seated : seated + SEATED_BANDS]
-    with np.errstate(invalid="ignore"):
-        flat = plateau.size == SEATED_BANDS and bool(np.all(
-            np.abs(plateau - plateau[0]) <= YIELD_SLOPE_DROP * plateau[0]))
-    if lower[seated] - low > SEATING_SPAN * span or not flat:
-        seated = 0  # no straight stretch after a steep start: curved throughout
+        return low, np.inf
+    seated = _seated_band(slope, lower - low <= SEATING_SPAN * span)
     steepest = seated + int(np.nanargmax(slope[seated:]))
     with np.errstate(invalid="ignore"):
         fallen = ((slope < (1.0 - YIELD_SLOPE_DROP) * slope[steepest])
                   & (slope[steepest] - slope > 3.0 * np.sqrt(variance + variance[steepest])))
     fallen[: steepest + 1] = False
     found = np.flatnonzero(fallen)
-    return float(lower[found[0]]) if found.size else np.inf
+    return float(lower[seated]), float(lower[found[0]]) if found.size else np.inf
 
 
 def _below_yield(force: np.ndarray, strain: np.ndarray) -> np.ndarray:
-    """The samples of a loading branch below its onset of yield (:func:`yield_onset`).
+    """The samples of a loading branch on its linear region (:func:`linear_region`).
 
     Raises
     ------
     FitError
         When fewer than :data:`MIN_POINTS` are: the branch bends almost from its start.
     """
-    onset = yield_onset(force, strain)
-    linear = force <= onset
+    start, onset = linear_region(force, strain)
+    linear = (force >= start) & (force <= onset)
     if np.count_nonzero(linear) < MIN_POINTS:
         raise FitError(
             f"the loading bends from {onset / 1e3:.4g} kN on, next to its start at "
-            f"{force.min() / 1e3:.4g} kN (its tangent slope falls {100 * YIELD_SLOPE_DROP:g} % "
+            f"{start / 1e3:.4g} kN (its tangent slope falls {100 * YIELD_SLOPE_DROP:g} % "
             f"below the steepest): below that, {np.count_nonzero(linear)} samples, and a fit "
             f"needs {MIN_POINTS}",
             hint="a specimen curved from the start has no linear region to fit: give the "
