@@ -959,7 +959,8 @@ def find_table(
         limit *= 4
     while (data > 0 and kinds[data - 1] in _DATA_KINDS
            and _units_beside_numbers(rows[data - 1], decimal) is None
-           and not _names_with_numbers(rows[data - 1], kinds[data - 1], decimal, width)):
+           and not _names_with_numbers(rows[data - 1], kinds[data - 1], decimal, width)
+           and not _leading_record(rows, kinds, data - 1, width)):
         data -= 1
     statistics = _statistics(rows[data:])
     if len(statistics) > 1 and statistics[0][0] <= RESULTS_ROWS:  # under a batch's results
@@ -1001,6 +1002,10 @@ def find_table(
     if units_index is None and above >= 1 and all(
             _SETTING.match(lines[index]) for index in (above - 1, above)):
         preamble_end, above = data, -1  # the last of a block of settings: no names row
+    if above >= 0 and units_index is None and _leading_record(rows, kinds, above, width):
+        notes += (f"line {above + 1}: a record of {_filled_width(rows[above])} numbers opens "
+                  f"the file, before rows of {width}: passed over as its preamble",)
+        preamble_end, above = data, -1
     if above >= 0 and kinds[above] != "text" and units_index is None:
         if not _names_with_numbers(rows[above], kinds[above], decimal, width):
             raise _no_names_row(name, data, delimiter)
@@ -1378,6 +1383,14 @@ def _header_top(rows: list[list[str]], kinds: list[str], data: int, decimal: str
             and _units_row(rows[above], rows[data], decimal, rows[above - 1])):
         above = _above(kinds, above)
     return max(above, 0)
+
+
+def _leading_record(rows: list[list[str]], kinds: list[str], index: int, width: int) -> bool:
+    """Whether row `index` is a record of numbers of another width than the data rows'
+    that opens the file (a Chinese controller's count and date over its rows of six):
+    the file's preamble, no data row and no names row."""
+    return (kinds[index] in _DATA_KINDS and _filled_width(rows[index]) != width
+            and all(kind == "blank" for kind in kinds[:index]))
 
 
 def _above(kinds: list[str], index: int) -> int:

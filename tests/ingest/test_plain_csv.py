@@ -576,6 +576,27 @@ def test_settings_as_key_equals_value_above_the_data_are_no_names_row(write):
     assert meta.header_line is None and meta.preamble["UNIT"] == "gf mm"
 
 
+def test_a_record_of_another_width_opening_a_file_of_numbers_is_its_preamble(write):
+    # a real Chinese controller's export: a count and a date serial, then rows of six
+    # (force [N], two zeros, displacement [mm], rate, time [ms]); the leading record was
+    # read as a data row, and the file refused until it was edited
+    head = " 1.0E+0001  4.23738071504167E+0004  0.0E+0000  0.0E+0000  0.0E+0000\n"
+    body = "".join(f" {8.0 + i}  0.0  0.0  {0.9e-3 * (i + 1):.6E}  0.3  {79 + 62 * i}\n"
+                   for i in range(5))
+    path = write("force-displacement.txt", head + body)
+    with pytest.raises(LayoutError, match="no names row above the first data row") as caught:
+        read_table(path, kind="tensile")
+    assert caught.value.row == 2
+    table, meta = read_table(path, kind="tensile",
+                             columns={"time": "column 6", "force": "column 1",
+                                      "gauges": ["column 4"]},
+                             units={"time": "ms", "force": "N", "gauges": "mm"})
+    np.testing.assert_allclose(table["force"], [8.0, 9.0, 10.0, 11.0, 12.0])
+    np.testing.assert_allclose(table["time"], [0.079, 0.141, 0.203, 0.265, 0.327])
+    assert ("line 1: a record of 5 numbers opens the file, before rows of 6: passed over as "
+            "its preamble") in meta.warnings
+
+
 def test_a_raw_reading_without_a_unit_gives_way_to_the_force_in_newtons(write):
     # a real DIY tensile tester (HX711): the load cell's counts before the force in N
     text = ("time_s;steps;displacement_mm;force_raw;force_N\n390.355;1;0.0050;1524;0.338\n"
