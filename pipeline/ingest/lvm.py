@@ -28,11 +28,15 @@ File defects handled
 * ``X_Columns One``: the first column holds the X values; an X axis of
   ``Time`` is the time in seconds;
 * ``X_Columns No``: the first field of every row is empty, and the time is
-  ``X0 + Delta_X * i`` of the first channel;
+  ``X0 + Delta_X * i`` of the first channel (``Delta_X * i`` when ``X0`` is a clock
+  reading, :data:`ABSOLUTE_X0`, with a note);
 * the ``Comment`` column of the names row: rows that carry a comment have a
   field more than the others; the comments are left out, with a warning
   quoting the first;
 * a decimal comma (``Decimal_Separator ,``), either separator;
+* fewer rows than the segment header's ``Samples``: a warning, the file may be
+  cut short (more rows are no defect: under one header, each write of the VI
+  adds ``Samples`` rows);
 * everything the delimited readers handle in the rows themselves
   (:mod:`pipeline.ingest.delimited`): missing values, a truncated last line,
   text after the last row.
@@ -77,6 +81,10 @@ COMMENT = "Comment"
 SEPARATORS = {"tab": "\t", "comma": ","}
 #: The name given to the X column when the X axis is time (``X_Dimension Time``).
 TIME_NAME = "Time"
+#: An ``X0`` of this many seconds or more is a clock reading (``Time_Pref Absolute``:
+#: seconds since 1904, some 3.6e9), no start of a test's time: added to the samples' times,
+#: it would round a 25.6 kHz step of 39.0625 µs to 39.1006 µs.
+ABSOLUTE_X0 = 1e6
 
 
 def matches(head: Head, spec: TableSpec | None = None) -> bool:
@@ -203,6 +211,11 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
     header.metadata.warnings.extend(said)
     raw = read_contiguous(head, spec, header)
     tags = _tags(spec.preamble, spec.delimiter)
+    stated = {value.strip() for value in tags.get("Samples", []) if value.strip()}
+    if len(stated) == 1 and (count := stated.pop()).isdigit() and int(count) > raw.rows:
+        header.metadata.warnings.append(  # more rows are many writes under one header
+            f"the header says Samples = {count}, the file holds {raw.rows} rows: it may be cut "
+            "short (copy it again from the machine)")
     if _without_x_column(spec) and 0 in raw.arrays:
         start, step = _axis(tags, spec.decimal, head.name)
         steps = list(dict.fromkeys(value.strip() for value in tags["Delta_X"] if value.strip()))
@@ -212,6 +225,11 @@ def read(head: Head, spec: TableSpec, columns: Mapping | None = None) -> RawTabl
                 f"no time is built from the channels' Delta_X: they differ ({', '.join(steps)}), "
                 f"and channel {timed[0]!r} holds a time")
             return raw
+        if abs(start) >= ABSOLUTE_X0:  # counted from it: its digits would eat the step's
+            header.metadata.warnings.append(
+                f"X0 = {start:.10g} s is a clock reading (LabVIEW counts from 1904): the time "
+                "is counted from it")
+            start = 0.0
         raw.arrays[0] = start + step * np.arange(raw.rows)
         if len(steps) > 1:
             header.metadata.warnings.append(

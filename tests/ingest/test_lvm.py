@@ -75,6 +75,26 @@ def test_no_x_column_time_from_x0_and_delta_x_with_a_decimal_comma(write, separa
     np.testing.assert_allclose(reader.read(30, 40)[0]["time"], 0.5 + TIME[30:], atol=1e-12)
 
 
+def test_an_x0_that_is_a_clock_reading_is_the_times_origin(write):
+    # LabVIEW's absolute X0, seconds since 1904: added to each sample's time, its digits
+    # rounded a 25.6 kHz step of 39.0625 µs to 39.1006 µs, the rate 0.04 % off
+    table, meta = read_table(write("log.lvm", lvm(x_columns="No", x0="3592621801.0")),
+                             kind="engagement")
+    np.testing.assert_allclose(table["time"], TIME, rtol=0, atol=1e-12)
+    assert meta.warnings == ["X0 = 3592621801 s is a clock reading (LabVIEW counts from "
+                             "1904): the time is counted from it"]
+
+
+@pytest.mark.parametrize("samples, warned", [("400", True), ("40", False), ("10", False)])
+def test_fewer_rows_than_the_stated_samples_are_warned_of(write, samples, warned):
+    # a real LVM states Samples 51200 over 3 rows; more rows are many writes of the VI
+    text = lvm().replace("Samples\t40\t40", f"Samples\t{samples}\t{samples}")
+    _, meta = read_table(write("log.lvm", text), kind="engagement")
+    said = (f"the header says Samples = {samples}, the file holds 40 rows: it may be cut short "
+            "(copy it again from the machine)")
+    assert (said in meta.warnings) is warned
+
+
 def test_a_time_built_from_channels_of_other_rates_is_questioned(write):
     text = lvm(x_columns="No").replace("Delta_X\t0.010000\t0.010000", "Delta_X\t0.010000\t0.000606")
     table, meta = read_table(write("log.lvm", text), kind="engagement")
