@@ -967,7 +967,14 @@ def _settle_units(
                     f"column {name!r}: unit {sheet_text!r} from the run sheet not used: the "
                     "column holds clock readings, read as seconds")
             elif given and index not in raw.clocks:
-                if text and sheet_text != text and unit_misfits(text, role):
+                if text and sheet_text != text and is_voltage_unit(text):
+                    raw.metadata.warnings.append(
+                        f"column {name!r}: the file gives it in {text!r}, a sensor's signal, "
+                        f"no {role}; read in {sheet_text!r} as the run sheet says: right only "
+                        f"if its amplifier was scaled to give {sheet_text!r} (1 {text} = 1 "
+                        f"{sheet_text}); else convert it with the sensor's calibration first "
+                        "(the readers apply none)")
+                elif text and sheet_text != text and unit_misfits(text, role):
                     raw.metadata.warnings.append(
                         f"column {name!r}: the file gives it in {text!r}, no unit of {role}; "
                         f"read in {sheet_text!r} as the run sheet says: check that it is the "

@@ -293,13 +293,19 @@ def is_temperature_unit(text: str | None) -> bool:
 
 
 def is_voltage_unit(text: str | None) -> bool:
-    """Whether some spelling of `text` is a unit of electric potential (``"V"``, ``"mV"``):
-    a sensor's signal, before its calibration.
+    """Whether some spelling of `text` is a unit of electric potential (``"V"``, ``"mV"``),
+    or a bridge's output over its excitation (``"mV/V"``): a sensor's signal, before its
+    calibration.
 
-    >>> is_voltage_unit("V"), is_voltage_unit("mV"), is_voltage_unit("N")
+    >>> is_voltage_unit("V"), is_voltage_unit("mV/V"), is_voltage_unit("N")
     (True, True, False)
     """
-    return _of_dimension(text, _VOLTAGE)
+    return _of_dimension(text, _VOLTAGE) or _BRIDGE.fullmatch((text or "").strip()) is not None
+
+
+#: A bridge's output over its excitation (a strain-gauge load cell's ``mV/V``), which pint
+#: reads as a plain ratio.
+_BRIDGE = re.compile(r"[mµμu]?V\s*/\s*V", re.IGNORECASE)
 
 
 def _of_dimension(text: str | None, dimensionality: object) -> bool:
@@ -427,8 +433,12 @@ def si_factor(
             return float(to_si(1.0, spelling))
         if role != "strain" and _fits(spelling, role):
             return float(to_si(1.0, _as_weight(spelling) if role in FORCE_ROLES else spelling))
+    signal = (f"{text!r} is a sensor's signal: convert the column to a {role} with the "
+              "sensor's calibration first (the readers apply none), or, if its amplifier was "
+              f"scaled to give a unit of {role}, give that unit in the run sheet (units = "
+              "{...}); else " if is_voltage_unit(text) else "")
     raise UnitError(
         f"unit {text!r} in {source} is not a unit of {role} ({ROLE_SI_UNIT[role]})",
         file=file, row=row, column=column,
-        hint="check the column roles (columns = {...}) and units in the run sheet",
+        hint=f"{signal}check the column roles (columns = {{...}}) and units in the run sheet",
     )

@@ -116,6 +116,10 @@ def test_a_column_of_one_value_beside_the_first_sample_is_no_channel(write):
     ("time [s],Voltage01 [V]\n0.0,-0.127\n0.05,-0.125\n",
      "column 'Voltage01' is in V, a sensor's signal: if it is the load, convert it to a "
      "force with the sensor's calibration first (the readers apply none); the file has"),
+    # a load cell's bridge output, which pint reads as a plain ratio
+    ("time [s],Excitation [mV/V]\n0.0,0.127\n0.05,0.125\n",
+     "column 'Excitation' is in mV/V, a sensor's signal: if it is the load, convert it to a "
+     "force with the sensor's calibration first (the readers apply none); the file has"),
 ])
 def test_the_hint_of_a_missing_role_says_what_a_column_may_be(write, text, said):
     with pytest.raises(ColumnError) as caught:

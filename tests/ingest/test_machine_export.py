@@ -858,8 +858,11 @@ def test_an_oscilloscopes_numbered_channels_over_a_units_row(write):
     assert [column.name for column in meta.columns] == ["x-axis", "1", "2"]
     np.testing.assert_allclose(table["time"], [-1e-6, -999e-9])
     np.testing.assert_allclose(table["force"], [-0.40201005, -0.40201005])
-    assert ("the file gives it in 'Volt', no unit of force; read in 'kN' as the run sheet says"
-            in " ".join(meta.warnings))
+    # a sensor's signal read as a force only as the amplifier's scale allows
+    assert ("column '1': the file gives it in 'Volt', a sensor's signal, no force; read in "
+            "'kN' as the run sheet says: right only if its amplifier was scaled to give 'kN' "
+            "(1 Volt = 1 kN); else convert it with the sensor's calibration first (the readers "
+            "apply none)") in meta.warnings
 
 
 def bluehill_quoted(rows: int) -> str:

@@ -31,7 +31,7 @@ from nptdms import ChannelObject, GroupObject, RootObject, TdmsWriter
 from pipeline.errors import ColumnError, IngestError, UnitError
 from pipeline.ingest import read_table
 from pipeline.ingest.canonical import SENTINELS
-from pipeline.ingest.names import is_clock_part, is_command, is_transverse, match_role
+from pipeline.ingest.names import is_unmeasured, match_role
 from pipeline.units import to_si
 
 BOUNDED = settings(max_examples=60, deadline=None,
@@ -259,10 +259,10 @@ DTYPES = ["float64", "float32", "int16", "int32", "int64", "uint16"]
 
 def neutral(name: str) -> bool:
     """Whether the reader's roles ignore name `name`: it names no role, and does not keep
-    a column from the role of its unit (a transverse width, a setpoint, a clock's part)."""
+    a column from the role of its unit (a transverse width, a setpoint, a clock's part, a
+    test's result: ``MODUL 1``, German for a modulus)."""
     name = name.strip()
-    return match_role(name) is None and not (
-        is_transverse(name) or is_command(name) or is_clock_part(name))
+    return match_role(name) is None and not is_unmeasured(name)
 
 
 def channel_names(draw, count: int) -> list[str]:

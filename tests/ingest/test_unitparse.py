@@ -219,3 +219,12 @@ def test_a_position_in_degrees_is_an_angle_not_a_strain():
     assert "strain_1" not in table and table["gauge_1"].tolist() == pytest.approx(
         [3e-3, 3.1e-3, 3.2e-3])
     assert table["angle"].tolist() == pytest.approx(np.radians([2.0, 2.5, 3.0]).tolist())
+
+
+def test_a_sensors_signal_named_as_the_force_is_told_as_such():
+    # a real catman export's 'Kraft [mV/V]' named as the force: the hint said to correct
+    # the unit, and a technician who wrote kN read the bridge's output as kilonewtons
+    with pytest.raises(UnitError, match="'mV/V' in the file is not a unit of force") as caught:
+        factor("mV/V", "force")
+    assert caught.value.hint.startswith("'mV/V' is a sensor's signal: convert the column to a "
+                                        "force with the sensor's calibration first")
