@@ -278,6 +278,10 @@ def _no_fracture_note(oriented_force: np.ndarray, gave_way: bool) -> list[str]:
             "is given at fracture"]
 
 
+#: A first loading of fewer samples cannot show which channel grows with the force (the
+#: channels are compared on at least 5 samples within a third of its range).
+SHORT_LOADING = 15
+
 #: A single pull whose force ends below this fraction of its maximum was unloaded.
 UNLOADED = 0.1
 
@@ -580,6 +584,12 @@ def condition_tensile(
                              {name: kinds[name] for name in strains}, columns, average)
     warnings += choice.warnings
     if not choice.used:  # saying why, when the channels were cut where they misbehaved
+        held = int(np.count_nonzero(loading))
+        if held < SHORT_LOADING:
+            raise SignalError(
+                f"the first loading holds {held} samples: too few to tell which gauge channel "
+                "grows with the force",
+                hint="the record is too short: check that the file holds the whole test")
         raise SignalError(
             "no gauge channel grows with the force on the first loading" + "".join(
                 _cut_said(columns[name], removal.reason, force[removal.position])

@@ -422,3 +422,13 @@ def test_a_single_pull_that_gives_way_has_no_unloading(gives_way):
     assert noted is gives_way
     if not gives_way:  # the valley's median holds the last steps of the fall too
         assert cycle["permanent_set"] == pytest.approx(up[-1] - 3e-3, abs=0.02e-3)
+
+
+def test_a_record_too_short_to_compare_its_gauges_says_so():
+    # a real Tokyo Sokki logger's sample file: three rows of numbers, two gauges; told that
+    # no gauge grew with the force, though both did
+    table = pd.DataFrame({"force": [0.0, 2900.0, 2900.0], "gauge_1": [0.0, 8e-5, 8e-5],
+                          "gauge_2": [0.0, 5.6e-4, 6.1e-4]})
+    with pytest.raises(SignalError, match="the first loading holds 2 samples: too few to tell "
+                                          "which gauge channel grows with the force"):
+        condition_tensile(table, gauge_length=0.05, n_cycles=1)
