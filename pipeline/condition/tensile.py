@@ -251,12 +251,12 @@ def _joined(channel: pd.Series, force: np.ndarray, column: str, warnings: list[s
     told in `warnings`; the same Series when the record holds none."""
     joined, tares = join_tares(channel.to_numpy(), force)
     for tare in tares:
-        step = (f"{tare.step * 1e3:.4g} mm" if str(channel.name).startswith("gauge_")
-                else f"{tare.step:.4g}")
+        step = (f"{-tare.step * 1e3:.4g} mm" if str(channel.name).startswith("gauge_")
+                else f"{-tare.step:.4g}")
         warnings.append(f"{column!r} is zeroed at sample {channel.index[tare.position]} "
-                        f"({abs(force[tare.position]) / 1e3:.4g} kN, the force holding): its "
-                        f"readings before are moved by the {step} it dropped, to join those "
-                        "after")
+                        f"({abs(force[tare.position]) / 1e3:.4g} kN, the force holding): it "
+                        f"stepped by {step} to zero; its readings before are moved by as "
+                        "much, to join those after")
     return pd.Series(joined, index=channel.index, name=channel.name) if tares else channel
 
 

@@ -230,10 +230,12 @@ def test_gauges_zeroed_at_the_preload_read_as_if_zeroed_from_the_start(sign):
                    "logs tension negative): forces, elongations and E0 are read in the "
                    "direction of the load, as magnitudes"] if sign < 0 else []
     assert run.warnings == [
-        f"'Weg' is zeroed at sample 10 (1 kN, the force holding): its readings before are "
-        f"moved by the {sign * 0.8:.4g} mm it dropped, to join those after",
-        f"'1470533' is zeroed at sample 10 (1 kN, the force holding): its readings before "
-        f"are moved by the {-sign * 41:.4g} mm it dropped, to join those after", *compression]
+        f"'Weg' is zeroed at sample 10 (1 kN, the force holding): it stepped by "
+        f"{-sign * 0.8:.4g} mm to zero; its readings before are moved by as much, to join "
+        "those after",
+        f"'1470533' is zeroed at sample 10 (1 kN, the force holding): it stepped by "
+        f"{sign * 41:.4g} mm to zero; its readings before are moved by as much, to join those "
+        "after", *compression]
 
 
 def test_a_gauge_unplugged_to_zero_in_a_loading_is_cut_where_it_dropped():
