@@ -1565,8 +1565,9 @@ def _no_names_row(file: str, data: int, delimiter: str) -> LayoutError:
                  ("'time [s]", "force [kN]", "gauge1 [mm]'"))
              + ", or name them in the run sheet by position, with their units: columns = "
                '{time = "column 1", force = "column 2"}, units = {time = "s", force = "kN"}'
-               " (the units the numbers are in: a logger's raw counts or volts are converted "
-               "to a force with the sensor's calibration first)",
+               ' (for a tensile or wear run, gauges = ["column 3"] too, with its unit; the'
+               " units the numbers are in: a logger's raw counts or volts are converted to a "
+               "force with the sensor's calibration first, outside chainbench)",
     )
 
 
