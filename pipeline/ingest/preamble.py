@@ -1,7 +1,8 @@
 """The free-text preamble machines write above their table (Instron Bluehill, MTS, Zwick).
 
-Lines of ``key : value``, ``key: value``, ``key = value``, ``"key","value"``
-or ``key<TAB>value`` before the names row become ``key -> value`` in
+Lines of ``key : value``, ``key: value``, ``key = value``, ``"key","value"``,
+``key<TAB>value`` or a key and its value set apart by blanks (testXpert's
+``Pre-load                                50 N``) before the names row become ``key -> value`` in
 :attr:`~pipeline.ingest.table.TableMetadata.preamble`; so do a row of names
 over a row of their values (a rig's settings: ``Stop buffer (mm),Syringe
 diameter (mm)`` over ``5,20.5``), and so does each of several settings written in
@@ -24,6 +25,9 @@ _DRIVE = re.compile(r"[A-Za-z]:[\\/]")
 #: (``MTS793|MPT|ESR|1|2|.|/|:|51|1|1|A``: its decimal, date and time signs among them):
 #: kept whole as a key.
 _SIGNATURE = re.compile(r"[^|\s]+(?:\|[^|\s]*){3,}")
+#: Blanks that set a value in a column of its own after its key (testXpert's ASCII export:
+#: ``Pre-load                                50 N``).
+_COLUMN_GAP = re.compile(r" {3,}")
 #: Comment marks some loggers set before each settings line (Scopy: ``;Device,M2K``).
 _COMMENT_MARKS = ";#"
 #: A unit in brackets, as a units row writes it (``(mm)``, ``[N]``, ``(%)``).
@@ -119,6 +123,8 @@ def _key_and_value(line: str, delimiter: str) -> tuple[str | None, str]:
             at = min(separators)
             key, tail = first[:at], first[at:].lstrip(" ")[1:]
             values = [tail, *fields[1:]]
+        elif len(fields) == 1 and (gap := _COLUMN_GAP.search(first)):
+            key, values = first[: gap.start()], [first[gap.end():]]
         else:
             key, values = first, fields[1:]
     key = _without_comment_mark(key.strip().rstrip(":").strip()) or line.strip()

@@ -270,6 +270,9 @@ def test_run_sheet_columns_pick_among_candidates(write):
         # a real vibration logger's: several 'key: value' fields in a line
         (["# Time: 2024-04-21 15:54:46.333682, Device: D4E9", "# Duration: 5.0 s"],
          {"Time": "2024-04-21 15:54:46.333682", "Device": "D4E9", "Duration": "5.0 s"}),
+        # a real testXpert ASCII export: each value in a column of its own after its key
+        (["Pre-load                                50 N", "Test speed    4 mm/min"],
+         {"Pre-load": "50 N", "Test speed": "4 mm/min"}),
     ],
 )
 def test_parse_preamble(lines, expected):
