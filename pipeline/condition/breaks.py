@@ -306,7 +306,7 @@ def _jump(channel: np.ndarray, tolerance: float) -> int | None:
     steps = np.abs(np.diff(channel))
     if steps.size < JUMP_NEIGHBOURHOOD:
         return None
-    typical = median_filter(steps, JUMP_NEIGHBOURHOOD, mode="nearest")
+    typical = median_filter(steps, JUMP_NEIGHBOURHOOD, mode="mirror")  # a last step too
     span = np.ptp(channel)
     hits = np.flatnonzero((steps > JUMP_FACTOR * typical) & (steps > tolerance)
                           & (steps > 0.02 * span))
@@ -353,7 +353,9 @@ def _misbehaviour(whole: np.ndarray, reading: np.ndarray, others: Sequence[np.nd
         return None
     tolerance = channel_tolerance(channel)
     backwards = _backwards(force, channel, tolerance, BACKWARDS_RISE * whole[peak])
-    jump = _jump(channel, tolerance)
+    # a jump is one past the maximum too: a software that writes its strain back to zero
+    # once it detects the break (testXpert) does so before the force has finished falling
+    jump = _jump(reading[loaded:], tolerance)
     followed = min((position for position in (backwards, jump) if position is not None),
                    default=channel.size)
     if followed >= MIN_FOLLOWED:  # a reading off the specimen widens the range: not its own

@@ -352,3 +352,14 @@ def test_an_extensometer_taken_off_at_the_maximum_is_frozen_past_it(seed):
     assert removal is not None and removal.reason == "freezes"
     # from where it stood within its tolerance (half a per cent of its 3 mm range: 15 µm)
     assert 2085 <= removal.position <= 2100
+
+
+def test_a_strain_written_back_to_zero_at_the_break_is_cut_there():
+    # a real testXpert tear test: past the maximum, the strain is written back to 0 from
+    # the first sample of the fall on, and the strain at fracture was read as 0 %
+    force = np.concatenate([np.linspace(0.0, 1257.0, 680), [1250.0, 1230.0, 1189.5, 1145.0,
+                                                            1085.3]])
+    strain = np.concatenate([np.linspace(0.0, 0.0246, 680), [0.02515, 0.0253, 0.02556,
+                                                             0.02569, 0.0]])
+    removal = find_removal(force, strain)
+    assert removal is not None and (removal.position, removal.reason) == (684, "jumps")
