@@ -306,7 +306,8 @@ def _jump(channel: np.ndarray, tolerance: float) -> int | None:
     steps = np.abs(np.diff(channel))
     if steps.size < JUMP_NEIGHBOURHOOD:
         return None
-    typical = median_filter(steps, JUMP_NEIGHBOURHOOD, mode="mirror")  # a last step too
+    typical = median_filter(steps, JUMP_NEIGHBOURHOOD, mode="nearest")
+    typical[-1] = np.median(steps[-JUMP_NEIGHBOURHOOD:-1])  # not among copies of itself
     span = np.ptp(channel)
     hits = np.flatnonzero((steps > JUMP_FACTOR * typical) & (steps > tolerance)
                           & (steps > 0.02 * span))
